@@ -1,0 +1,248 @@
+#include "world_validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "spott_map/wall_generation.h"
+#include "spott_map/world_loader.h"
+
+namespace spott_map {
+
+namespace {
+
+std::string Metres(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.2f m", v);
+  return buffer;
+}
+
+std::string PointText(const Vec2& p) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "(%.2f, %.2f)", p.x(), p.y());
+  return buffer;
+}
+
+bool ValidId(const std::string& id) {
+  if (id.empty()) return false;
+  for (char c : id) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+class Validator {
+ public:
+  Validator(World& world, std::vector<SourceError>& errors, std::vector<SourceError>& warnings)
+      : world_(world), errors_(errors), warnings_(warnings) {}
+
+  void CheckIds() {
+    std::map<std::string, std::string> seen;  // id -> what first used it
+    const auto check = [&](const std::string& id, const SourceLocation& where,
+                           const std::string& what) {
+      if (!ValidId(id)) {
+        Error(where, what + " id '" + id +
+                         "' must be letters, digits, '_' or '-' (it is used in task commands)");
+        return;
+      }
+      auto [it, inserted] = seen.emplace(id, what);
+      if (!inserted)
+        Error(where, "duplicate id '" + id + "' (already used by a " + it->second + ")");
+    };
+    for (const Room& r : world_.rooms) check(r.id, r.where, "room");
+    for (const Door& d : world_.doors) check(d.id, d.where, "door");
+    for (const Wall& w : world_.walls) check(w.id, w.where, "wall");
+    for (const WorldObject& o : world_.objects) check(o.id, o.where, "object");
+    std::map<std::string, bool> places;
+    for (const Place& p : world_.places) {
+      if (p.name.empty()) Error(p.where, "place name must not be empty");
+      if (!places.emplace(p.name, true).second) {
+        Error(p.where, "duplicate place name '" + p.name + "'");
+      }
+    }
+  }
+
+  void CheckRooms() {
+    for (Room& room : world_.rooms) {
+      if (auto crossing = FindSelfIntersection(room.polygon)) {
+        Error(room.where, "room " + room.id + ": polygon is self-intersecting (edge " +
+                              std::to_string(crossing->first) + " meets edge " +
+                              std::to_string(crossing->second) + ")");
+        continue;
+      }
+      const double area = SignedArea(room.polygon);
+      if (std::abs(area) < 0.01) {
+        Error(room.where, "room " + room.id + ": polygon has no area");
+        continue;
+      }
+      if (area < 0.0) std::reverse(room.polygon.begin(), room.polygon.end());
+    }
+    for (std::size_t i = 0; i < world_.rooms.size(); ++i) {
+      for (std::size_t j = i + 1; j < world_.rooms.size(); ++j) {
+        const Room& a = world_.rooms[i];
+        const Room& b = world_.rooms[j];
+        if (PolygonsOverlap(a.polygon, b.polygon, kWorldTolerance)) {
+          Error(b.where, "room " + b.id + " overlaps room " + a.id);
+        }
+      }
+    }
+  }
+
+  void CheckDoors() {
+    for (Door& door : world_.doors) {
+      const Room* a = world_.FindRoom(door.room_a);
+      const Room* b = world_.FindRoom(door.room_b);
+      if (!a)
+        Error(door.where, "door " + door.id + " is between unknown room '" + door.room_a + "'");
+      if (!b)
+        Error(door.where, "door " + door.id + " is between unknown room '" + door.room_b + "'");
+      if (!a || !b) continue;
+      if (a == b) {
+        Error(door.where, "door " + door.id + " joins room " + a->id + " to itself");
+        continue;
+      }
+      PlaceDoorOnSharedBoundary(door, *a, *b);
+    }
+  }
+
+  void CheckWalls() {
+    for (const Wall& wall : world_.walls) {
+      if (wall.segment.Length() < 1e-3) {
+        Error(wall.where, "wall " + wall.id + " has no length");
+        continue;
+      }
+      for (const Door& door : world_.doors) {
+        if (door.opening.Length() <= 0.0 || wall.generated) continue;
+        if (DistanceSegmentSegment(wall.segment, Segment{door.center, door.center}) <
+            0.5 * wall.thickness + kWorldTolerance) {
+          Error(wall.where, "wall " + wall.id + " blocks the opening of door " + door.id + " at " +
+                                PointText(door.center));
+        }
+      }
+    }
+  }
+
+  void CheckObjects() {
+    for (const WorldObject& object : world_.objects) {
+      if (!world_.RoomContaining(object.pose.Position())) {
+        Error(object.where, "object " + object.id + " at " + PointText(object.pose.Position()) +
+                                " is outside every room");
+      }
+    }
+  }
+
+  void CheckPlaces(const SourceLocation& start_where) {
+    for (const Place& place : world_.places) {
+      if (!world_.RoomContaining(place.pose.Position())) {
+        Error(place.where, "place " + place.name + " at " + PointText(place.pose.Position()) +
+                               " is outside every room");
+      }
+    }
+    const Vec2 start = world_.robot_start.Position();
+    if (!world_.RoomContaining(start)) {
+      Error(start_where, "robot_start " + PointText(start) + " is outside every room");
+      return;
+    }
+    for (const WorldObject& object : world_.objects) {
+      if (PointInPolygon(start, object.Footprint())) {
+        Error(start_where, "robot_start " + PointText(start) + " is inside object " + object.id);
+      }
+    }
+    for (const Wall& wall : world_.walls) {
+      if (DistancePointSegment(start, wall.segment) < 0.5 * wall.thickness) {
+        Error(start_where, "robot_start " + PointText(start) + " is inside wall " + wall.id);
+      }
+    }
+  }
+
+  bool ok() const { return errors_.empty(); }
+
+ private:
+  // Finds a pair of parallel edges, one of each room, that both hold the door's opening, and
+  // stores the opening along them.
+  void PlaceDoorOnSharedBoundary(Door& door, const Room& a, const Room& b) {
+    const double tol = kWorldTolerance;
+    double nearest_a = DistanceToBoundary(door.center, a.polygon);
+    double nearest_b = DistanceToBoundary(door.center, b.polygon);
+    if (nearest_a > tol || nearest_b > tol) {
+      const Room& off = nearest_a > tol ? a : b;
+      Error(door.where, "door " + door.id + ": center " + PointText(door.center) +
+                            " is not on the boundary of room " + off.id + " (nearest edge " +
+                            Metres(std::max(nearest_a > tol ? nearest_a : 0.0,
+                                            nearest_b > tol ? nearest_b : 0.0)) +
+                            " away); a door must lie on the boundary its two rooms share");
+      return;
+    }
+    for (std::size_t i = 0; i < a.polygon.size(); ++i) {
+      const Segment ea = PolygonEdge(a.polygon, i);
+      if (DistancePointSegment(door.center, ea) > tol) continue;
+      for (std::size_t j = 0; j < b.polygon.size(); ++j) {
+        const Segment eb = PolygonEdge(b.polygon, j);
+        if (DistancePointSegment(door.center, eb) > tol) continue;
+        if (std::abs(Cross(ea.Direction(), eb.Direction())) > 0.02) continue;  // ~1 degree
+        const Vec2 d = ea.Direction();
+        // The opening lies on room a's edge line, centred at the door's projection onto it.
+        const Vec2 c = ClosestPointOnSegment(door.center, ea);
+        const Segment opening{c - 0.5 * door.width * d, c + 0.5 * door.width * d};
+        const auto fits = [&](const Segment& edge) {
+          return DistancePointSegment(opening.a, edge) <= tol &&
+                 DistancePointSegment(opening.b, edge) <= tol;
+        };
+        if (fits(ea) && fits(eb)) {
+          door.opening = opening;
+          return;
+        }
+      }
+    }
+    Error(door.where, "door " + door.id + " (width " + Metres(door.width) +
+                          ") does not fit on the boundary shared by rooms " + a.id + " and " +
+                          b.id + " at " + PointText(door.center));
+  }
+
+  void Error(const SourceLocation& where, const std::string& message) {
+    errors_.push_back(SourceError{where, message});
+  }
+
+  World& world_;
+  std::vector<SourceError>& errors_;
+  std::vector<SourceError>& warnings_;
+};
+
+}  // namespace
+
+void ValidateWorld(World& world, const SourceLocation& robot_start_where, bool walls_from_rooms,
+                   double wall_thickness, std::vector<SourceError>& errors,
+                   std::vector<SourceError>& warnings) {
+  Validator v(world, errors, warnings);
+  if (world.name.empty())
+    errors.push_back(SourceError{SourceLocation{world.source_file, 0, 0}, "world name is empty"});
+  if (world.rooms.empty()) {
+    errors.push_back(
+        SourceError{SourceLocation{world.source_file, 0, 0}, "a world needs at least one room"});
+  }
+  v.CheckIds();
+  v.CheckRooms();
+  if (!v.ok()) return;  // Doors and places are placed against valid room outlines only.
+  v.CheckDoors();
+  if (!v.ok()) return;
+  if (walls_from_rooms) {
+    std::vector<Wall> generated =
+        GenerateWallsFromRooms(world.rooms, world.doors, wall_thickness, kWorldTolerance);
+    world.walls.insert(world.walls.begin(), generated.begin(), generated.end());
+    v.CheckIds();  // generated ids must not clash with listed ones
+    if (!v.ok()) return;
+  }
+  v.CheckWalls();
+  v.CheckObjects();
+  v.CheckPlaces(robot_start_where);
+  if (world.walls.empty()) {
+    warnings.push_back(SourceError{SourceLocation{world.source_file, 0, 0},
+                                   "the world has no walls (set walls: from_rooms: true?)"});
+  }
+}
+
+}  // namespace spott_map

@@ -1,0 +1,127 @@
+#include "spott_map/local_map.h"
+
+#include <gtest/gtest.h>
+
+#include "test_worlds.h"
+
+namespace spott_map {
+namespace {
+
+TEST(Rasterize, KnownWallGivesTheHandCountedCellsWithPadding) {
+  // 0.1 m cells from (-1, -1). The wall runs along the middle of row 10 (y in [0, 0.1]) over
+  // columns 10..29. Padding 0.25 m reaches centres 0.1 and 0.2 m off the line (rows 8..12);
+  // beyond the ends it reaches 0.25 m, 0.229 m and 0.15 m in those rows.
+  OccupancyRaster raster(Vec2(-1, -1), 40, 25, 0.1);
+  RasterizeFeature(MakeSegment("w", Segment{Vec2(0.05, 0.05), Vec2(1.95, 0.05)}, "wall"), 0.25,
+                   raster);
+  EXPECT_EQ(raster.CountCells(Cell::kObstacle), 20u);
+  for (int ix = 10; ix <= 29; ++ix) EXPECT_EQ(raster.at(ix, 10), Cell::kObstacle) << ix;
+  EXPECT_EQ(raster.at(9, 10), Cell::kPadding);
+  EXPECT_EQ(raster.at(8, 10), Cell::kPadding);
+  EXPECT_EQ(raster.at(7, 10), Cell::kFree);
+  EXPECT_EQ(raster.at(31, 10), Cell::kPadding);
+  EXPECT_EQ(raster.at(32, 10), Cell::kFree);
+  EXPECT_EQ(raster.at(20, 12), Cell::kPadding);
+  EXPECT_EQ(raster.at(20, 13), Cell::kFree);
+  EXPECT_EQ(raster.at(8, 12), Cell::kFree);  // corner: 0.2 m up and 0.2 m out is 0.28 m away
+  EXPECT_EQ(raster.at(9, 12), Cell::kPadding);
+  // Rows 10, 9, 11: 24 cells each; rows 8, 12: 22 cells. 116 in all, 20 of them obstacle.
+  EXPECT_EQ(raster.CountCells(Cell::kPadding), 96u);
+}
+
+TEST(Rasterize, ThickWallAndAreaFeatures) {
+  OccupancyRaster raster(Vec2(0, 0), 20, 20, 0.1);
+  MapFeature box;
+  box.type = FeatureType::kRectangle;
+  box.pose = Pose2{1.0, 1.0, 0.0};
+  box.size_x = 0.4;  // x in [0.8, 1.2]
+  box.size_y = 0.2;  // y in [0.9, 1.1]
+  // Cells that only touch the outline at an edge are left out of the checks: rounding decides.
+  RasterizeFeature(box, 0.0, raster);
+  EXPECT_EQ(raster.at(10, 10), Cell::kObstacle);
+  EXPECT_EQ(raster.at(8, 9), Cell::kObstacle);
+  EXPECT_EQ(raster.at(13, 10), Cell::kFree);
+  EXPECT_EQ(raster.at(10, 12), Cell::kFree);
+  // A 0.3 m thick wall along y = 0.55 marks the rows its thickness covers: y in [0.4, 0.7].
+  OccupancyRaster walls(Vec2(0, 0), 20, 20, 0.1);
+  RasterizeFeature(MakeSegment("w", Segment{Vec2(0.05, 0.55), Vec2(1.95, 0.55)}, "wall", 0.3), 0.0,
+                   walls);
+  EXPECT_EQ(walls.at(10, 4), Cell::kObstacle);
+  EXPECT_EQ(walls.at(10, 6), Cell::kObstacle);
+  EXPECT_EQ(walls.at(10, 2), Cell::kFree);
+  EXPECT_EQ(walls.at(10, 8), Cell::kFree);
+}
+
+TEST(LocalMap, ClosedDoorIsAnObstacleAndOpeningItFreesTheWay) {
+  LocalMapParameters p;
+  p.window_size_m = 4.0;
+  p.resolution_m = 0.1;
+  p.robot_radius_m = 0.0;
+  p.max_localization_error_m = 0.0;
+  MapDatabase db = MapDatabase::FromWorld(testing::TwoRoomsWorld());
+  LocalMap local(p);
+  local.Recentre(db, Vec2(7.0, 2.0));  // around d_lab, which is closed
+  auto cell = local.raster().CellOf(Vec2(7.0, 2.0));
+  ASSERT_TRUE(cell);
+  EXPECT_EQ(local.raster().at(cell->first, cell->second), Cell::kObstacle);
+  ASSERT_TRUE(db.SetDoorState("d_lab", DoorState::kOpen));
+  EXPECT_NE(local.revision(), db.revision());
+  local.Refresh(db);
+  EXPECT_EQ(local.raster().at(cell->first, cell->second), Cell::kFree);
+  EXPECT_EQ(local.revision(), db.revision());
+}
+
+TEST(LocalMap, WindowIsCentredOnTheLatticeAndKnowsWhenToMove) {
+  LocalMapParameters p;  // 7 m at 0.2 m: the paper's 35 x 35
+  MapDatabase db = MapDatabase::FromWorld(testing::TwoRoomsWorld());
+  LocalMap local(p);
+  local.Recentre(db, Vec2(5.03, 3.01));
+  EXPECT_EQ(local.raster().width(), 35);
+  EXPECT_EQ(local.raster().height(), 35);
+  const Vec2 o = local.raster().origin();
+  EXPECT_NEAR(std::remainder(o.x(), 0.2), 0.0, 1e-9);
+  EXPECT_NEAR(std::remainder(o.y(), 0.2), 0.0, 1e-9);
+  EXPECT_LT((local.centre() - Vec2(5.03, 3.01)).norm(), 0.15);
+  EXPECT_FALSE(local.NeedsRecentre(Vec2(5, 3)));
+  EXPECT_TRUE(local.NeedsRecentre(Vec2(5 + 3.0, 3)));  // 0.5 m from the east border
+  EXPECT_TRUE(local.NeedsRecentre(Vec2(20, 3)));       // outside
+  // The vector half holds the walls that meet the window.
+  EXPECT_FALSE(local.features().empty());
+  for (const MapFeature& f : local.features()) EXPECT_TRUE(f.Bounds().Intersects(local.bounds()));
+}
+
+TEST(LocalMap, PaddingIsRobotRadiusPlusLocalizationError) {
+  LocalMapParameters p;
+  p.window_size_m = 4.0;
+  p.resolution_m = 0.05;
+  p.robot_radius_m = 0.3;
+  p.max_localization_error_m = 0.2;
+  MapDatabase db;
+  db.AddFeature(MakeSegment("w", Segment{Vec2(-5, 0), Vec2(5, 0)}, "wall"));
+  LocalMap local(p);
+  local.Recentre(db, Vec2(0, 0));
+  const auto free_at = [&](double y) {
+    auto c = local.raster().CellOf(Vec2(0.025, y));
+    return local.raster().at(c->first, c->second) == Cell::kFree;
+  };
+  EXPECT_FALSE(free_at(0.475));  // centre 0.475 m from the wall: inside 0.5 m padding
+  EXPECT_TRUE(free_at(0.525));
+}
+
+TEST(LocalMap, InvalidParametersAreRefusedByName) {
+  LocalMapParameters p;
+  p.resolution_m = -0.1;
+  p.robot_radius_m = std::nan("");
+  const auto v = ValidateParameters(p);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0], "resolution_m must be > 0 (got -0.1)");
+  EXPECT_EQ(v[1].substr(0, 26), "robot_radius_m must be >= ");
+  EXPECT_THROW(LocalMap{p}, std::invalid_argument);
+  LocalMapParameters margin;
+  margin.recentre_margin_m = 5.0;
+  EXPECT_EQ(ValidateParameters(margin),
+            (std::vector<std::string>{"recentre_margin_m must be < window_size_m / 2 (got 5)"}));
+}
+
+}  // namespace
+}  // namespace spott_map
