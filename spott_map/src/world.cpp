@@ -54,6 +54,20 @@ const WorldObject* World::FindObject(const std::string& id) const {
   return nullptr;
 }
 
+const Zone* World::FindZone(const std::string& id) const {
+  for (const Zone& z : zones) {
+    if (z.id == id) return &z;
+  }
+  return nullptr;
+}
+
+const NamedPath* World::FindPath(const std::string& id) const {
+  for (const NamedPath& p : paths) {
+    if (p.id == id) return &p;
+  }
+  return nullptr;
+}
+
 const Room* World::RoomContaining(const Vec2& p) const {
   for (const Room& r : rooms) {
     if (PointInPolygon(p, r.polygon, 1e-9)) return &r;

@@ -187,6 +187,39 @@ void ReadPlaces(YamlReader& in, const YAML::Node& node, World& world) {
   }
 }
 
+void ReadZones(YamlReader& in, const YAML::Node& node, World& world) {
+  if (!in.ExpectSequence(node, "zones")) return;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YAML::Node item = node[i];
+    const std::string what = Describe("zones", i, PeekId(item, "id"));
+    if (!in.ExpectMap(item, what, {"id", "polygon"})) continue;
+    Zone zone;
+    zone.where = in.Where(item);
+    zone.id = in.String(item, "id", what, true).value_or("");
+    auto polygon = in.Points(item, "polygon", what, true, 3);
+    if (!polygon) continue;
+    zone.polygon = *polygon;
+    world.zones.push_back(zone);
+  }
+}
+
+void ReadPaths(YamlReader& in, const YAML::Node& node, World& world) {
+  if (!in.ExpectSequence(node, "paths")) return;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YAML::Node item = node[i];
+    const std::string what = Describe("paths", i, PeekId(item, "id"));
+    if (!in.ExpectMap(item, what, {"id", "points", "final_yaw"})) continue;
+    NamedPath path;
+    path.where = in.Where(item);
+    path.id = in.String(item, "id", what, true).value_or("");
+    path.final_yaw = in.Number(item, "final_yaw", what, false);
+    auto points = in.Points(item, "points", what, true, 1);
+    if (!points) continue;
+    path.points = *points;
+    world.paths.push_back(path);
+  }
+}
+
 }  // namespace
 
 WorldLoadResult LoadWorldFromString(const std::string& text, const std::string& source_name) {
@@ -201,13 +234,16 @@ WorldLoadResult LoadWorldFromString(const std::string& text, const std::string& 
   const YAML::Node root = in.Parse(text);
   if (in.errors().empty()) {
     if (in.ExpectMap(root, "world file",
-                     {"world", "walls", "rooms", "doors", "objects", "places", "robot_start"})) {
+                     {"world", "walls", "rooms", "doors", "objects", "places", "zones", "paths",
+                      "robot_start"})) {
       if (in.Require(root, "world", "world file")) ReadWorldHeader(in, root["world"], world);
       if (in.Require(root, "rooms", "world file")) ReadRooms(in, root["rooms"], world);
       if (root["walls"]) ReadWalls(in, root["walls"], world, walls_from_rooms, wall_thickness);
       if (root["doors"]) ReadDoors(in, root["doors"], world);
       if (root["objects"]) ReadObjects(in, root["objects"], world);
       if (root["places"]) ReadPlaces(in, root["places"], world);
+      if (root["zones"]) ReadZones(in, root["zones"], world);
+      if (root["paths"]) ReadPaths(in, root["paths"], world);
       if (in.Require(root, "robot_start", "world file")) {
         const YAML::Node start = root["robot_start"];
         start_where = in.Where(start);

@@ -57,6 +57,8 @@ class Validator {
     for (const Door& d : world_.doors) check(d.id, d.where, "door");
     for (const Wall& w : world_.walls) check(w.id, w.where, "wall");
     for (const WorldObject& o : world_.objects) check(o.id, o.where, "object");
+    for (const Zone& z : world_.zones) check(z.id, z.where, "zone");
+    for (const NamedPath& p : world_.paths) check(p.id, p.where, "path");
     std::map<std::string, bool> places;
     for (const Place& p : world_.places) {
       if (p.name.empty()) Error(p.where, "place name must not be empty");
@@ -159,6 +161,31 @@ class Validator {
     }
   }
 
+  void CheckZonesAndPaths() {
+    for (Zone& zone : world_.zones) {
+      if (auto crossing = FindSelfIntersection(zone.polygon)) {
+        Error(zone.where, "zone " + zone.id + ": polygon is self-intersecting (edge " +
+                              std::to_string(crossing->first) + " meets edge " +
+                              std::to_string(crossing->second) + ")");
+        continue;
+      }
+      const double area = SignedArea(zone.polygon);
+      if (std::abs(area) < 1e-4) {
+        Error(zone.where, "zone " + zone.id + ": polygon has no area");
+        continue;
+      }
+      if (area < 0.0) std::reverse(zone.polygon.begin(), zone.polygon.end());
+    }
+    for (const NamedPath& path : world_.paths) {
+      for (std::size_t i = 0; i < path.points.size(); ++i) {
+        if (!world_.RoomContaining(path.points[i])) {
+          Error(path.where, "path " + path.id + ": point " + std::to_string(i) + " " +
+                                PointText(path.points[i]) + " is outside every room");
+        }
+      }
+    }
+  }
+
   bool ok() const { return errors_.empty(); }
 
  private:
@@ -239,6 +266,7 @@ void ValidateWorld(World& world, const SourceLocation& robot_start_where, bool w
   v.CheckWalls();
   v.CheckObjects();
   v.CheckPlaces(robot_start_where);
+  v.CheckZonesAndPaths();
   if (world.walls.empty()) {
     warnings.push_back(SourceError{SourceLocation{world.source_file, 0, 0},
                                    "the world has no walls (set walls: from_rooms: true?)"});

@@ -68,6 +68,28 @@ TEST(WorldLoader, TheTestWorldLoadsWithItsContents) {
   EXPECT_DOUBLE_EQ(w.robot_start.x, 9.0);
   EXPECT_EQ(w.walls.size(), 9u);
   EXPECT_EQ(w.RoomContaining(Vec2(6, 5))->id, "lab");
+  ASSERT_NE(w.FindZone("ZONE1"), nullptr);
+  EXPECT_EQ(w.FindZone("ZONE1")->polygon.size(), 4u);
+  ASSERT_NE(w.FindPath("PATH1"), nullptr);
+  EXPECT_EQ(w.FindPath("PATH1")->points.size(), 3u);
+  EXPECT_NEAR(*w.FindPath("PATH1")->final_yaw, 1.5708, 1e-12);
+}
+
+TEST(WorldLoader, ZonesMustBeSimpleAndPathsInsideRooms) {
+  const std::string zone = std::string(kMinimal) +
+                           "zones:\n"
+                           "  - id: Z\n"
+                           "    polygon: [[1, 1], [2, 2], [2, 1], [1, 2]]\n";
+  const auto e = Errors(zone);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0], "16:5: zone Z: polygon is self-intersecting (edge 0 meets edge 2)");
+  const std::string path = std::string(kMinimal) +
+                           "paths:\n"
+                           "  - id: P\n"
+                           "    points: [[1, 1], [9, 1]]\n";
+  const auto p = Errors(path);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0], "16:5: path P: point 1 (9.00, 1.00) is outside every room");
 }
 
 TEST(WorldLoader, MinimalWorldIsValid) {

@@ -84,6 +84,21 @@ struct Place {
   SourceLocation where;
 };
 
+/// A named region (a surveillance zone of Noreils and Chatila's missions, e.g. ZONE109).
+struct Zone {
+  std::string id;
+  Polygon polygon;  ///< Counter-clockwise outline (m), normalized by the loader.
+  SourceLocation where;
+};
+
+/// A named polyline (a mission's path argument, e.g. smooth-move(PATH)).
+struct NamedPath {
+  std::string id;
+  std::vector<Vec2> points;         ///< (m)
+  std::optional<double> final_yaw;  ///< Heading to end with (rad), if given.
+  SourceLocation where;
+};
+
 struct World {
   std::string name;
   std::string description;
@@ -93,12 +108,16 @@ struct World {
   std::vector<Door> doors;
   std::vector<WorldObject> objects;
   std::vector<Place> places;
+  std::vector<Zone> zones;
+  std::vector<NamedPath> paths;
   Pose2 robot_start;
 
   const Room* FindRoom(const std::string& id) const;
   const Door* FindDoor(const std::string& id) const;
   const Place* FindPlace(const std::string& name) const;
   const WorldObject* FindObject(const std::string& id) const;
+  const Zone* FindZone(const std::string& id) const;
+  const NamedPath* FindPath(const std::string& id) const;
   /// The room that holds `p` (boundary included; the first one listed wins), or nullptr.
   const Room* RoomContaining(const Vec2& p) const;
   /// Box around every wall and room.

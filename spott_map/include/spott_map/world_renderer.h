@@ -11,7 +11,7 @@ namespace spott_map {
 
 struct RenderOptions {
   double pixels_per_metre = 40.0;  ///< > 0
-  double margin_m = 1.0;           ///< Blank border around the world (m), >= 0.
+  double margin_m = 1.5;           ///< Blank border around the world (m), >= 0.
   bool labels = true;              ///< Room names, object ids and place names.
   bool legend = true;
 };

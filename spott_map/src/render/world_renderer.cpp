@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace spott_map {
 
@@ -26,6 +28,8 @@ constexpr Rgb kPlace{0.2, 0.3, 0.85};
 constexpr Rgb kPosition{0.7, 0.1, 0.6};
 constexpr Rgb kRobot{0.85, 0.1, 0.1};
 constexpr Rgb kText{0.15, 0.15, 0.15};
+constexpr Rgb kZone{0.55, 0.2, 0.75};
+constexpr Rgb kPath{0.1, 0.45, 0.45};
 
 // Map metres to pixels: x right, y up (the image's y runs down).
 class Canvas {
@@ -186,26 +190,100 @@ void DrawPlaces(const Canvas& c, const World& w, bool labels) {
   DrawArrow(c, w.robot_start, 0.6, kRobot);
 }
 
+void DrawZonesAndPaths(const Canvas& c, const World& w, bool labels) {
+  for (const Zone& zone : w.zones) {
+    c.PolygonPath(zone.polygon);
+    c.Colour(kZone, 0.18);
+    cairo_fill_preserve(c.cr());
+    c.Colour(kZone, 0.9);
+    const double dash[] = {6.0, 3.0};
+    cairo_set_dash(c.cr(), dash, 2, 0.0);
+    cairo_set_line_width(c.cr(), 1.5);
+    cairo_stroke(c.cr());
+    cairo_set_dash(c.cr(), nullptr, 0, 0.0);
+    if (labels) {
+      const Box b = BoundingBox(zone.polygon);
+      c.Text(c.X(b.min.x()) + 3, c.Y(b.max.y()) + 14, zone.id, std::max(8.0, 0.22 * c.Scale()),
+             false);
+    }
+  }
+  for (const NamedPath& path : w.paths) {
+    c.Colour(kPath);
+    cairo_set_line_width(c.cr(), 2.0);
+    cairo_new_path(c.cr());
+    for (std::size_t i = 0; i < path.points.size(); ++i) {
+      const Vec2& p = path.points[i];
+      if (i == 0) {
+        cairo_move_to(c.cr(), c.X(p.x()), c.Y(p.y()));
+      } else {
+        cairo_line_to(c.cr(), c.X(p.x()), c.Y(p.y()));
+      }
+    }
+    cairo_stroke(c.cr());
+    for (const Vec2& p : path.points) {
+      cairo_arc(c.cr(), c.X(p.x()), c.Y(p.y()), 3.0, 0, 2 * M_PI);
+      cairo_fill(c.cr());
+    }
+    if (path.final_yaw) {
+      DrawArrow(c, Pose2{path.points.back().x(), path.points.back().y(), *path.final_yaw}, 0.35,
+                kPath);
+    }
+    if (labels && !path.points.empty()) {
+      c.Colour(kPath);
+      c.Text(c.X(path.points[0].x()) + 4, c.Y(path.points[0].y()) - 4, path.id,
+             std::max(8.0, 0.22 * c.Scale()), false);
+    }
+  }
+}
+
+// The legend's entries, and how many rows they need at `width_px` (entries wrap).
+std::vector<std::pair<Rgb, std::string>> LegendEntries(const World& w) {
+  std::vector<std::pair<Rgb, std::string>> e = {{kRoomFill, "room"},
+                                                {kHallwayFill, "hallway"},
+                                                {kDoorOpen, "door open"},
+                                                {kDoorClosed, "door closed"},
+                                                {kDoorUnknown, "door unknown"},
+                                                {kObjectFill, "object (not in CAD map)"},
+                                                {kPlace, "place"},
+                                                {kRobot, "robot start"}};
+  if (!w.zones.empty()) e.emplace_back(kZone, "zone");
+  if (!w.paths.empty()) e.emplace_back(kPath, "path");
+  return e;
+}
+
+double LegendEntryWidth(const std::string& text) { return 28 + 7.0 * text.size(); }
+
+int LegendRows(const World& w, double width_px) {
+  int rows = 1;
+  double x = 10.0;
+  for (const auto& [colour, text] : LegendEntries(w)) {
+    if (x + LegendEntryWidth(text) > width_px && x > 10.0) {
+      ++rows;
+      x = 10.0;
+    }
+    x += LegendEntryWidth(text);
+  }
+  return rows;
+}
+
+constexpr double kLegendRowPx = 20.0;
+
 void DrawLegendAndScale(const Canvas& c, const World& w, double width_px, double height_px) {
   const double size = 12.0;
   double x = 10.0;
-  const double y = height_px - 12.0;
-  const auto swatch = [&](const Rgb& colour, const std::string& text) {
+  double y = height_px - LegendRows(w, width_px) * kLegendRowPx + 14.0;
+  for (const auto& [colour, text] : LegendEntries(w)) {
+    if (x + LegendEntryWidth(text) > width_px && x > 10.0) {
+      x = 10.0;
+      y += kLegendRowPx;
+    }
     c.Colour(colour);
     cairo_rectangle(c.cr(), x, y - 9, 16, 9);
     cairo_fill(c.cr());
     c.Colour(kText);
     c.Text(x + 20, y, text, size, false);
-    x += 28 + 7.0 * text.size();
-  };
-  swatch(kRoomFill, "room");
-  swatch(kHallwayFill, "hallway");
-  swatch(kDoorOpen, "door open");
-  swatch(kDoorClosed, "door closed");
-  swatch(kDoorUnknown, "door unknown");
-  swatch(kObjectFill, "object (not in CAD map)");
-  swatch(kPlace, "place");
-  swatch(kRobot, "robot start");
+    x += LegendEntryWidth(text);
+  }
   // A scale bar of a round number of metres, about a fifth of the width.
   double metres = 1.0;
   for (double m : {1.0, 2.0, 5.0, 10.0, 20.0}) {
@@ -236,8 +314,8 @@ std::optional<std::string> RenderWorldToPng(const World& world, const std::strin
   }
   const Box bounds = world.Bounds().Inflated(options.margin_m);
   const double title_px = 32.0;
-  const double legend_px = options.legend ? 26.0 : 0.0;
   const double width = (bounds.max.x() - bounds.min.x()) * options.pixels_per_metre;
+  const double legend_px = options.legend ? LegendRows(world, width) * kLegendRowPx + 6.0 : 0.0;
   const double height =
       (bounds.max.y() - bounds.min.y()) * options.pixels_per_metre + title_px + legend_px;
   if (!(width >= 1.0 && height >= 1.0) || width > 20000 || height > 20000) {
@@ -256,6 +334,7 @@ std::optional<std::string> RenderWorldToPng(const World& world, const std::strin
   DrawObjects(canvas, world, options.labels);
   DrawWalls(canvas, world);
   DrawDoors(canvas, world);
+  DrawZonesAndPaths(canvas, world, options.labels);
   DrawPlaces(canvas, world, options.labels);
   if (options.legend) DrawLegendAndScale(canvas, world, width, height);
   cairo_surface_flush(surface.get());
