@@ -1,0 +1,241 @@
+#include "demo_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/RoomDoorGraph.h>
+#include <spott_msgs/SetDoorState.h>
+
+#include "spott_map/local_map.h"
+#include "spott_map/ros/conversions.h"
+#include "spott_map/world_loader.h"
+
+namespace spott_launch {
+
+namespace {
+
+namespace conv = spott_map::ros_conversions;
+
+// Waits for the next message on a (latched) topic.
+template <class Msg>
+std::optional<Msg> WaitForMessage(ros::NodeHandle& nh, const std::string& topic, double timeout_s) {
+  boost::shared_ptr<const Msg> msg =
+      ros::topic::waitForMessage<Msg>(topic, nh, ros::Duration(timeout_s));
+  if (!msg) return std::nullopt;
+  return *msg;
+}
+
+std::vector<std::string> Reachable(const spott_map::RoomDoorGraph& g, const std::string& from) {
+  std::vector<std::string> r = g.ReachableFrom(from);
+  std::sort(r.begin(), r.end());
+  return r;
+}
+
+// The doors of `room` that are closed, as "d_102 closed".
+std::string ClosedDoorsOf(const spott_map::RoomDoorGraph& g, const std::string& room) {
+  std::string text;
+  for (const spott_map::Door* d : g.DoorsOf(room)) {
+    if (d->state != spott_map::DoorState::kClosed) continue;
+    text += (text.empty() ? "" : ", ") + d->id;
+  }
+  return text.empty() ? "no direct closed door" : "behind closed " + text;
+}
+
+std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spott_map::Vec2& at) {
+  spott_map::LocalMapParameters p;  // SPOTT's 35 x 35 window of 0.2 m cells
+  spott_map::LocalMap local(p);
+  local.Recentre(db, at);
+  const auto robot = local.raster().CellOf(at);
+  std::vector<std::string> rows;
+  for (int iy = local.raster().height() - 1; iy >= 0; --iy) {
+    std::string row;
+    for (int ix = 0; ix < local.raster().width(); ++ix) {
+      if (robot && robot->first == ix && robot->second == iy) {
+        row += 'R';
+        continue;
+      }
+      switch (local.raster().at(ix, iy)) {
+        case spott_map::Cell::kObstacle:
+          row += '#';
+          break;
+        case spott_map::Cell::kPadding:
+          row += '+';
+          break;
+        case spott_map::Cell::kFree:
+          row += '.';
+          break;
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
+                   const std::vector<std::string>& doors_to_close, double timeout_s) {
+  DemoReport report;
+  const ros::WallTime start = ros::WallTime::now();
+  const auto fail = [&](const std::string& why) {
+    report.failure = why;
+    report.elapsed_s = (ros::WallTime::now() - start).toSec();
+    return report;
+  };
+  const spott_map::WorldLoadResult scenario = spott_map::LoadWorldFile(world_file);
+  if (!scenario.ok()) return fail(spott_map::FormatErrors(scenario.errors));
+
+  auto graph_msg = WaitForMessage<spott_msgs::RoomDoorGraph>(nh, "room_door_graph", timeout_s);
+  if (!graph_msg) return fail("no room_door_graph from the world server");
+  auto map_msg = WaitForMessage<nav_msgs::OccupancyGrid>(nh, "map", timeout_s);
+  if (!map_msg) return fail("no map from the world server");
+  auto features_msg = WaitForMessage<spott_msgs::MapFeatureArray>(nh, "map_features", timeout_s);
+  if (!features_msg) return fail("no map_features from the world server");
+
+  std::string error;
+  auto graph = conv::FromMsg(*graph_msg, &error);
+  if (!graph) return fail("room_door_graph: " + error);
+  spott_map::MapDatabase db;
+  db.SetGraph(*graph);
+  for (const auto& f : features_msg->features) {
+    auto feature = conv::FromMsg(f, &error);
+    if (!feature) return fail(error);
+    db.AddFeature(*feature);
+  }
+
+  report.world = graph_msg->world;
+  for (const auto& r : graph_msg->rooms) {
+    ++report.rooms;
+    report.hallways += r.kind == spott_msgs::Room::HALLWAY;
+  }
+  for (const auto& d : graph_msg->doors) {
+    if (d.kind == spott_msgs::Door::KIND_OPENING) {
+      ++report.openings;
+    } else if (d.state == spott_msgs::Door::OPEN) {
+      ++report.doors_open;
+    } else if (d.state == spott_msgs::Door::CLOSED) {
+      ++report.doors_closed;
+    } else {
+      ++report.doors_unknown;
+    }
+  }
+  report.cad_features = static_cast<int>(features_msg->features.size());
+  report.map_width = static_cast<int>(map_msg->info.width);
+  report.map_height = static_cast<int>(map_msg->info.height);
+  report.map_resolution = map_msg->info.resolution;
+  report.map_occupied =
+      static_cast<int>(std::count(map_msg->data.begin(), map_msg->data.end(), 100));
+  report.objects_not_in_cad = static_cast<int>(scenario.world->objects.size());
+
+  const spott_map::Vec2 start_position = scenario.world->robot_start.Position();
+  const spott_map::Room* start_room = graph->RoomContaining(start_position);
+  if (!start_room) return fail("the robot start is outside every room of the served graph");
+  report.start_room = start_room->id;
+  report.reachable = Reachable(*graph, start_room->id);
+  for (const spott_map::Room& r : graph->rooms()) {
+    if (std::find(report.reachable.begin(), report.reachable.end(), r.id) ==
+        report.reachable.end()) {
+      report.unreachable.push_back(r.id + " (" + ClosedDoorsOf(*graph, r.id) + ")");
+    }
+  }
+  report.local_window = AsciiWindow(db, start_position);
+
+  // Close doors one after the other through the world server, as a user (or the simulator's
+  // fault schedule) would, and watch the served graph change.
+  ros::ServiceClient set_door =
+      nh.serviceClient<spott_msgs::SetDoorState>("world_server/set_door_state");
+  if (!set_door.waitForExistence(ros::Duration(timeout_s))) {
+    return fail("world_server/set_door_state is not offered");
+  }
+  std::vector<std::string> before = report.reachable;
+  std::vector<std::pair<std::string, std::uint8_t>> restore;
+  for (const std::string& door : doors_to_close) {
+    DemoReport::DoorExperiment e;
+    e.door = door;
+    if (const spott_map::Door* d = graph->FindDoor(door))
+      restore.emplace_back(door, conv::ToMsg(d->state));
+    spott_msgs::SetDoorState srv;
+    srv.request.door_id = door;
+    srv.request.state = spott_msgs::Door::CLOSED;
+    if (!set_door.call(srv)) return fail("set_door_state call failed");
+    e.accepted = srv.response.success;
+    e.message = srv.response.message;
+    if (e.accepted) {
+      auto updated = ros::topic::waitForMessage<spott_msgs::RoomDoorGraph>(
+          "room_door_graph", nh, ros::Duration(timeout_s));
+      if (!updated) return fail("no room_door_graph after closing " + door);
+      auto g = conv::FromMsg(*updated, &error);
+      if (!g) return fail(error);
+      const std::vector<std::string> after = Reachable(*g, start_room->id);
+      for (const std::string& r : before) {
+        if (std::find(after.begin(), after.end(), r) == after.end()) {
+          e.newly_unreachable.push_back(r);
+        }
+      }
+      before = after;
+    }
+    report.door_experiments.push_back(e);
+  }
+  for (const auto& [door, state] : restore) {
+    spott_msgs::SetDoorState srv;
+    srv.request.door_id = door;
+    srv.request.state = state;
+    set_door.call(srv);
+  }
+  report.ok = true;
+  report.elapsed_s = (ros::WallTime::now() - start).toSec();
+  return report;
+}
+
+std::string FormatReport(const DemoReport& r) {
+  std::ostringstream out;
+  const std::string rule(72, '=');
+  out << "\n" << rule << "\n SPOTT-ROS demo report: world " << r.world << "\n" << rule << "\n";
+  out << " Running: world_server (spott_map: the map database of SPOTT section III.A).\n"
+      << " Not built yet, so not in this demo: robot_sim, markov_localization,\n"
+      << " spott_global_planner, spott_harmonic_planner, spott_tr_plus, rpl_executive.\n\n";
+  if (!r.ok) {
+    out << " FAILED: " << r.failure << "\n";
+    return out.str();
+  }
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                " Map database\n   rooms: %d (%d hallway portions)\n"
+                "   doors: %d open, %d closed, %d unknown (assumed open), %d openings\n"
+                "   CAD wall features: %d\n"
+                "   occupancy map: %d x %d cells of %.2f m, %d occupied\n"
+                "   objects not in the CAD map (for the robot to discover): %d\n\n",
+                r.rooms, r.hallways, r.doors_open, r.doors_closed, r.doors_unknown, r.openings,
+                r.cad_features, r.map_width, r.map_height, r.map_resolution, r.map_occupied,
+                r.objects_not_in_cad);
+  out << line;
+  out << " Robot start is in " << r.start_room
+      << "; reachable through passable doors: " << r.reachable.size() << " of " << r.rooms
+      << " rooms\n";
+  for (const std::string& u : r.unreachable) out << "   unreachable: " << u << "\n";
+  out << "\n Closing doors through world_server/set_door_state:\n";
+  for (const auto& e : r.door_experiments) {
+    out << "   " << e.door << ": " << (e.accepted ? "closed" : "refused: " + e.message);
+    if (e.accepted) {
+      if (e.newly_unreachable.empty()) {
+        out << "; every room is still reachable";
+      } else {
+        out << "; now unreachable:";
+        for (const std::string& u : e.newly_unreachable) out << " " << u;
+      }
+    }
+    out << "\n";
+  }
+  out << "\n Local window at the start (SPOTT's 35 x 35 cells of 0.2 m; '#' wall, '+' padding\n"
+      << " of robot radius 0.225 m + localization error 0.1 m, '.' free, 'R' robot):\n";
+  for (const std::string& row : r.local_window) out << "   " << row << "\n";
+  std::snprintf(line, sizeof(line), "\n Demo finished in %.1f s.\n", r.elapsed_s);
+  out << line << rule << "\n";
+  return out.str();
+}
+
+}  // namespace spott_launch

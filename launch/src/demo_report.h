@@ -1,0 +1,46 @@
+// The main demo's report: what the running stack says about the world, gathered through its
+// topics and services only, as a user's tool would.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+
+namespace spott_launch {
+
+struct DemoReport {
+  bool ok = false;      ///< Every step answered.
+  std::string failure;  ///< Why not, when !ok.
+  std::string world;
+  int rooms = 0;
+  int hallways = 0;
+  int doors_open = 0, doors_closed = 0, doors_unknown = 0, openings = 0;
+  int cad_features = 0;
+  int map_width = 0, map_height = 0, map_occupied = 0;
+  double map_resolution = 0.0;
+  int objects_not_in_cad = 0;
+  std::string start_room;
+  std::vector<std::string> reachable;    ///< Rooms reachable from the start room.
+  std::vector<std::string> unreachable;  ///< With the reason: "office_102 (behind closed d_102)".
+  struct DoorExperiment {
+    std::string door;
+    bool accepted = false;
+    std::string message;
+    std::vector<std::string> newly_unreachable;
+  };
+  std::vector<DoorExperiment> door_experiments;
+  std::vector<std::string> local_window;  ///< ASCII rows, north first.
+  double elapsed_s = 0.0;
+};
+
+/// Runs the demo against a running world_server: reads its latched topics, closes each door of
+/// `doors_to_close` in turn through its service and reports reachability, then reopens them.
+/// `world_file` supplies what a scenario knows but the stack does not (start pose, objects).
+DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
+                   const std::vector<std::string>& doors_to_close, double timeout_s);
+
+/// The report as a user reads it.
+std::string FormatReport(const DemoReport& report);
+
+}  // namespace spott_launch
