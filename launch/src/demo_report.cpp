@@ -1,7 +1,7 @@
 #include "demo_report.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <iomanip>
 #include <optional>
 #include <sstream>
 
@@ -202,17 +202,14 @@ std::string FormatReport(const DemoReport& r) {
     out << " FAILED: " << r.failure << "\n";
     return out.str();
   }
-  char line[256];
-  std::snprintf(line, sizeof(line),
-                " Map database\n   rooms: %d (%d hallway portions)\n"
-                "   doors: %d open, %d closed, %d unknown (assumed open), %d openings\n"
-                "   CAD wall features: %d\n"
-                "   occupancy map: %d x %d cells of %.2f m, %d occupied\n"
-                "   objects not in the CAD map (for the robot to discover): %d\n\n",
-                r.rooms, r.hallways, r.doors_open, r.doors_closed, r.doors_unknown, r.openings,
-                r.cad_features, r.map_width, r.map_height, r.map_resolution, r.map_occupied,
-                r.objects_not_in_cad);
-  out << line;
+  out << " Map database\n   rooms: " << r.rooms << " (" << r.hallways << " hallway portions)\n"
+      << "   doors: " << r.doors_open << " open, " << r.doors_closed << " closed, "
+      << r.doors_unknown << " unknown (assumed open), " << r.openings << " openings\n"
+      << "   CAD wall features: " << r.cad_features << "\n"
+      << "   occupancy map: " << r.map_width << " x " << r.map_height << " cells of " << std::fixed
+      << std::setprecision(2) << r.map_resolution << " m, " << r.map_occupied << " occupied\n"
+      << "   objects not in the CAD map (for the robot to discover): " << r.objects_not_in_cad
+      << "\n\n";
   out << " Robot start is in " << r.start_room
       << "; reachable through passable doors: " << r.reachable.size() << " of " << r.rooms
       << " rooms\n";
@@ -230,11 +227,15 @@ std::string FormatReport(const DemoReport& r) {
     }
     out << "\n";
   }
-  out << "\n Local window at the start (SPOTT's 35 x 35 cells of 0.2 m; '#' wall, '+' padding\n"
-      << " of robot radius 0.225 m + localization error 0.1 m, '.' free, 'R' robot):\n";
+  const spott_map::LocalMapParameters window;  // the parameters AsciiWindow uses
+  out << std::defaultfloat << std::setprecision(6) << "\n Local window at the start (SPOTT's "
+      << window.cells() << " x " << window.cells() << " cells of " << window.resolution_m
+      << " m; '#' wall, '+' padding\n of robot radius " << window.robot_radius_m
+      << " m + localization error " << window.max_localization_error_m
+      << " m, '.' free, 'R' robot):\n";
   for (const std::string& row : r.local_window) out << "   " << row << "\n";
-  std::snprintf(line, sizeof(line), "\n Demo finished in %.1f s.\n", r.elapsed_s);
-  out << line << rule << "\n";
+  out << "\n Demo finished in " << std::fixed << std::setprecision(1) << r.elapsed_s << " s.\n"
+      << rule << "\n";
   return out.str();
 }
 
