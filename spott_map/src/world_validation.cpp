@@ -68,6 +68,57 @@ class Validator {
     }
   }
 
+  // Everything must lie within kWorldMaxCoordinate of the origin: maps of the world are rasters,
+  // and a stray "1e9" would otherwise ask world_server for an impossible grid.
+  void CheckExtent(const SourceLocation& start_where) {
+    const auto far = [](const Vec2& p) {
+      return std::abs(p.x()) > kWorldMaxCoordinate || std::abs(p.y()) > kWorldMaxCoordinate;
+    };
+    const std::string limit =
+        " lies beyond " + Metres(kWorldMaxCoordinate) + " of the origin (the supported extent)";
+    for (const Room& r : world_.rooms) {
+      for (const Vec2& p : r.polygon) {
+        if (far(p)) {
+          Error(r.where, "room " + r.id + ": vertex " + PointText(p) + limit);
+          break;
+        }
+      }
+    }
+    for (const Zone& z : world_.zones) {
+      for (const Vec2& p : z.polygon) {
+        if (far(p)) {
+          Error(z.where, "zone " + z.id + ": vertex " + PointText(p) + limit);
+          break;
+        }
+      }
+    }
+    for (const Wall& w : world_.walls) {
+      if (far(w.segment.a) || far(w.segment.b) || w.thickness > kWorldMaxCoordinate)
+        Error(w.where, "wall " + w.id + limit);
+    }
+    for (const Door& d : world_.doors) {
+      if (far(d.center) || d.width > kWorldMaxCoordinate) Error(d.where, "door " + d.id + limit);
+    }
+    for (const WorldObject& o : world_.objects) {
+      if (far(o.pose.Position()) || o.size_x > kWorldMaxCoordinate ||
+          o.size_y > kWorldMaxCoordinate || o.height > kWorldMaxCoordinate) {
+        Error(o.where, "object " + o.id + limit);
+      }
+    }
+    for (const Place& p : world_.places) {
+      if (far(p.pose.Position())) Error(p.where, "place " + p.name + limit);
+    }
+    for (const NamedPath& path : world_.paths) {
+      for (const Vec2& p : path.points) {
+        if (far(p)) {
+          Error(path.where, "path " + path.id + ": point " + PointText(p) + limit);
+          break;
+        }
+      }
+    }
+    if (far(world_.robot_start.Position())) Error(start_where, "robot_start" + limit);
+  }
+
   void CheckRooms() {
     for (Room& room : world_.rooms) {
       if (auto crossing = FindSelfIntersection(room.polygon)) {
@@ -252,6 +303,8 @@ void ValidateWorld(World& world, const SourceLocation& robot_start_where, bool w
         SourceError{SourceLocation{world.source_file, 0, 0}, "a world needs at least one room"});
   }
   v.CheckIds();
+  v.CheckExtent(robot_start_where);
+  if (!v.ok()) return;
   v.CheckRooms();
   if (!v.ok()) return;  // Doors and places are placed against valid room outlines only.
   v.CheckDoors();

@@ -191,6 +191,18 @@ TEST(WorldLoader, OverlappingRooms) {
   EXPECT_EQ(e[0], "6:5: room b overlaps room a");
 }
 
+TEST(WorldLoader, CoordinatesBeyondTheSupportedExtent) {
+  const auto e = Errors(
+      Replace(kMinimal, "[[4, 0], [8, 0], [8, 4], [4, 4]]", "[[4, 0], [8e6, 0], [8, 4], [4, 4]]"));
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0],
+            "6:5: room b: vertex (8000000.00, 0.00) lies beyond 500.00 m of the origin (the "
+            "supported extent)");
+  const auto start = Errors(Replace(kMinimal, "pose: [1, 1, 0]", "pose: [1, -501, 0]"));
+  ASSERT_EQ(start.size(), 1u);
+  EXPECT_EQ(start[0], "14:3: robot_start lies beyond 500.00 m of the origin (the supported extent)");
+}
+
 TEST(WorldLoader, RobotStartOutsideEveryRoom) {
   const auto e = Errors(Replace(kMinimal, "pose: [1, 1, 0]", "pose: [20, 1, 0]"));
   ASSERT_EQ(e.size(), 1u);
