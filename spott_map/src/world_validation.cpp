@@ -76,22 +76,16 @@ class Validator {
     };
     const std::string limit =
         " lies beyond " + Metres(kWorldMaxCoordinate) + " of the origin (the supported extent)";
-    for (const Room& r : world_.rooms) {
-      for (const Vec2& p : r.polygon) {
-        if (far(p)) {
-          Error(r.where, "room " + r.id + ": vertex " + PointText(p) + limit);
-          break;
-        }
-      }
-    }
-    for (const Zone& z : world_.zones) {
-      for (const Vec2& p : z.polygon) {
-        if (far(p)) {
-          Error(z.where, "zone " + z.id + ": vertex " + PointText(p) + limit);
-          break;
-        }
-      }
-    }
+    // The first vertex of `points` beyond the extent, if any, is reported for `what`.
+    const auto check_points = [&](const std::vector<Vec2>& points, const std::string& what,
+                                  const SourceLocation& where) {
+      const auto beyond = std::find_if(points.begin(), points.end(), far);
+      if (beyond != points.end()) Error(where, what + PointText(*beyond) + limit);
+    };
+    for (const Room& r : world_.rooms)
+      check_points(r.polygon, "room " + r.id + ": vertex ", r.where);
+    for (const Zone& z : world_.zones)
+      check_points(z.polygon, "zone " + z.id + ": vertex ", z.where);
     for (const Wall& w : world_.walls) {
       if (far(w.segment.a) || far(w.segment.b) || w.thickness > kWorldMaxCoordinate)
         Error(w.where, "wall " + w.id + limit);
@@ -109,30 +103,33 @@ class Validator {
       if (far(p.pose.Position())) Error(p.where, "place " + p.name + limit);
     }
     for (const NamedPath& path : world_.paths) {
-      for (const Vec2& p : path.points) {
-        if (far(p)) {
-          Error(path.where, "path " + path.id + ": point " + PointText(p) + limit);
-          break;
-        }
-      }
+      check_points(path.points, "path " + path.id + ": point ", path.where);
     }
     if (far(world_.robot_start.Position())) Error(start_where, "robot_start" + limit);
   }
 
+  // A room or zone outline must be simple with at least `min_area_m2`; it is made
+  // counter-clockwise. Returns false (with an error) when it is not usable.
+  bool NormalizeOutline(Polygon& polygon, const std::string& what, const SourceLocation& where,
+                        double min_area_m2) {
+    if (auto crossing = FindSelfIntersection(polygon)) {
+      Error(where, what + ": polygon is self-intersecting (edge " +
+                       std::to_string(crossing->first) + " meets edge " +
+                       std::to_string(crossing->second) + ")");
+      return false;
+    }
+    const double area = SignedArea(polygon);
+    if (std::abs(area) < min_area_m2) {
+      Error(where, what + ": polygon has no area");
+      return false;
+    }
+    if (area < 0.0) std::reverse(polygon.begin(), polygon.end());
+    return true;
+  }
+
   void CheckRooms() {
     for (Room& room : world_.rooms) {
-      if (auto crossing = FindSelfIntersection(room.polygon)) {
-        Error(room.where, "room " + room.id + ": polygon is self-intersecting (edge " +
-                              std::to_string(crossing->first) + " meets edge " +
-                              std::to_string(crossing->second) + ")");
-        continue;
-      }
-      const double area = SignedArea(room.polygon);
-      if (std::abs(area) < 0.01) {
-        Error(room.where, "room " + room.id + ": polygon has no area");
-        continue;
-      }
-      if (area < 0.0) std::reverse(room.polygon.begin(), room.polygon.end());
+      NormalizeOutline(room.polygon, "room " + room.id, room.where, 0.01);
     }
     for (std::size_t i = 0; i < world_.rooms.size(); ++i) {
       for (std::size_t j = i + 1; j < world_.rooms.size(); ++j) {
@@ -214,18 +211,7 @@ class Validator {
 
   void CheckZonesAndPaths() {
     for (Zone& zone : world_.zones) {
-      if (auto crossing = FindSelfIntersection(zone.polygon)) {
-        Error(zone.where, "zone " + zone.id + ": polygon is self-intersecting (edge " +
-                              std::to_string(crossing->first) + " meets edge " +
-                              std::to_string(crossing->second) + ")");
-        continue;
-      }
-      const double area = SignedArea(zone.polygon);
-      if (std::abs(area) < 1e-4) {
-        Error(zone.where, "zone " + zone.id + ": polygon has no area");
-        continue;
-      }
-      if (area < 0.0) std::reverse(zone.polygon.begin(), zone.polygon.end());
+      NormalizeOutline(zone.polygon, "zone " + zone.id, zone.where, 1e-4);
     }
     for (const NamedPath& path : world_.paths) {
       for (std::size_t i = 0; i < path.points.size(); ++i) {
