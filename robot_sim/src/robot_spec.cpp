@@ -192,6 +192,11 @@ void ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name, RobotSp
         urdf_name, "link '" + spec.base_frame + "' needs a <collision> cylinder (the body)"));
     return;
   }
+  for (const auto& [name, joint] : model->joints_) {
+    if (joint->type == urdf::Joint::FIXED) continue;
+    spec.movable_joints.push_back(name);
+    if (name == "turret_joint") spec.turret_joint = name;
+  }
   spec.radius_m = body->radius;
   spec.height_m = body->length;
   for (RangeRingSpec& ring : spec.rings) {

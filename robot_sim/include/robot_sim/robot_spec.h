@@ -85,6 +85,10 @@ struct RobotSpec {
   std::vector<RangeRingSpec> rings;
   std::optional<LaserSpec> laser;
   std::optional<BumperSpec> bumper;
+  /// Every non-fixed joint of the URDF (published on joint_states for robot_state_publisher).
+  std::vector<std::string> movable_joints;
+  /// The joint that turns the sensor turret ("turret_joint"), "" when the robot has none.
+  std::string turret_joint;
 
   const RangeRingSpec* FindRing(const std::string& name) const;
 };
