@@ -1,5 +1,6 @@
 #include "spott_global_planner/planning_session.h"
 
+#include <sstream>
 #include <stdexcept>
 
 namespace spott_global_planner {
@@ -68,20 +69,24 @@ std::vector<std::string> PlanningSession::SetFeatures(
 
 PlanResult PlanningSession::SetGoal(const Vec2& goal) {
   PlanResult check;
-  if (!planner_.has_graph()) {
-    check.error = PlanError::kNoGraph;
-    check.message = "no room/door graph received yet: goal refused";
-    return check;
-  }
   if (!goal.allFinite()) {
     check.error = PlanError::kInvalidPoint;
     check.message = "goal has a coordinate that is not finite: goal refused";
     return check;
   }
+  if (!planner_.has_graph()) {
+    // Nothing to check it against yet: kept, and planned (or failed) once the graph arrives.
+    goal_ = goal;
+    check.message = "no room/door graph yet: the goal waits for one";
+    return check;
+  }
   if (planner_.graph().RoomContaining(goal) < 0) {
     check.error = PlanError::kGoalOutsideRooms;
-    check.message = "goal (" + std::to_string(goal.x()) + ", " + std::to_string(goal.y()) +
-                    ") is outside every room of the graph: goal refused";
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << std::fixed << "goal (" << goal.x() << ", " << goal.y()
+        << ") is outside every room of the graph: goal refused";
+    check.message = msg.str();
     return check;
   }
   goal_ = goal;

@@ -1,5 +1,7 @@
 #include "spott_global_planner/planning_session.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "spott_global_planner/window_tracker.h"
@@ -98,7 +100,8 @@ TEST_F(Session, GoalOutsideEveryRoomIsRefusedAndThePreviousGoalKept) {
   ASSERT_EQ(session_.SetGoal(Vec2(11, 1)).error, PlanError::kNone);
   const PlanResult refused = session_.SetGoal(Vec2(30, 1));
   EXPECT_EQ(refused.error, PlanError::kGoalOutsideRooms);
-  EXPECT_NE(refused.message.find("outside every room"), std::string::npos);
+  EXPECT_EQ(refused.message,
+            "goal (30.000, 1.000) is outside every room of the graph: goal refused");
   ASSERT_TRUE(session_.goal());
   EXPECT_TRUE(session_.goal()->isApprox(Vec2(11, 1)));
 }
@@ -170,6 +173,19 @@ TEST_F(Session, ObstacleBlockingAPassageReplansThroughAnotherDoorOfTheNode) {
   ASSERT_EQ(u.state, SessionState::kPlanned);
   EXPECT_EQ(u.path->doors, (Ids{"dAB", "dBH", "dCH"}));
   EXPECT_TRUE(u.replanned);
+}
+
+TEST(SessionWithoutGraph, GoalBeforeTheGraphIsKeptAndPlannedWhenTheGraphArrives) {
+  GlobalPlannerParameters params;
+  PlanningSession session(params);
+  const PlanResult early = session.SetGoal(Vec2(11, 1));
+  EXPECT_EQ(early.error, PlanError::kNone);
+  EXPECT_EQ(early.message, "no room/door graph yet: the goal waits for one");
+  EXPECT_EQ(session.SetGoal(Vec2(std::nan(""), 1)).error, PlanError::kInvalidPoint);
+  session.SetGraph(test::MakeTestBuilding());
+  const SessionUpdate u = session.Update(Vec2(1, 1));
+  ASSERT_EQ(u.state, SessionState::kPlanned);
+  EXPECT_EQ(u.path->doors, (Ids{"dAB", "dBC"}));
 }
 
 TEST_F(Session, UnknownDoorIsRefusedWithoutChangingAnything) {

@@ -53,8 +53,9 @@ class PlanningSession {
   /// Re-analyses the passages of nodes whose features changed. Returns the changed nodes' ids.
   std::vector<std::string> SetFeatures(const std::vector<spott_map::MapFeature>& features);
 
-  /// Sets the goal (m, map frame). A goal outside every room (or with no graph yet) is refused
-  /// with the reason and the previous goal is kept.
+  /// Sets the goal (m, map frame). A goal outside every room is refused with the reason and the
+  /// previous goal is kept. Before any graph has arrived the goal is kept unchecked (message
+  /// says so); Update then plans to it, or fails naming the cause, once the graph is there.
   PlanResult SetGoal(const Vec2& goal);
   void ClearGoal();
   const std::optional<Vec2>& goal() const { return goal_; }
