@@ -22,6 +22,7 @@
 
 #include "spott_global_planner/planning_session.h"
 #include "spott_global_planner/ros/conversions.h"
+#include "spott_global_planner/ros/parameters.h"
 #include "spott_map/ros/conversions.h"
 
 namespace spott_global_planner {
@@ -30,57 +31,7 @@ namespace {
 namespace conv = ros_conversions;
 namespace map_conv = spott_map::ros_conversions;
 
-struct NodeParameters {
-  std::string frame_id = "map";
-  std::string robot_frame = "base_link";
-  double update_rate_hz = 5.0;  ///< (0, 100]
-  bool follow_local_window = true;
-  GlobalPlannerParameters core;
-};
-
-template <class T>
-void Read(const ros::NodeHandle& pnh, const std::string& name, T& value,
-          std::vector<std::string>& violations) {
-  if (pnh.hasParam(name) && !pnh.getParam(name, value)) {
-    violations.push_back("~" + name + " has the wrong type");
-  }
-}
-
-// Reads and checks every parameter; each violation names its parameter.
-std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
-  std::vector<std::string> v;
-  Read(pnh, "frame_id", p.frame_id, v);
-  Read(pnh, "robot_frame", p.robot_frame, v);
-  Read(pnh, "update_rate", p.update_rate_hz, v);
-  Read(pnh, "follow_local_window", p.follow_local_window, v);
-  std::string algorithm = ToString(p.core.algorithm);
-  Read(pnh, "algorithm", algorithm, v);
-  if (const auto a = ParseSearchAlgorithm(algorithm)) {
-    p.core.algorithm = *a;
-  } else {
-    v.push_back("~algorithm must be dijkstra or astar (got '" + algorithm + "')");
-  }
-  WindowParameters& w = p.core.window;
-  Read(pnh, "window/window_size_m", w.window_size_m, v);
-  Read(pnh, "window/resolution_m", w.resolution_m, v);
-  Read(pnh, "window/recentre_margin_m", w.recentre_margin_m, v);
-  Read(pnh, "window/fit_node", w.fit_node, v);
-  Read(pnh, "window/max_window_size_m", w.max_window_size_m, v);
-  Read(pnh, "detect_blocked_passages", p.core.detect_blocked_passages, v);
-  PassageParameters& s = p.core.passage;
-  Read(pnh, "passage/resolution_m", s.resolution_m, v);
-  Read(pnh, "passage/padding_m", s.padding_m, v);
-  Read(pnh, "passage/door_depth_m", s.door_depth_m, v);
-  Read(pnh, "passage/max_cells", s.max_cells, v);
-  if (p.frame_id.empty()) v.push_back("~frame_id must not be empty");
-  if (p.robot_frame.empty()) v.push_back("~robot_frame must not be empty");
-  if (!(p.update_rate_hz > 0.0 && p.update_rate_hz <= 100.0)) {
-    v.push_back("~update_rate must be in (0, 100] Hz (got " + std::to_string(p.update_rate_hz) +
-                ")");
-  }
-  for (const std::string& s : ValidateParameters(p.core)) v.push_back("~" + s);
-  return v;
-}
+using ros_parameters::NodeParameters;
 
 // Ids and outlines of rooms and doors: equal signatures mean only door states can differ.
 std::string Structure(const spott_msgs::RoomDoorGraph& g) {
@@ -297,8 +248,10 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "global_planner");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
-  spott_global_planner::NodeParameters params;
-  const auto violations = spott_global_planner::ReadParameters(pnh, params);
+  spott_global_planner::ros_parameters::NodeParameters params;
+  XmlRpc::XmlRpcValue values;  // stays invalid (all defaults) when nothing is set
+  nh.getParam(ros::this_node::getName(), values);
+  const auto violations = spott_global_planner::ros_parameters::ReadParameters(values, params);
   if (!violations.empty()) {
     for (const auto& v : violations) ROS_FATAL("global_planner: %s", v.c_str());
     return 1;
