@@ -10,6 +10,12 @@ namespace spott_global_planner {
 namespace {
 
 constexpr std::size_t kMaxCausesNamed = 12;
+const std::string kRobot = "robot";
+const std::string kGoal = "goal";
+
+bool Contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
 
 std::string FormatPoint(const Vec2& p) {
   std::ostringstream out;
@@ -73,7 +79,7 @@ void GlobalPlanner::EnsureScratch() {
   stamp_ = 0;
 }
 
-PlanResult GlobalPlanner::Plan(const Vec2& start, const Vec2& goal) {
+PlanResult GlobalPlanner::Plan(const Vec2& start, const Vec2& goal, const PassageSides& sides) {
   PlanResult result;
   if (!has_graph()) {
     result.error = PlanError::kNoGraph;
@@ -98,7 +104,7 @@ PlanResult GlobalPlanner::Plan(const Vec2& start, const Vec2& goal) {
     result.message = "goal " + FormatPoint(goal) + " is outside every room of the graph";
     return result;
   }
-  return Search(start_room, goal_room, start, goal);
+  return Search(start_room, goal_room, start, goal, sides);
 }
 
 PlanResult GlobalPlanner::PlanBetweenRooms(const std::string& start_room,
@@ -116,11 +122,11 @@ PlanResult GlobalPlanner::PlanBetweenRooms(const std::string& start_room,
     result.message = "unknown room '" + (!s ? start_room : goal_room) + "'";
     return result;
   }
-  return Search(*s, *g, graph_.RoomCentre(*s), graph_.RoomCentre(*g));
+  return Search(*s, *g, graph_.RoomCentre(*s), graph_.RoomCentre(*g), PassageSides{});
 }
 
-PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& start,
-                                 const Vec2& goal) {
+PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& start, const Vec2& goal,
+                                 const PassageSides& sides) {
   PlanResult result;
   if (++stamp_ == 0) {  // wrapped: clear once every 2^32 queries
     EnsureScratch();
@@ -166,13 +172,23 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
     }
     state_closed_[s] = stamp_;
     ++expanded;
-    if (room == goal_room) {
-      found = s;
-      break;
-    }
     const int entry_door = s == start_state ? -1 : (s >> 1);
+    if (room == goal_room) {
+      // The goal is reached unless an obstacle inside its node separates it from where the
+      // search stands (the robot's side, or the door it entered by).
+      const bool reaches = s == start_state
+                               ? sides.start_reaches_goal_inside
+                               : (!sides.goal_entries || Contains(*sides.goal_entries, entry_door));
+      if (reaches) {
+        found = s;
+        break;
+      }
+    }
     for (const auto* arc = graph_.ArcsBegin(room); arc != graph_.ArcsEnd(room); ++arc) {
       if (!graph_.DoorPassable(arc->door)) continue;
+      if (s == start_state && sides.start_exits && !Contains(*sides.start_exits, arc->door)) {
+        continue;
+      }
       if (blocks && entry_door >= 0 && graph_.PassageBlocked(room, entry_door, arc->door)) {
         continue;
       }
@@ -196,7 +212,7 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
 
   if (found < 0) {
     result.error = PlanError::kNoPath;
-    Explain(start_room, goal_room, result);
+    Explain(start_room, goal_room, sides, result);
     return result;
   }
   GlobalPath path;
@@ -220,7 +236,8 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
   return result;
 }
 
-void GlobalPlanner::Explain(int start_room, int goal_room, PlanResult& result) {
+void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& sides,
+                            PlanResult& result) {
   // What the failed search reached: a node is reached when any of its states was settled.
   const int start_state = 2 * graph_.door_count();
   std::vector<char> reached(static_cast<std::size_t>(graph_.room_count()), 0);
@@ -260,6 +277,32 @@ void GlobalPlanner::Explain(int start_room, int goal_room, PlanResult& result) {
     }
   }
   (void)start_state;
+  // Obstacles inside the start or goal node that cut the robot or the goal off from doors.
+  const auto far_of = [&](int d, int r) {
+    const auto [a, b] = graph_.DoorRooms(d);
+    return a == r ? b : a;
+  };
+  if (sides.start_exits) {
+    for (const auto* arc = graph_.ArcsBegin(start_room); arc != graph_.ArcsEnd(start_room); ++arc) {
+      if (graph_.DoorPassable(arc->door) && !Contains(*sides.start_exits, arc->door) &&
+          !reached[far_of(arc->door, start_room)]) {
+        result.blocked_passages.push_back(
+            BlockedPassage{graph_.room(start_room).id, kRobot, graph_.door(arc->door).id});
+      }
+    }
+  }
+  if (sides.goal_entries) {
+    for (const auto* arc = graph_.ArcsBegin(goal_room); arc != graph_.ArcsEnd(goal_room); ++arc) {
+      if (graph_.DoorPassable(arc->door) && !Contains(*sides.goal_entries, arc->door) &&
+          reached[far_of(arc->door, goal_room)]) {
+        result.blocked_passages.push_back(
+            BlockedPassage{graph_.room(goal_room).id, graph_.door(arc->door).id, kGoal});
+      }
+    }
+  }
+  if (start_room == goal_room && !sides.start_reaches_goal_inside) {
+    result.blocked_passages.push_back(BlockedPassage{graph_.room(start_room).id, kRobot, kGoal});
+  }
   // Would the graph join the nodes with every door open and every passage free?
   std::vector<char> seen(static_cast<std::size_t>(graph_.room_count()), 0);
   std::vector<int> stack{start_room};
@@ -296,8 +339,13 @@ void GlobalPlanner::Explain(int start_room, int goal_room, PlanResult& result) {
     }
     for (std::size_t i = 0; i < result.blocked_passages.size() && i < kMaxCausesNamed; ++i) {
       const BlockedPassage& p = result.blocked_passages[i];
-      causes.push_back("node '" + p.room + "' is blocked between doors " + p.door_a + " and " +
-                       p.door_b);
+      const auto name = [](const std::string& end) {
+        return end == kRobot || end == kGoal ? "the " + end : "door " + end;
+      };
+      const bool doors = name(p.door_a)[0] == 'd' && name(p.door_b)[0] == 'd';
+      causes.push_back("node '" + p.room + "' is blocked between " +
+                       (doors ? "doors " + p.door_a + " and " + p.door_b
+                              : name(p.door_a) + " and " + name(p.door_b)));
     }
     if (result.blocked_passages.size() > kMaxCausesNamed) {
       causes.push_back(std::to_string(result.blocked_passages.size() - kMaxCausesNamed) +

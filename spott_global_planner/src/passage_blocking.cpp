@@ -116,6 +116,12 @@ PassageAnalysis AnalysePassages(const spott_map::Room& room,
     reach[d].erase(std::unique(reach[d].begin(), reach[d].end()), reach[d].end());
     out.door_reachable[d] = !reach[d].empty();
   }
+  out.origin = box.min;
+  out.resolution = res;
+  out.width = w;
+  out.height = h;
+  out.labels = std::move(label);
+  out.door_components = reach;
   for (std::size_t a = 0; a < doors.size(); ++a) {
     for (std::size_t b = a + 1; b < doors.size(); ++b) {
       std::vector<int> common;
@@ -127,9 +133,67 @@ PassageAnalysis AnalysePassages(const spott_map::Room& room,
   return out;
 }
 
+std::vector<int> ComponentsNear(const PassageAnalysis& a, const Vec2& p, double radius) {
+  std::vector<int> out;
+  if (a.width == 0 || !p.allFinite()) return out;
+  const auto label_at = [&](int x, int y) {
+    return a.labels[static_cast<std::size_t>(y) * a.width + x];
+  };
+  const int cx = static_cast<int>(std::floor((p.x() - a.origin.x()) / a.resolution));
+  const int cy = static_cast<int>(std::floor((p.y() - a.origin.y()) / a.resolution));
+  if (cx >= 0 && cy >= 0 && cx < a.width && cy < a.height && label_at(cx, cy) >= 0) {
+    return {label_at(cx, cy)};
+  }
+  const int r = static_cast<int>(std::ceil(radius / a.resolution));
+  for (int y = std::max(0, cy - r); y <= std::min(a.height - 1, cy + r); ++y) {
+    for (int x = std::max(0, cx - r); x <= std::min(a.width - 1, cx + r); ++x) {
+      const int l = label_at(x, y);
+      if (l < 0) continue;
+      const Vec2 c = a.origin + Vec2((x + 0.5) * a.resolution, (y + 0.5) * a.resolution);
+      if ((c - p).norm() <= radius) out.push_back(l);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<int> DoorsReachedFrom(const PassageAnalysis& a, const std::vector<int>& components) {
+  std::vector<int> doors;
+  for (std::size_t d = 0; d < a.door_components.size(); ++d) {
+    std::vector<int> common;
+    std::set_intersection(a.door_components[d].begin(), a.door_components[d].end(),
+                          components.begin(), components.end(), std::back_inserter(common));
+    if (!common.empty()) doors.push_back(static_cast<int>(d));
+  }
+  return doors;
+}
+
 }  // namespace spott_global_planner
 
 namespace spott_global_planner {
+
+std::optional<std::vector<int>> PassageMonitor::DoorsReachedFrom(int room, const Vec2& p) const {
+  const auto it = kept_.find(room);
+  if (it == kept_.end()) return std::nullopt;
+  std::vector<int> doors;
+  const auto& kept = it->second;
+  for (int d : spott_global_planner::DoorsReachedFrom(kept.analysis,
+                                                      ComponentsNear(kept.analysis, p, Radius()))) {
+    doors.push_back(kept.doors[static_cast<std::size_t>(d)]);
+  }
+  return doors;
+}
+
+bool PassageMonitor::SameSide(int room, const Vec2& p, const Vec2& q) const {
+  const auto it = kept_.find(room);
+  if (it == kept_.end()) return true;
+  const auto a = ComponentsNear(it->second.analysis, p, Radius());
+  const auto b = ComponentsNear(it->second.analysis, q, Radius());
+  std::vector<int> common;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+  return !common.empty();
+}
 
 PassageMonitor::PassageMonitor(const PassageParameters& params) : params_(params) {
   const auto violations = ValidateParameters(params);
@@ -170,10 +234,19 @@ std::vector<int> PassageMonitor::Update(PlanningGraph& graph,
     std::string s = sig.str();
     if (s == signature_[r]) continue;
     signature_[r] = std::move(s);
-    const PassageAnalysis analysis = AnalysePassages(room, doors, meeting, params_);
+    PassageAnalysis analysis = AnalysePassages(room, doors, meeting, params_);
     std::vector<std::pair<int, int>> pairs;
+    std::vector<int> door_indices;
+    for (const spott_map::Door* d : doors) door_indices.push_back(*graph.FindDoor(d->id));
     for (const auto& [a, b] : analysis.blocked) {
-      pairs.emplace_back(*graph.FindDoor(doors[a]->id), *graph.FindDoor(doors[b]->id));
+      pairs.emplace_back(door_indices[static_cast<std::size_t>(a)],
+                         door_indices[static_cast<std::size_t>(b)]);
+    }
+    // Only the nodes with blocked passages keep their raster (for the robot's and goal's side).
+    if (analysis.blocked.empty()) {
+      kept_.erase(r);
+    } else {
+      kept_[r] = Kept{std::move(door_indices), std::move(analysis)};
     }
     const auto before = graph.BlockedPassagesOf(r);
     graph.SetBlockedPassages(r, pairs);

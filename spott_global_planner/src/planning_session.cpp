@@ -100,7 +100,20 @@ SessionUpdate PlanningSession::Update(const Vec2& robot, const spott_map::Box* w
   if (!goal_) {
     out.state = SessionState::kNoGoal;
   } else {
-    PlanResult result = planner_.Plan(robot, *goal_);
+    // Inside a node with blocked passages the robot and the goal may stand on one side of an
+    // obstacle: only the doors on their side count.
+    std::optional<std::vector<int>> exits, entries;
+    PassageSides sides;
+    const int n_r = planner_.RoomContaining(robot);
+    const int n_g = planner_.RoomContaining(*goal_);
+    if (params_.detect_blocked_passages && n_r >= 0 && n_g >= 0) {
+      exits = monitor_.DoorsReachedFrom(n_r, robot);
+      entries = monitor_.DoorsReachedFrom(n_g, *goal_);
+      sides.start_exits = exits ? &*exits : nullptr;
+      sides.goal_entries = entries ? &*entries : nullptr;
+      if (n_r == n_g) sides.start_reaches_goal_inside = monitor_.SameSide(n_r, robot, *goal_);
+    }
+    PlanResult result = planner_.Plan(robot, *goal_, sides);
     if (result.ok()) {
       out.state = SessionState::kPlanned;
       const int n_r = result.path->room_indices.front();

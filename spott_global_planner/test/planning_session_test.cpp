@@ -75,6 +75,17 @@ TEST(WindowTracker, EveryViolatedParameterIsNamed) {
   EXPECT_THROW(PlanningSession{all}, std::invalid_argument);
 }
 
+// The partition across H at x in [3.5,4.5] of the passage tests.
+spott_map::MapFeature Partition() {
+  spott_map::MapFeature partition;
+  partition.id = "p";
+  partition.type = spott_map::FeatureType::kRectangle;
+  partition.pose = spott_map::Pose2{4.0, 5.0, 0.0};
+  partition.size_x = 1.0;
+  partition.size_y = 3.0;
+  return partition;
+}
+
 class Session : public ::testing::Test {
  protected:
   Session() : session_(Params()) { session_.SetGraph(test::MakeTestBuilding()); }
@@ -162,13 +173,7 @@ TEST_F(Session, ObstacleBlockingAPassageReplansThroughAnotherDoorOfTheNode) {
   session_.SetGoal(Vec2(11, 1));
   SessionUpdate u = session_.Update(Vec2(2, 2), &window_);
   ASSERT_EQ(u.path->doors, (Ids{"dAH", "dCH"}));
-  spott_map::MapFeature partition;
-  partition.id = "p";
-  partition.type = spott_map::FeatureType::kRectangle;
-  partition.pose = spott_map::Pose2{4.0, 5.0, 0.0};
-  partition.size_x = 1.0;
-  partition.size_y = 3.0;
-  EXPECT_EQ(session_.SetFeatures({partition}), (Ids{"H"}));
+  EXPECT_EQ(session_.SetFeatures({Partition()}), (Ids{"H"}));
   u = session_.Update(Vec2(2, 2), &window_);
   ASSERT_EQ(u.state, SessionState::kPlanned);
   EXPECT_EQ(u.path->doors, (Ids{"dAB", "dBH", "dCH"}));
@@ -186,6 +191,45 @@ TEST(SessionWithoutGraph, GoalBeforeTheGraphIsKeptAndPlannedWhenTheGraphArrives)
   const SessionUpdate u = session.Update(Vec2(1, 1));
   ASSERT_EQ(u.state, SessionState::kPlanned);
   EXPECT_EQ(u.path->doors, (Ids{"dAB", "dBC"}));
+}
+
+TEST_F(Session, RobotOnTheFarSideOfAnObstacleInItsNodeLeavesByTheDoorsOnItsSide) {
+  // The robot stands in H at (2.5,5), left of the partition: of H's doors it reaches only dAH.
+  // With dBC closed the way to C is H-dAH-A-dAB-B-dBH-H-dCH-C (H twice, on either side):
+  // (sqrt(17) + 2) + 4 + 3 + (sqrt(17) + 2) = 11 + 2 sqrt(17).
+  session_.SetDoorState("dBC", spott_map::DoorState::kClosed);
+  session_.SetFeatures({Partition()});
+  session_.SetGoal(Vec2(11, 1));
+  const SessionUpdate u = session_.Update(Vec2(2.5, 5));
+  ASSERT_EQ(u.state, SessionState::kPlanned) << u.failure.message;
+  EXPECT_EQ(u.path->rooms, (Ids{"H", "A", "B", "H", "C"}));
+  EXPECT_EQ(u.path->doors, (Ids{"dAH", "dAB", "dBH", "dCH"}));
+  EXPECT_NEAR(u.path->cost, 11.0 + 2.0 * test::kSqrt17, 1e-9);
+}
+
+TEST_F(Session, GoalBehindAnObstacleInTheRobotsOwnNodeIsReachedAroundIt) {
+  // Robot (2.5,5) and goal (10,5) both in H, the partition between them: out by dAH, through A
+  // and B, back into H by dBH, which is on the goal's side: (sqrt(17) + 2) + 4 + 3.
+  session_.SetFeatures({Partition()});
+  session_.SetGoal(Vec2(10, 5));
+  const SessionUpdate u = session_.Update(Vec2(2.5, 5));
+  ASSERT_EQ(u.state, SessionState::kPlanned) << u.failure.message;
+  EXPECT_EQ(u.path->doors, (Ids{"dAH", "dAB", "dBH"}));
+  EXPECT_NEAR(u.path->cost, 9.0 + test::kSqrt17, 1e-9);
+  // On the goal's side the robot goes straight there.
+  EXPECT_TRUE(session_.Update(Vec2(9, 5)).path->doors.empty());
+}
+
+TEST_F(Session, RobotCutOffFromEveryOpenDoorFailsNamingTheObstacleAndTheClosedDoor) {
+  session_.SetDoorState("dAH", spott_map::DoorState::kClosed);
+  session_.SetFeatures({Partition()});
+  session_.SetGoal(Vec2(11, 1));
+  const SessionUpdate u = session_.Update(Vec2(2.5, 5));
+  ASSERT_EQ(u.state, SessionState::kFailed);
+  EXPECT_EQ(u.failure.closed_doors, (Ids{"dAH"}));
+  EXPECT_EQ(u.failure.message,
+            "no path from node 'H' to node 'C': door dAH is closed; node 'H' is blocked between "
+            "the robot and door dBH; node 'H' is blocked between the robot and door dCH");
 }
 
 TEST_F(Session, UnknownDoorIsRefusedWithoutChangingAnything) {

@@ -44,6 +44,18 @@ struct GlobalPath {
   std::size_t expanded = 0;
 };
 
+/// Where start and goal stand inside a node that has blocked passages: an obstacle may leave the
+/// robot (or the goal) on one side of it, reaching only some of the node's doors. Null pointers
+/// mean no restriction (a node without blocked passages).
+struct PassageSides {
+  /// Doors (indices) the robot can leave its node by; null: every door.
+  const std::vector<int>* start_exits = nullptr;
+  /// Doors (indices) through which the goal can be reached inside its node; null: every door.
+  const std::vector<int>* goal_entries = nullptr;
+  /// Start and goal in one node: false when an obstacle separates them inside it.
+  bool start_reaches_goal_inside = true;
+};
+
 enum class PlanError {
   kNone,
   kNoGraph,            ///< no graph was given yet, or it has no rooms
@@ -62,7 +74,8 @@ struct PlanResult {
   std::string message;
   /// kNoPath: closed doors of reached nodes that lead to unreached nodes.
   std::vector<std::string> closed_doors;
-  /// kNoPath: blocked passages out of reached nodes whose far side was not reached.
+  /// kNoPath: blocked passages out of reached nodes whose far side was not reached; an end
+  /// named "robot" or "goal" is the robot's or the goal's side of its node.
   std::vector<BlockedPassage> blocked_passages;
   /// kNoPath: true when even with every door open and every passage free the graph has no
   /// door sequence between the two nodes.
@@ -85,14 +98,18 @@ class GlobalPlanner {
   void set_algorithm(SearchAlgorithm a) { algorithm_ = a; }
   SearchAlgorithm algorithm() const { return algorithm_; }
 
-  /// Plans from the node holding `start` to the node holding `goal` (m, map frame).
-  PlanResult Plan(const Vec2& start, const Vec2& goal);
+  /// Plans from the node holding `start` to the node holding `goal` (m, map frame). `sides`
+  /// restricts the doors by which the robot leaves and the goal is reached (see PassageSides).
+  PlanResult Plan(const Vec2& start, const Vec2& goal, const PassageSides& sides = {});
+  /// The node holding `p`, or -1.
+  int RoomContaining(const Vec2& p) const { return graph_.RoomContaining(p); }
   /// Plans between two nodes given by id; the waypoints start and end at their centres.
   PlanResult PlanBetweenRooms(const std::string& start_room, const std::string& goal_room);
 
  private:
-  PlanResult Search(int start_room, int goal_room, const Vec2& start, const Vec2& goal);
-  void Explain(int start_room, int goal_room, PlanResult& result);
+  PlanResult Search(int start_room, int goal_room, const Vec2& start, const Vec2& goal,
+                    const PassageSides& sides);
+  void Explain(int start_room, int goal_room, const PassageSides& sides, PlanResult& result);
   void EnsureScratch();
 
   PlanningGraph graph_;

@@ -8,6 +8,8 @@
 // twice the padding) is joined to no other door.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,7 +39,24 @@ struct PassageAnalysis {
   std::vector<bool> door_reachable;
   /// False when the node was too large to rasterize (nothing is reported blocked then).
   bool analysed = true;
+  /// The raster: free cells carry the index of their 4-connected component, others -1.
+  spott_map::Vec2 origin{0.0, 0.0};
+  double resolution = 0.0;
+  int width = 0;
+  int height = 0;
+  std::vector<int> labels;
+  /// Per door: the components the free cells just inside its opening belong to (sorted).
+  std::vector<std::vector<int>> door_components;
 };
+
+/// The components of the free cells within `radius` (m) of `p` (the cell holding `p` alone when
+/// it is free): where the robot or the goal stands. Sorted; empty when nothing free is near.
+std::vector<int> ComponentsNear(const PassageAnalysis& analysis, const spott_map::Vec2& p,
+                                double radius);
+
+/// Indices (into the analysed doors) of the doors that share a component with `components`.
+std::vector<int> DoorsReachedFrom(const PassageAnalysis& analysis,
+                                  const std::vector<int>& components);
 
 /// Analyses one node: `doors` are the node's doors (any state), `obstacles` every feature that
 /// may meet it (walls included: the node's own walls only narrow its border).
@@ -57,11 +76,29 @@ class PassageMonitor {
   /// Returns the indices of the nodes whose set of blocked passages changed.
   std::vector<int> Update(PlanningGraph& graph, const std::vector<spott_map::MapFeature>& features);
   /// Forget what was analysed (call after replacing the graph).
-  void Reset() { signature_.clear(); }
+  void Reset() {
+    signature_.clear();
+    kept_.clear();
+  }
+
+  /// For a node with blocked passages: the doors (graph indices) reached from `p` inside it,
+  /// i.e. on p's side of the obstacles (free cells within the padding of `p` count, since the
+  /// robot stands closer than that to an obstacle it has just found). nullopt for a node
+  /// without blocked passages (every door is reached).
+  std::optional<std::vector<int>> DoorsReachedFrom(int room, const spott_map::Vec2& p) const;
+  /// False when obstacles inside node `room` separate `p` from `q`.
+  bool SameSide(int room, const spott_map::Vec2& p, const spott_map::Vec2& q) const;
 
  private:
+  struct Kept {
+    std::vector<int> doors;  // graph indices, in the order analysed
+    PassageAnalysis analysis;
+  };
+  double Radius() const { return params_.padding_m + params_.resolution_m; }
+
   PassageParameters params_;
   std::vector<std::string> signature_;  // per room: what the last analysis saw
+  std::map<int, Kept> kept_;            // analyses of the nodes with blocked passages
 };
 
 }  // namespace spott_global_planner
