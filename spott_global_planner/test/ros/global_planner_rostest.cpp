@@ -1,0 +1,210 @@
+// rostest of the global_planner node with the world_server as the map's owner, on the building
+// of the unit tests (test/data/three_rooms_hallway.yaml), the robot fixed at (1.1,1.1) in room A
+// by a static transform this test broadcasts. Doors are closed through the world server (as the
+// map's owner does when the robot finds one closed) and the node must replan; an obstacle sent
+// as a map update blocks a passage through the hallway; bad requests are refused and the node
+// keeps its goal.
+#include <geometry_msgs/PointStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <spott_msgs/Door.h>
+#include <spott_msgs/GlobalPath.h>
+#include <spott_msgs/GlobalPlanStatus.h>
+#include <spott_msgs/MapUpdate.h>
+#include <spott_msgs/PlanGlobalPath.h>
+#include <spott_msgs/ProjectedGoal.h>
+#include <spott_msgs/SetDoorState.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+namespace {
+
+using Ids = std::vector<std::string>;
+
+template <class Msg>
+class Latest {
+ public:
+  Latest(ros::NodeHandle& nh, const std::string& topic)
+      : sub_(nh.subscribe(topic, 10, &Latest::On, this)) {}
+  bool WaitFor(const std::function<bool(const Msg&)>& ok, double seconds = 15.0) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::ok() && ros::WallTime::now() < end) {
+      ros::spinOnce();
+      if (msg_ && ok(*msg_)) return true;
+      ros::WallDuration(0.01).sleep();
+    }
+    return false;
+  }
+  const std::optional<Msg>& msg() const { return msg_; }
+
+ private:
+  void On(const Msg& m) { msg_ = m; }
+  ros::Subscriber sub_;
+  std::optional<Msg> msg_;
+};
+
+class GlobalPlannerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService("/world_server/set_door_state", ros::Duration(30)));
+    ASSERT_TRUE(
+        ros::service::waitForService("/global_planner/plan_global_path", ros::Duration(30)));
+    goal_pub_ = nh_.advertise<geometry_msgs::PointStamped>("global_goal", 1, true);
+    updates_pub_ = nh_.advertise<spott_msgs::MapUpdate>("map_updates", 10);
+    // Publishers connect before anything is sent.
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
+    while ((goal_pub_.getNumSubscribers() == 0 || updates_pub_.getNumSubscribers() < 2) &&
+           ros::WallTime::now() < end) {
+      ros::WallDuration(0.05).sleep();
+    }
+  }
+
+  void SendGoal(double x, double y, const std::string& frame = "map") {
+    geometry_msgs::PointStamped g;
+    g.header.frame_id = frame;
+    g.header.stamp = ros::Time::now();
+    g.point.x = x;
+    g.point.y = y;
+    goal_pub_.publish(g);
+  }
+
+  void SetDoor(const std::string& id, uint8_t state) {
+    spott_msgs::SetDoorState srv;
+    srv.request.door_id = id;
+    srv.request.state = state;
+    ASSERT_TRUE(ros::service::call("/world_server/set_door_state", srv));
+    ASSERT_TRUE(srv.response.success) << srv.response.message;
+  }
+
+  ros::NodeHandle nh_;
+  ros::Publisher goal_pub_, updates_pub_;
+};
+
+bool Near(const geometry_msgs::Point& p, double x, double y) {
+  return std::abs(p.x - x) < 1e-3 && std::abs(p.y - y) < 1e-3;
+}
+
+TEST_F(GlobalPlannerTest, ReplansWhenDoorsCloseAndFailsNamingThemWhenNoPathIsLeft) {
+  Latest<spott_msgs::GlobalPath> path(nh_, "global_path");
+  Latest<spott_msgs::ProjectedGoal> projected(nh_, "projected_goal");
+  Latest<spott_msgs::GlobalPlanStatus> status(nh_, "global_plan_status");
+  SendGoal(11, 1);
+
+  // A-dAB-B-dBC-C, 8 m.
+  ASSERT_TRUE(path.WaitFor([](const auto& p) { return p.doors == Ids{"dAB", "dBC"}; }));
+  EXPECT_EQ(path.msg()->rooms, (Ids{"A", "B", "C"}));
+  EXPECT_NEAR(path.msg()->cost, 8.0, 1e-9);
+  // The modelled window: 7 m around (1.1,1.1) on the 0.2 m lattice, [-2.4,4.6]^2. dAB (x = 4)
+  // is inside, dBC (x = 8) is not: case 3, e_k = dBC, n_k = B; the line y = 2 through B's centre
+  // (6,2) and dBC's centre (8,2) crosses the border at (4.6,2); B holds y in [0,4] of that side.
+  ASSERT_TRUE(projected.WaitFor([](const auto& g) { return g.edge_id == "dBC"; }));
+  const auto& g = *projected.msg();
+  EXPECT_EQ(g.projection_case, spott_msgs::ProjectedGoal::CASE_GENERAL);
+  EXPECT_EQ(g.node_id, "B");
+  EXPECT_TRUE(g.on_border);
+  EXPECT_TRUE(Near(g.projected_point, 4.6, 2.0));
+  EXPECT_TRUE((Near(g.border_start, 4.6, 0.0) && Near(g.border_end, 4.6, 4.0)) ||
+              (Near(g.border_start, 4.6, 4.0) && Near(g.border_end, 4.6, 0.0)));
+  ASSERT_TRUE(status.WaitFor(
+      [](const auto& s) { return s.state == spott_msgs::GlobalPlanStatus::PLANNED; }));
+
+  // dBC closes: A-dAH-H-dCH-C.
+  SetDoor("dBC", spott_msgs::Door::CLOSED);
+  ASSERT_TRUE(path.WaitFor([](const auto& p) { return p.doors == Ids{"dAH", "dCH"}; }));
+  EXPECT_NEAR(path.msg()->cost, 4.0 + 2.0 * std::sqrt(17.0), 1e-9);
+  ASSERT_TRUE(status.WaitFor([](const auto& s) { return s.replans == 1; }));
+  EXPECT_EQ(status.msg()->state, spott_msgs::GlobalPlanStatus::PLANNED);
+  // dAH (y = 4) is inside the window now, dCH is not.
+  ASSERT_TRUE(projected.WaitFor([](const auto& g) { return g.edge_id == "dCH"; }));
+  EXPECT_EQ(projected.msg()->node_id, "H");
+
+  // An obstacle across the hallway between dAH and dBH (sent to the map's owner) blocks the
+  // passage dAH -> dCH through H: A-dAB-B-dBH-H-dCH-C.
+  spott_msgs::MapUpdate update;
+  spott_msgs::MapFeature partition;
+  partition.id = "partition1";
+  partition.type = spott_msgs::MapFeature::RECTANGLE;
+  partition.source = spott_msgs::MapFeature::SOURCE_SENSED;
+  partition.label = "partition";
+  partition.pose.position.x = 4.0;
+  partition.pose.position.y = 5.0;
+  partition.pose.orientation.w = 1.0;
+  partition.size.x = 0.5;
+  partition.size.y = 2.0;
+  update.header.frame_id = "map";
+  update.added.push_back(partition);
+  updates_pub_.publish(update);
+  ASSERT_TRUE(path.WaitFor([](const auto& p) {
+    return p.doors == Ids{"dAB", "dBH", "dCH"};
+  })) << "path still "
+      << (path.msg() ? path.msg()->doors.size() : 0) << " doors";
+  ASSERT_TRUE(status.WaitFor([](const auto& s) { return s.replans == 2; }));
+
+  // dCH closes too: no path; the status names both closed doors.
+  SetDoor("dCH", spott_msgs::Door::CLOSED);
+  ASSERT_TRUE(status.WaitFor(
+      [](const auto& s) { return s.state == spott_msgs::GlobalPlanStatus::FAILED; }));
+  EXPECT_EQ(status.msg()->closed_doors, (Ids{"dBC", "dCH"}));
+  EXPECT_EQ(status.msg()->message, "no path from node 'A' to node 'C': doors dBC, dCH are closed");
+  ASSERT_TRUE(path.WaitFor([](const auto& p) { return p.doors.empty() && p.rooms.empty(); }));
+
+  // dBC opens again: back to the short way.
+  SetDoor("dBC", spott_msgs::Door::OPEN);
+  ASSERT_TRUE(path.WaitFor([](const auto& p) { return p.doors == Ids{"dAB", "dBC"}; }));
+  ASSERT_TRUE(status.WaitFor(
+      [](const auto& s) { return s.state == spott_msgs::GlobalPlanStatus::PLANNED; }));
+}
+
+TEST_F(GlobalPlannerTest, BadRequestsAreRefusedWithTheReasonAndTheGoalIsKept) {
+  spott_msgs::PlanGlobalPath srv;
+  srv.request.start.x = 1.0;
+  srv.request.start.y = 1.0;
+  srv.request.goal.x = 30.0;
+  srv.request.goal.y = 30.0;
+  ASSERT_TRUE(ros::service::call("/global_planner/plan_global_path", srv));
+  EXPECT_FALSE(srv.response.success);
+  EXPECT_EQ(srv.response.message, "goal (30.000, 30.000) is outside every room of the graph");
+
+  srv.request.goal.x = 11.0;
+  srv.request.goal.y = 5.0;
+  ASSERT_TRUE(ros::service::call("/global_planner/plan_global_path", srv));
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  EXPECT_EQ(srv.response.path.doors, (Ids{"dAH"}));  // 2 + sqrt(17) < 7 through B
+  EXPECT_NEAR(srv.response.path.cost, 2.0 + std::sqrt(17.0), 1e-9);
+
+  Latest<spott_msgs::GlobalPlanStatus> status(nh_, "global_plan_status");
+  Latest<spott_msgs::GlobalPath> path(nh_, "global_path");
+  SendGoal(50, 50);
+  ASSERT_TRUE(status.WaitFor([](const auto& s) {
+    return s.message.find("outside every room") != std::string::npos &&
+           s.message.find("previous goal is kept") != std::string::npos;
+  })) << (status.msg() ? status.msg()->message : "no status");
+  SendGoal(2, 2, "odom");
+  ASSERT_TRUE(status.WaitFor(
+      [](const auto& s) { return s.message.find("frame 'odom'") != std::string::npos; }));
+  // Still planning to (11,1): the path of the first test stands.
+  ASSERT_TRUE(path.WaitFor([](const auto& p) { return !p.waypoints.empty(); }));
+  EXPECT_TRUE(Near(path.msg()->waypoints.back(), 11.0, 1.0));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "global_planner_rostest");
+  ros::NodeHandle nh;
+  // The robot stands at (1.1,1.1) in room A: no localization or simulator in this test.
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped pose;
+  pose.header.stamp = ros::Time::now();
+  pose.header.frame_id = "map";
+  pose.child_frame_id = "base_link";
+  pose.transform.translation.x = 1.1;
+  pose.transform.translation.y = 1.1;
+  pose.transform.rotation.w = 1.0;
+  broadcaster.sendTransform(pose);
+  return RUN_ALL_TESTS();
+}

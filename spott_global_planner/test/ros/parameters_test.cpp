@@ -1,0 +1,56 @@
+// The node's parameter checks, on XmlRpc structs as the parameter server hands them over.
+#include "spott_global_planner/ros/parameters.h"
+
+#include <gtest/gtest.h>
+
+namespace spott_global_planner::ros_parameters {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+using Strings = std::vector<std::string>;
+
+TEST(NodeParameters, NothingSetKeepsTheDefaults) {
+  XmlRpcValue none;
+  NodeParameters p;
+  EXPECT_TRUE(ReadParameters(none, p).empty());
+  EXPECT_EQ(p.frame_id, "map");
+  EXPECT_DOUBLE_EQ(p.core.window.window_size_m, 7.0);
+}
+
+TEST(NodeParameters, NestedValuesAreRead) {
+  XmlRpcValue v;
+  v["algorithm"] = "astar";
+  v["update_rate"] = 10;  // an int is a number
+  v["window"]["window_size_m"] = 9.0;
+  v["window"]["fit_node"] = true;
+  v["passage"]["max_cells"] = 1000;
+  NodeParameters p;
+  EXPECT_EQ(ReadParameters(v, p), Strings{});
+  EXPECT_EQ(p.core.algorithm, SearchAlgorithm::kAStar);
+  EXPECT_DOUBLE_EQ(p.update_rate_hz, 10.0);
+  EXPECT_DOUBLE_EQ(p.core.window.window_size_m, 9.0);
+  EXPECT_TRUE(p.core.window.fit_node);
+  EXPECT_EQ(p.core.passage.max_cells, 1000);
+}
+
+TEST(NodeParameters, EveryViolationNamesItsParameter) {
+  XmlRpcValue v;
+  v["algorithm"] = "bfs";
+  v["update_rate"] = 0.0;
+  v["frame_id"] = 3;
+  v["window"]["window_size_m"] = -1.0;
+  v["window"]["fit_node"] = "yes";
+  v["window"]["size"] = 5.0;  // a typo of window_size_m
+  v["passage"]["padding_m"] = -0.5;
+  NodeParameters p;
+  EXPECT_EQ(ReadParameters(v, p), (Strings{"~frame_id must be a string",
+                                           "~algorithm must be dijkstra or astar (got 'bfs')",
+                                           "~window/fit_node must be true or false",
+                                           "~window/size is not a parameter of global_planner",
+                                           "~update_rate must be in (0, 100] Hz (got 0)",
+                                           "~window/window_size_m must be > 0 (got -1)",
+                                           "~passage/padding_m must be >= 0 (got -0.5)"}));
+}
+
+}  // namespace
+}  // namespace spott_global_planner::ros_parameters
