@@ -1,11 +1,11 @@
 // Geometric multigrid for the Dirichlet problem of solver.h: V-cycles whose smoother is the
 // colour-ordered Gauss-Seidel of kernels.h. Vertex coarsening: coarse cell (I, J) sits on fine
-// cell (2I, 2J) and is an unknown when that fine cell is; full-weighting restriction of the
-// residual, bilinear prolongation of the correction (never into fixed cells). The coarse
+// cell (2I, 2J) and is an unknown when its 3 x 3 fine footprint is; full-weighting restriction of
+// the residual, bilinear prolongation of the correction (never into fixed cells). The coarse
 // problem is the residual equation with homogeneous Dirichlet values: with the normalized
 // stencil (mean - u = h^2/4 Laplacian), doubling h multiplies the right-hand side by 4.
-// Obstacles thinner than two cells may vanish on coarse levels; the smoother then carries the
-// correction there, so the cycle stays convergent but slows down (measured in bench/).
+// Passages narrower than three cells close on coarse levels; the smoother alone carries the
+// correction through them, so the cycle stays convergent but slows down (measured in bench/).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -44,8 +44,16 @@ class MultigridSolver final : public IterativeSolver {
       std::vector<std::uint8_t> cfree(static_cast<std::size_t>(cx) * cy, 0);
       for (int y = 1; y < cy - 1; ++y) {
         for (int x = 1; x < cx - 1; ++x) {
-          cfree[static_cast<std::size_t>(y) * cx + x] =
-              fine.free[static_cast<std::size_t>(2 * y) * fine.nx + 2 * x];
+          // Conservative coarsening: an unknown only when its whole 3 x 3 fine footprint is,
+          // so walls thicken on coarse levels but never vanish (a vanished wall would couple
+          // rooms the fine grid separates, and the cycle diverges).
+          bool all_free = true;
+          for (int dy = -1; dy <= 1 && all_free; ++dy) {
+            for (int dx = -1; dx <= 1 && all_free; ++dx) {
+              all_free = fine.free[static_cast<std::size_t>(2 * y + dy) * fine.nx + 2 * x + dx];
+            }
+          }
+          cfree[static_cast<std::size_t>(y) * cx + x] = all_free ? 1 : 0;
         }
       }
       Level coarse = MakeLevel(cx, cy, cfree);

@@ -13,6 +13,9 @@ namespace spott_harmonic_planner {
 
 namespace {
 constexpr double kSqrt2 = 1.4142135623730951;
+// Multigrid hands over to line relaxation (relative norm) once its absolute residual is at
+// round-off of the O(1) values near the goal.
+constexpr double kPolishBelowAbsoluteResidual = 1e-13;
 constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
 constexpr int kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
 }  // namespace
@@ -79,19 +82,41 @@ void PotentialField::SetOccupancy(const spott_map::OccupancyRaster& raster) {
 
 void PotentialField::RebuildMask() {
   for (std::size_t i = 0; i < blocked_.size(); ++i) {
-    kind_[i] = blocked_[i] ? FieldCell::kObstacle : FieldCell::kFree;
+    kind_[i] = blocked_[i] ? FieldCell::kObstacle : FieldCell::kUnreachable;
   }
   for (std::size_t i : goal_cells_) kind_[i] = FieldCell::kGoal;
   goal_count_ = static_cast<int>(goal_cells_.size());
+  // Free cells the stencil connects to the goal (4-neighbours for the 5-point stencil, 8 for
+  // the 9-point one). The others have the exact solution p = 0 (all their boundary is an
+  // obstacle): they are fixed there instead of being left to the solver's round-off.
+  const int links = options_.solver.stencil == Stencil::kFivePoint ? 4 : 8;
+  std::vector<std::size_t> stack(goal_cells_.begin(), goal_cells_.end());
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    const int x = static_cast<int>(i % width_);
+    const int y = static_cast<int>(i / width_);
+    for (int k = 0; k < links; ++k) {
+      const int nx = x + kDx[k];
+      const int ny = y + kDy[k];
+      if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
+      const std::size_t j = Index(nx, ny);
+      if (kind_[j] != FieldCell::kUnreachable) continue;
+      kind_[j] = FieldCell::kFree;
+      stack.push_back(j);
+    }
+  }
   mask_.width = width_;
   mask_.height = height_;
   mask_.free.assign(kind_.size(), 0);
   for (std::size_t i = 0; i < kind_.size(); ++i) {
     mask_.free[i] = kind_[i] == FieldCell::kFree ? 1 : 0;
-    if (kind_[i] == FieldCell::kObstacle) p_[i] = 0.0;
+    if (kind_[i] == FieldCell::kObstacle || kind_[i] == FieldCell::kUnreachable) p_[i] = 0.0;
     if (kind_[i] == FieldCell::kGoal) p_[i] = 1.0;
   }
   solver_ready_ = false;
+  polish_ready_ = false;
+  report_.converged = false;  // the equations changed: iterate before trusting the field
 }
 
 bool PotentialField::SetGoalPoint(const Vec2& p) {
@@ -197,12 +222,31 @@ IterationReport PotentialField::Iterate(int sweeps) {
     solver_ready_ = true;
   }
   for (int s = 0; s < sweeps; ++s) {
-    solver_->Iterate(p_.data());
-    if (options_.norm == ResidualNorm::kRelative) {
-      // Relative accuracy needs p >= 0 everywhere (the exact p is); a coarse correction can
-      // overshoot below zero far from the goal, where the smoother then rebuilds it.
-      for (std::size_t i = 0; i < p_.size(); ++i) p_[i] = std::max(p_[i], 0.0);
+    if (options_.norm == ResidualNorm::kAbsolute) {
+      solver_->Iterate(p_.data());
+      continue;
     }
+    // Relative accuracy needs p >= 0 everywhere (the exact p is). A multigrid coarse correction
+    // is accurate in absolute terms only: it brings the field to round-off of its largest
+    // values, after which line relaxation (local, positive weights) resolves the small tails.
+    IterativeSolver* solver = solver_.get();
+    if (solver_->kind() == SolverKind::kMultigrid &&
+        kernels::Residual(options_.solver.stencil, width_, height_, p_.data(), nullptr,
+                          mask_.free.data(), nullptr) < kPolishBelowAbsoluteResidual) {
+      if (!polish_) {
+        SolverOptions o = options_.solver;
+        o.kind = SolverKind::kAdi;
+        o.omega = 0.0;
+        polish_ = MakeSolver(o);
+      }
+      if (!polish_ready_) {
+        polish_->Setup(mask_);
+        polish_ready_ = true;
+      }
+      solver = polish_.get();
+    }
+    solver->Iterate(p_.data());
+    for (std::size_t i = 0; i < p_.size(); ++i) p_[i] = std::max(p_[i], 0.0);
   }
   report_.sweeps += sweeps;
   report_.residual = Residual();
@@ -252,7 +296,9 @@ double PotentialField::InterpolatedGoalProbability(const Vec2& p) const {
 
 std::optional<Vec2> PotentialField::DescentDirection(const Vec2& p) const {
   const auto c = CellOf(p);
-  if (!c || kind_[Index(c->first, c->second)] == FieldCell::kObstacle) return std::nullopt;
+  if (!c) return std::nullopt;
+  const FieldCell k = kind_[Index(c->first, c->second)];
+  if (k == FieldCell::kObstacle || k == FieldCell::kUnreachable) return std::nullopt;
   const double gx = std::clamp((p.x() - origin_.x()) / resolution_ - 0.5, 0.0, width_ - 1.0);
   const double gy = std::clamp((p.y() - origin_.y()) / resolution_ - 0.5, 0.0, height_ - 1.0);
   const int x0 = std::min(static_cast<int>(gx), width_ - 2);
@@ -268,6 +314,27 @@ std::optional<Vec2> PotentialField::DescentDirection(const Vec2& p) const {
   const double n = std::hypot(dx, dy);  // hypot: no underflow for p ~ 1e-300 in corridors
   if (!(n > 0.0)) return std::nullopt;
   return Vec2(dx / n, dy / n);
+}
+
+std::optional<std::pair<int, int>> PotentialField::BestNeighbour(int x, int y) const {
+  std::optional<std::pair<int, int>> best;
+  double best_p = p_[Index(x, y)];
+  for (int j = 0; j < 8; ++j) {
+    const int nx = x + kDx[j];
+    const int ny = y + kDy[j];
+    if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
+    if (kind_[Index(nx, ny)] == FieldCell::kObstacle) continue;
+    // No diagonal step past an obstacle's corner.
+    if (j >= 4 && (kind_[Index(nx, y)] == FieldCell::kObstacle ||
+                   kind_[Index(x, ny)] == FieldCell::kObstacle)) {
+      continue;
+    }
+    if (p_[Index(nx, ny)] > best_p) {
+      best_p = p_[Index(nx, ny)];
+      best = std::make_pair(nx, ny);
+    }
+  }
+  return best;
 }
 
 PotentialField::Path PotentialField::DescendPath(const Vec2& start, double step_cells,
@@ -288,33 +355,28 @@ PotentialField::Path PotentialField::DescendPath(const Vec2& start, double step_
       path.reached_goal = true;
       break;
     }
+    if (k == FieldCell::kUnreachable) break;
     if (k == FieldCell::kObstacle) {
       path.entered_obstacle = true;
       break;
     }
     if (step == max_steps) break;
     Vec2 next;
-    const auto d1 = DescentDirection(pos);
-    const double here = p_[Index(c->first, c->second)];
-    if (d1) {
+    bool continuous = false;
+    if (const auto d1 = DescentDirection(pos)) {
       const auto d2 = DescentDirection(pos + 0.5 * h * *d1);
       next = pos + h * (d2 ? *d2 : *d1);
-    } else {
-      // Flat interpolant (a saddle between equal cells): step to the best neighbour cell.
-      int best = -1;
-      double best_p = here;
-      for (int j = 0; j < 8; ++j) {
-        const int nx = c->first + kDx[j];
-        const int ny = c->second + kDy[j];
-        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
-        if (kind_[Index(nx, ny)] == FieldCell::kObstacle) continue;
-        if (p_[Index(nx, ny)] > best_p) {
-          best_p = p_[Index(nx, ny)];
-          best = j;
-        }
-      }
-      if (best < 0) break;  // a true minimum of u: cannot happen for a converged harmonic field
-      next = CellCentre(c->first + kDx[best], c->second + kDy[best]);
+      const auto nc = CellOf(next);
+      continuous = nc && kind_[Index(nc->first, nc->second)] != FieldCell::kObstacle;
+    }
+    if (!continuous) {
+      // Flat interpolant (a saddle between equal cells), or a step that would leave free space
+      // (passages one or two cells wide): step to the best neighbour cell instead. For a
+      // harmonic field some 4-neighbour is strictly better (mean-value property), so this step
+      // always exists away from the goal.
+      const auto best = BestNeighbour(c->first, c->second);
+      if (!best) break;
+      next = CellCentre(best->first, best->second);
     }
     path.length_m += (next - pos).norm();
     pos = next;

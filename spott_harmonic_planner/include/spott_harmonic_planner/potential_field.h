@@ -54,7 +54,12 @@ struct IterationReport {
 };
 
 /// Cell kinds of the Dirichlet problem.
-enum class FieldCell : std::uint8_t { kFree = 0, kObstacle = 1, kGoal = 2 };
+enum class FieldCell : std::uint8_t {
+  kFree = 0,         ///< An unknown of the Laplace equation, connected to the goal.
+  kObstacle = 1,     ///< Padded obstacle or window border: u = 1 (p = 0).
+  kGoal = 2,         ///< u = 0 (p = 1).
+  kUnreachable = 3,  ///< Free but cut off from the goal: the exact solution is u = 1 (p = 0).
+};
 
 class PotentialField {
  public:
@@ -119,6 +124,10 @@ class PotentialField {
   /// where the interpolated gradient vanishes it steps to the best 8-neighbour cell.
   Path DescendPath(const Vec2& start, double step_cells = 0.5, int max_steps = 0) const;
 
+  /// The 8-neighbour with the largest p, if larger than the cell's own (no obstacles, no
+  /// diagonal step past an obstacle corner): one step of discrete steepest descent.
+  std::optional<std::pair<int, int>> BestNeighbour(int ix, int iy) const;
+
   /// Distance (m) from `p` to the nearest obstacle cell's square (border ring included).
   double Clearance(const Vec2& p) const;
 
@@ -142,6 +151,8 @@ class PotentialField {
   std::vector<float> clearance_cells_;  // distance transform (cells) to the nearest blocked cell
   GridMask mask_;
   bool solver_ready_ = false;
+  std::unique_ptr<IterativeSolver> polish_;  // relative norm with multigrid: ADI after V-cycles
+  bool polish_ready_ = false;
   int goal_count_ = 0;
   bool goal_on_border_ = false;
   std::vector<std::size_t> goal_cells_;
