@@ -305,12 +305,18 @@ std::optional<Vec2> PotentialField::DescentDirection(const Vec2& p) const {
   const int y0 = std::min(static_cast<int>(gy), height_ - 2);
   const double fx = gx - x0;
   const double fy = gy - y0;
-  const double p00 = p_[Index(x0, y0)], p10 = p_[Index(x0 + 1, y0)];
-  const double p01 = p_[Index(x0, y0 + 1)], p11 = p_[Index(x0 + 1, y0 + 1)];
-  // Gradient of p (ascent of p = descent of u), in cells; the common factor 1/resolution does
-  // not change the direction.
-  const double dx = (1 - fy) * (p10 - p00) + fy * (p11 - p01);
-  const double dy = (1 - fx) * (p01 - p00) + fx * (p11 - p10);
+  // Gradient of p (ascent of p = descent of u): central differences at the four surrounding
+  // cell centres, interpolated bilinearly. (The gradient of the bilinear interpolant itself
+  // jumps at cell centres and makes paths zig-zag along a corridor's centre line.) The common
+  // factor 1 / (2 resolution) does not change the direction.
+  const auto gradient = [this](int x, int y) {
+    const int xm = std::max(x - 1, 0), xp = std::min(x + 1, width_ - 1);
+    const int ym = std::max(y - 1, 0), yp = std::min(y + 1, height_ - 1);
+    return Vec2(p_[Index(xp, y)] - p_[Index(xm, y)], p_[Index(x, yp)] - p_[Index(x, ym)]);
+  };
+  const Vec2 g = (1 - fy) * ((1 - fx) * gradient(x0, y0) + fx * gradient(x0 + 1, y0)) +
+                 fy * ((1 - fx) * gradient(x0, y0 + 1) + fx * gradient(x0 + 1, y0 + 1));
+  const double dx = g.x(), dy = g.y();
   const double n = std::hypot(dx, dy);  // hypot: no underflow for p ~ 1e-300 in corridors
   if (!(n > 0.0)) return std::nullopt;
   return Vec2(dx / n, dy / n);
@@ -361,22 +367,39 @@ PotentialField::Path PotentialField::DescendPath(const Vec2& start, double step_
       break;
     }
     if (step == max_steps) break;
+    // Every step must raise the interpolated p strictly: the path cannot cycle.
+    const double here = InterpolatedGoalProbability(pos);
     Vec2 next;
     bool continuous = false;
     if (const auto d1 = DescentDirection(pos)) {
       const auto d2 = DescentDirection(pos + 0.5 * h * *d1);
       next = pos + h * (d2 ? *d2 : *d1);
       const auto nc = CellOf(next);
-      continuous = nc && kind_[Index(nc->first, nc->second)] != FieldCell::kObstacle;
+      continuous = nc && kind_[Index(nc->first, nc->second)] != FieldCell::kObstacle &&
+                   InterpolatedGoalProbability(next) > here;
     }
     if (!continuous) {
-      // Flat interpolant (a saddle between equal cells), or a step that would leave free space
-      // (passages one or two cells wide): step to the best neighbour cell instead. For a
-      // harmonic field some 4-neighbour is strictly better (mean-value property), so this step
-      // always exists away from the goal.
-      const auto best = BestNeighbour(c->first, c->second);
-      if (!best) break;
-      next = CellCentre(best->first, best->second);
+      // Flat or misleading interpolant (saddles, passages one or two cells wide): discrete
+      // steepest descent over cells until above the current value. For a harmonic field some
+      // 4-neighbour is strictly better (mean-value property), so this ends at the goal at worst.
+      std::pair<int, int> cell = *c;
+      bool found = false;
+      for (int hop = 0; hop < width_ + height_; ++hop) {
+        const auto best = BestNeighbour(cell.first, cell.second);
+        if (!best) break;
+        cell = *best;
+        if (p_[Index(cell.first, cell.second)] > here) {
+          found = true;
+          break;
+        }
+        // An intermediate cell: part of the path (each hop is one cell, never across a corner).
+        const Vec2 via = CellCentre(cell.first, cell.second);
+        path.length_m += (via - pos).norm();
+        pos = via;
+        path.points.push_back(pos);
+      }
+      if (!found) break;
+      next = CellCentre(cell.first, cell.second);
     }
     path.length_m += (next - pos).norm();
     pos = next;
