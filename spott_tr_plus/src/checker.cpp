@@ -319,8 +319,10 @@ class Checker {
     Formula::Kind k = Formula::Kind::kAnd;
     if (c.op == CondOp::kSeqOr || c.op == CondOp::kParOr) k = Formula::Kind::kOr;
     if (c.op == CondOp::kXor) k = Formula::Kind::kXor;
-    Formula f =
-        Formula::Binary(k, ToFormula(c.children[0], atoms), ToFormula(c.children[1], atoms));
+    // Operands in source order, so atoms are numbered left to right.
+    Formula left = ToFormula(c.children[0], atoms);
+    Formula right = ToFormula(c.children[1], atoms);
+    Formula f = Formula::Binary(k, std::move(left), std::move(right));
     if (c.IsTimed()) {
       // The timed operator may be FALSE whatever the operands compute: AND a fresh atom.
       const int tau = atoms.Fresh("<in time: operator at line " + std::to_string(c.where.line) +
