@@ -153,7 +153,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadTask{"go near door(1, 2) fast", 20, "a speed ('slowly', 'quickly', 'normal')"},
         BadTask{"go near door(1, 2) quickly now", 28, "expected the end of the command"},
         BadTask{"go near door(1cm, 2)", 14, "a number in metres"},
-        BadTask{"go near door(R1, 2)", 16, "expected ',' or ')'"},
+        BadTask{"go near door(R1, 2)", 13, "a name or numbers, not both"},
         BadTask{"go to", 6, "a target after 'to'"},
         BadTask{"find near chair", 6, "the object to find"},
         BadTask{"go near ellipse(1, 2, 3)", 16, "found 3 number(s)"},
