@@ -1,6 +1,7 @@
 #include "lexer.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -70,6 +71,11 @@ std::vector<Token> Tokenize(std::string_view s, bool hyphen_words) {
       const std::string digits(s.substr(start, i - start));
       t.number = std::strtod(digits.c_str(), nullptr);
       t.kind = Tok::kNumber;
+      if (!std::isfinite(t.number)) {
+        // Found by task_command_fuzz: 0.2e09999 overflowed to inf, which prints as a name.
+        t.kind = Tok::kError;
+        t.text = "number " + digits + " is out of range";
+      }
       const size_t unit_start = i;
       while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) ++i;
       t.unit = s.substr(unit_start, i - unit_start);

@@ -109,24 +109,25 @@ TEST_P(ParserErrors, NamesLineColumnAndWhatWasExpected) {
 
 INSTANTIATE_TEST_SUITE_P(
     EachError, ParserErrors,
-    ::testing::Values(BadCase{"main m {\n  a b -> nil;\n}", 2, 5, "expected '->'"},
-                      BadCase{"main m {\n  a -> ;\n}", 2, 8, "expected an action"},
-                      BadCase{"main m {\n  a -> x\n}", 3, 1, "expected ';'"},
-                      BadCase{"main m {\n  -> x;\n}", 2, 3, "expected a condition"},
-                      BadCase{"main m {\n  a -> x;\n", 3, 1, "to close program 'm'"},
-                      BadCase{"rule x;", 1, 1, "expected 'condition', 'action', 'main' or 'sub'"},
-                      BadCase{"condition c at 0 hz;", 1, 16, "frequency must be > 0"},
-                      BadCase{"condition c every 5;", 1, 19, "duration with its unit"},
-                      BadCase{"condition c fast;", 1, 13, "expected 'energized', 'ballistic'"},
-                      BadCase{"condition and;", 1, 11, "keyword 'and'"},
-                      BadCase{"main m {\n  a &[2] b -> x;\n}", 2, 7, "duration with its unit"},
-                      BadCase{"main m {\n  a -> x(\"open);\n}", 2, 10, "unterminated string"},
-                      BadCase{"main m {\n  a @ b -> x;\n}", 2, 5, "unexpected character '@'"},
-                      BadCase{"main m {\n  (a -> x;\n}", 2, 6, "expected ')'"},
-                      BadCase{"main m {\n  a -> x(1s);\n}", 2, 10, "without a unit"},
-                      BadCase{"action go(a b);", 1, 13, "expected ',' or ')'"},
-                      BadCase{"main m {\n  a -> x effects { not };\n}", 2, 24,
-                              "a condition name"}));
+    ::testing::Values(
+        BadCase{"main m {\n  a b -> nil;\n}", 2, 5, "expected '->'"},
+        BadCase{"main m {\n  a -> ;\n}", 2, 8, "expected an action"},
+        BadCase{"main m {\n  a -> x\n}", 3, 1, "expected ';'"},
+        BadCase{"main m {\n  -> x;\n}", 2, 3, "expected a condition"},
+        BadCase{"main m {\n  a -> x;\n", 3, 1, "to close program 'm'"},
+        BadCase{"rule x;", 1, 1, "expected 'condition', 'action', 'main' or 'sub'"},
+        BadCase{"condition c at 0 hz;", 1, 16, "frequency must be > 0"},
+        BadCase{"condition c every 5;", 1, 19, "duration with its unit"},
+        BadCase{"condition c fast;", 1, 13, "expected 'energized', 'ballistic'"},
+        BadCase{"condition and;", 1, 11, "keyword 'and'"},
+        BadCase{"main m {\n  a &[2] b -> x;\n}", 2, 7, "duration with its unit"},
+        BadCase{"main m {\n  a -> x(\"open);\n}", 2, 10, "unterminated string"},
+        BadCase{"main m {\n  a @ b -> x;\n}", 2, 5, "unexpected character '@'"},
+        BadCase{"main m {\n  (a -> x;\n}", 2, 6, "expected ')'"},
+        BadCase{"main m {\n  a -> x(1s);\n}", 2, 10, "without a unit"},
+        BadCase{"action go(a b);", 1, 13, "expected ',' or ')'"},
+        BadCase{"main m {\n  a -> x(1e999);\n}", 2, 10, "number 1e999 is out of range"},
+        BadCase{"main m {\n  a -> x effects { not };\n}", 2, 24, "a condition name"}));
 
 TEST(Parser, ReportsSeveralErrorsInOneRun) {
   const ParseResult r = ParseProgramText("main m {\n  a b -> x;\n  c -> ;\n  d -> y;\n}", "f.tr");

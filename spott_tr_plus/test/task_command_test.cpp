@@ -157,7 +157,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadTask{"go to", 6, "a target after 'to'"},
         BadTask{"find near chair", 6, "the object to find"},
         BadTask{"go near ellipse(1, 2, 3)", 16, "found 3 number(s)"},
-        BadTask{"go near door(1, 2) $", 20, "unexpected character '$'"}));
+        BadTask{"go near door(1, 2) $", 20, "unexpected character '$'"},
+        // Regression (task_command_fuzz): an overflowing number became inf and printed as a name.
+        BadTask{"go near ellipse(1, 2, 0, 0.5, 0.3, 1) away-from cylinder(5, 0, 0, "
+                "0.2e09999999999999999, 1)",
+                67, "number 0.2e09999999999999999 is out of range"}));
 
 // --- Interpretation ------------------------------------------------------------------------------
 
