@@ -303,6 +303,8 @@ TEST(Interpreter, SubroutineConditionsAreActiveOnlyWhileItIsCalled) {
   InterpreterState s = in->State();
   ASSERT_EQ(s.frames.size(), 2u);
   EXPECT_EQ(s.frames[1].program, "GOTO");
+  ASSERT_NE(FindFrame(s, "GOTO"), nullptr);
+  EXPECT_EQ(FindFrame(s, "GOTO")->firing_rule, 1);
   EXPECT_EQ(s.frames[1].args, std::vector<std::string>{"\"door\""});
   EXPECT_EQ(s.frames[1].caller, 0);
   EXPECT_TRUE(FindProcess(s, "at(\"door\")")->active);
@@ -312,6 +314,7 @@ TEST(Interpreter, SubroutineConditionsAreActiveOnlyWhileItIsCalled) {
   EXPECT_EQ(w.Log(), "start drive(\"door\"); stop drive; start report");
   s = in->State();
   ASSERT_EQ(s.frames.size(), 1u);
+  EXPECT_EQ(FindFrame(s, "GOTO"), nullptr);
   EXPECT_FALSE(FindProcess(s, "at(\"door\")")->active);
   in->Scan(0.2);
   in->Scan(0.3);

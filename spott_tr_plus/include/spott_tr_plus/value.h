@@ -17,3 +17,11 @@ using Value = std::variant<std::monostate, bool, double, std::string, std::vecto
 std::string ValueToString(const Value& value);
 
 }  // namespace spott_tr_plus
+
+namespace spott_tr_plus {
+
+/// The inverse of ValueToString: "nil", "true", "1.5", "\"text\"", "[1, 2]"; other text is taken
+/// as a string value as it is.
+Value ValueFromText(const std::string& text);
+
+}  // namespace spott_tr_plus
