@@ -60,7 +60,9 @@ std::unique_ptr<Setup> Make(int n, bool external) {
       raw->started_at = std::chrono::steady_clock::now();
     });
   }
-  r.InstantAction("idle", [raw, n](const std::vector<Value>&, double) { raw->started = n; });
+  // `idle` runs until stopped, as driving actions do (an instant energized action would be
+  // re-run, and the program re-scanned, on every Scan() call).
+  r.Action("idle", [raw, n](const ActionCall&) { raw->started = n; });
   const ParseResult p = ParseProgramText(ChainProgram(n), "bench.tr");
   std::vector<Diagnostic> d;
   s->in = Interpreter::Create(p.program, r, &d);
