@@ -231,15 +231,17 @@ struct Interpreter::Impl {
 
   void Cancel(Run* r) {
     if (!r) return;
-    if (!r->done) {
-      if (r->ticket) {
-        action_tickets.erase(r->ticket);
-        const auto* b = registry.FindAction(r->expr->name);
-        if (b && b->stop) b->stop(r->ticket);
-        r->ticket = 0;
-      }
-      if (r->callee >= 0) Deactivate(r->callee);
+    if (!r->done && r->ticket) {
+      action_tickets.erase(r->ticket);
+      const auto* b = registry.FindAction(r->expr->name);
+      if (b && b->stop) b->stop(r->ticket);
+      r->ticket = 0;
+    }
+    // A completed call may still hold its subroutine active (KeepsCalleeActive).
+    if (r->callee >= 0) {
+      const int callee = r->callee;
       r->callee = -1;
+      Deactivate(callee);
     }
     for (auto& k : r->kids) Cancel(k.get());
     r->done = true;
@@ -315,10 +317,31 @@ struct Interpreter::Impl {
   }
 
   // A leaf completed asynchronously: propagate up the tree.
-  void LeafDone(Run* r) {
+  // A call whose subroutine reached its goal inside a sustained (energized) action, and not in
+  // a sequence that moves on from it, keeps the subroutine active: it goes on monitoring its
+  // conditions (SPOTT's BUMPER_CHECK, INFRARED_CHECK called in parallel from the main program)
+  // while the calling rule stays the highest true one.
+  static bool KeepsCalleeActive(const Run* leaf) {
+    const Run* r = leaf;
+    while (r->parent) {
+      if (r->parent->expr->op == ActOp::kSequence) return false;
+      r = r->parent;
+    }
+    return !r->ballistic;
+  }
+
+  static bool HasLiveCallee(const Run* r) {
+    if (r->callee >= 0) return true;
+    for (const auto& k : r->kids) {
+      if (HasLiveCallee(k.get())) return true;
+    }
+    return false;
+  }
+
+  void LeafDone(Run* r, bool keep_callee = false) {
     r->done = true;
     r->ticket = 0;
-    r->callee = -1;
+    if (!keep_callee) r->callee = -1;
     dirty = true;
     Run* p = r->parent;
     while (p) {
@@ -531,7 +554,8 @@ struct Interpreter::Impl {
         Cancel(f.energized.get());
         f.energized = StartRule(f, r, false);
         f.energized_rule = r;
-      } else if (f.energized && f.energized->done && f.energized->done_call < scan_calls) {
+      } else if (f.energized && f.energized->done && f.energized->done_call < scan_calls &&
+                 !HasLiveCallee(f.energized.get())) {
         f.energized = StartRule(f, r, false);  // sustained: restarted at a later scan
       }
       return;
@@ -575,8 +599,10 @@ struct Interpreter::Impl {
         auto it = frames.find(id);
         if (it == frames.end()) continue;
         Run* leaf = it->second->caller_run;
-        Deactivate(id);
-        if (leaf && !leaf->done) LeafDone(leaf);
+        if (!leaf || leaf->done) continue;  // goal holds again in a kept-active subroutine
+        const bool keep = KeepsCalleeActive(leaf);
+        if (!keep) Deactivate(id);
+        LeafDone(leaf, keep);
       }
       for (Process* p : demanded) {
         const bool timer =

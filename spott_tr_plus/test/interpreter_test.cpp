@@ -337,6 +337,36 @@ TEST(Interpreter, CallCompletesWhenTheSubroutineGoalHoldsAndTheSequenceGoesOn) {
   EXPECT_TRUE(in->State().frames[0].action_running);
 }
 
+TEST(Interpreter, MonitoringSubroutineStaysActiveWhileTheCallingRuleIsSustained) {
+  // SPOTT's main program calls BUMPER_CHECK in parallel with the task: its goal (no contact)
+  // holds at once, yet it must keep watching the bumper while the main rule stays highest.
+  World w;
+  w.External("done");
+  w.External("bump");
+  w.LongAction("work");
+  w.LongAction("react");
+  auto in = w.Load(
+      "condition done; condition bump; action work; action react;\n"
+      "main m { done -> nil; true -> WATCH() || work; }\n"
+      "sub WATCH() { not bump -> nil; bump -> react; }");
+  in->Start(0.0);
+  EXPECT_EQ(w.Log(), "start work");
+  ASSERT_NE(FindFrame(in->State(), "WATCH"), nullptr);
+  EXPECT_EQ(FindFrame(in->State(), "WATCH")->firing_rule, 0);
+  in->SetCondition("bump", true, 0.1);
+  EXPECT_EQ(w.Log(), "start work; start react");
+  in->SetCondition("bump", false, 0.2);
+  EXPECT_EQ(w.Log(), "start work; start react; stop react");
+  EXPECT_NE(FindFrame(in->State(), "WATCH"), nullptr);
+  // Not restarted while parts of it run: `work` was started once.
+  in->Scan(0.3);
+  EXPECT_EQ(w.Log(), "start work; start react; stop react");
+  // The main goal: the sustained action is cancelled and WATCH deactivated.
+  in->SetCondition("done", true, 0.4);
+  EXPECT_EQ(w.log.back(), "stop work");
+  EXPECT_EQ(FindFrame(in->State(), "WATCH"), nullptr);
+}
+
 TEST(Interpreter, ConcurrentActionsStartTogetherAndCompleteWhenBothHave) {
   World w;
   w.External("goal");
