@@ -77,6 +77,9 @@ class TrPlusNode {
     if (!next) return false;
     if (interpreter_) interpreter_->Stop(Now());
     interpreter_ = std::move(next);
+    // The TR tree arcs (regression parents) do not change while a program runs: check once.
+    parents_.clear();
+    for (const ProgramVerdict& v : report->programs) parents_[v.program] = v.parent;
     running_.clear();
     interpreter_->Start(Now());
     AfterEvent();
@@ -193,15 +196,14 @@ class TrPlusNode {
   std::string LiveDot(const InterpreterState& s) const {
     std::string text;
     const ProgramFile& file = interpreter_->program();
-    const CheckReport report = CheckProgram(file);
     for (const FrameState& f : s.frames) {
       const Program* p = file.FindProgram(f.program);
-      const ProgramVerdict* v = report.Find(f.program);
-      if (!p || !v) continue;
+      auto parent = parents_.find(f.program);
+      if (!p || parent == parents_.end()) continue;
       DotLiveState live;
       live.rule_values = f.rule_values;
       live.firing_rule = f.firing_rule;
-      text += TrTreeDot(*p, v->parent, &live);
+      text += TrTreeDot(*p, parent->second, &live);
     }
     return text;
   }
@@ -211,6 +213,7 @@ class TrPlusNode {
   TaskInterpretationParameters task_params_;
   std::unique_ptr<Interpreter> interpreter_;
   std::map<Ticket, std::string> running_;
+  std::map<std::string, std::vector<int>> parents_;  ///< per program: TR tree arc targets
   ros::Publisher state_pub_, dot_pub_, events_pub_;
   ros::Subscriber condition_sub_, done_sub_;
   ros::ServiceServer load_srv_, task_srv_;
