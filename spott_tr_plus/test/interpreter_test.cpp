@@ -173,6 +173,29 @@ TEST(Interpreter, SequentialAndDoesNotComputeItsRightOperandWhenTheLeftDecides) 
   EXPECT_FALSE(FindProcess(in->State(), "b")->computing);
 }
 
+TEST(Interpreter, FiringRuleActsBeforeTheRulesBelowAreEvaluated) {
+  // The latency from a change to the action does not depend on the rules below the firing one:
+  // its action starts first, then the lower conditions are computed in the same scan.
+  World w;
+  w.External("a");
+  w.registry.Condition("below", [&w](const ConditionCall&, std::vector<Value>&) {
+    w.log.push_back("compute below");
+    return false;
+  });
+  w.InstantAction("x");
+  w.InstantAction("y");
+  auto in = w.Load(
+      "condition a; condition below; action x; action y;\n"
+      "main m { a -> x; below -> y; true -> y; }");
+  in->Start(0.0);
+  w.log.clear();
+  in->SetCondition("a", true, 0.1);
+  ASSERT_GE(w.log.size(), 2u);
+  EXPECT_EQ(w.log[0], "run x");
+  EXPECT_EQ(w.log[1], "compute below");
+  EXPECT_TRUE(in->State().frames[0].rule_values == (std::vector<bool>{true, false, true}));
+}
+
 TEST(Interpreter, ConcurrentAndComputesBothOperands) {
   World w;
   w.Sync("a");

@@ -31,16 +31,36 @@ namespace {
 namespace conv = ros_conversions;
 
 struct NodeParameters {
-  std::string program_file;  ///< Required: the .tr file to run at start-up.
-  std::string main;          ///< The program to run; empty: the file's `main`.
-  int max_call_depth = 32;   ///< >= 1
+  std::string program_file;           ///< Required: the .tr file to run at start-up.
+  std::string main;                   ///< The program to run; empty: the file's `main`.
+  int max_call_depth = 32;            ///< >= 1
+  TaskInterpretationParameters task;  ///< ~task/... (task_command.h)
 };
 
 std::vector<std::string> Validate(const NodeParameters& p) {
   std::vector<std::string> v;
-  if (p.program_file.empty()) v.push_back("program_file: required (a .tr file)");
-  if (p.max_call_depth < 1) v.push_back("max_call_depth: must be >= 1");
+  if (p.program_file.empty()) v.push_back("program_file is required (a .tr file)");
+  if (p.max_call_depth < 1) v.push_back("max_call_depth must be >= 1");
+  for (const std::string& t : ValidateParameters(p.task)) v.push_back("task/" + t);
   return v;
+}
+
+void ReadTaskParameters(const ros::NodeHandle& pnh, TaskInterpretationParameters& t) {
+  const std::pair<const char*, double*> fields[] = {
+      {"task/at_distance_m", &t.at_distance_m},
+      {"task/against_distance_m", &t.against_distance_m},
+      {"task/near_distance_m", &t.near_distance_m},
+      {"task/far_distance_m", &t.far_distance_m},
+      {"task/beyond_distance_m", &t.beyond_distance_m},
+      {"task/goal_tolerance_m", &t.goal_tolerance_m},
+      {"task/default_door_width_m", &t.default_door_width_m},
+      {"task/default_chair_radius_m", &t.default_chair_radius_m},
+      {"task/default_desk_length_m", &t.default_desk_length_m},
+      {"task/default_desk_width_m", &t.default_desk_width_m},
+      {"task/slow_fraction", &t.slow_fraction},
+      {"task/normal_fraction", &t.normal_fraction},
+      {"task/quick_fraction", &t.quick_fraction}};
+  for (const auto& [name, field] : fields) pnh.param(name, *field, *field);
 }
 
 class TrPlusNode {
@@ -164,7 +184,7 @@ class TrPlusNode {
       return true;
     }
     // The robot pose is not known to this node yet: interpret from the map origin.
-    const TaskInterpretResult in = InterpretTask(*parsed.command, 0, 0, 0, task_params_);
+    const TaskInterpretResult in = InterpretTask(*parsed.command, 0, 0, 0, params_.task);
     res.success = in.ok();
     res.message = FormatDiagnostics(in.diagnostics);
     if (in.ok()) res.interpretation = in.interpretation->ToString();
@@ -210,7 +230,6 @@ class TrPlusNode {
 
   ros::NodeHandle pnh_;
   NodeParameters params_;
-  TaskInterpretationParameters task_params_;
   std::unique_ptr<Interpreter> interpreter_;
   std::map<Ticket, std::string> running_;
   std::map<std::string, std::vector<int>> parents_;  ///< per program: TR tree arc targets
@@ -230,6 +249,7 @@ int main(int argc, char** argv) {
   pnh.param("program_file", params.program_file, params.program_file);
   pnh.param("main", params.main, params.main);
   pnh.param("max_call_depth", params.max_call_depth, params.max_call_depth);
+  spott_tr_plus::ReadTaskParameters(pnh, params.task);
   const auto violations = spott_tr_plus::Validate(params);
   if (!violations.empty()) {
     for (const auto& v : violations) ROS_FATAL("tr_plus_node: parameter %s", v.c_str());
