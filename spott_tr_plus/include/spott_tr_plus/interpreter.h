@@ -96,6 +96,8 @@ class Interpreter {
                                              std::vector<Diagnostic>* diagnostics,
                                              const std::string& main_name = "",
                                              Options options = Options());
+  /// Stops every running primitive action through its binding's stop function: whatever those
+  /// functions use must outlive the interpreter.
   ~Interpreter();
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
