@@ -390,6 +390,32 @@ TEST(Interpreter, MonitoringSubroutineStaysActiveWhileTheCallingRuleIsSustained)
   EXPECT_EQ(FindFrame(in->State(), "WATCH"), nullptr);
 }
 
+TEST(Interpreter, BallisticCallRunsUntilTheSubroutineGoalEvenWhenAHigherRuleFires) {
+  World w;
+  w.External("goal");
+  w.External("trigger");
+  w.External("urgent");
+  w.External("parked");
+  w.LongAction("park");
+  w.LongAction("alarm");
+  w.LongAction("idle");
+  auto in = w.Load(
+      "condition goal; condition trigger; condition urgent; condition parked;\n"
+      "action park; action alarm; action idle;\n"
+      "main m { goal -> nil; urgent -> alarm; trigger -> ballistic PARK(); true -> idle; }\n"
+      "sub PARK() { parked -> nil; true -> park; }");
+  in->Start(0.0);
+  in->SetCondition("trigger", true, 0.1);
+  EXPECT_EQ(w.Log(), "start idle; stop idle; start park");
+  in->SetCondition("urgent", true, 0.2);  // higher rule: PARK keeps running beside it
+  EXPECT_EQ(w.Log(), "start idle; stop idle; start park; start alarm");
+  EXPECT_NE(FindFrame(in->State(), "PARK"), nullptr);
+  in->SetCondition("parked", true, 0.3);  // the call completes: PARK is deactivated
+  EXPECT_EQ(w.log.back(), "stop park");
+  EXPECT_EQ(FindFrame(in->State(), "PARK"), nullptr);
+  EXPECT_EQ(in->State().frames[0].ballistic_running, 0);
+}
+
 TEST(Interpreter, ConcurrentActionsStartTogetherAndCompleteWhenBothHave) {
   World w;
   w.External("goal");
