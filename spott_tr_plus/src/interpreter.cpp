@@ -19,6 +19,10 @@ struct Process {
   std::string key;  ///< "name" or "name(input, ...)".
   const ConditionDecl* decl = nullptr;
   const Registry::ConditionBinding* binding = nullptr;
+  // Copies of the declaration and binding read on every scan (one indirection less).
+  Registry::ConditionKind kind = Registry::ConditionKind::kExternal;
+  bool ballistic = false;
+  double frequency_hz = 0.0;
   std::vector<Value> inputs;
   std::vector<Value> outputs;
   bool value = false;
@@ -116,6 +120,7 @@ struct Interpreter::Impl {
   bool started = false;
   std::vector<Process*> demanded;
   std::vector<int> completed_frames;
+  std::vector<int> scan_ids;
 
   // --- Frames ---------------------------------------------------------------------------------
 
@@ -138,6 +143,9 @@ struct Interpreter::Impl {
       slot->key = key;
       slot->decl = d;
       slot->binding = registry.FindCondition(d->name);
+      slot->kind = slot->binding->kind;
+      slot->ballistic = d->semantics == Semantics::kBallistic;
+      slot->frequency_hz = d->frequency_hz;
       slot->inputs = std::move(inputs);
       slot->outputs.resize(d->NumOutputs());
     }
@@ -223,15 +231,17 @@ struct Interpreter::Impl {
 
   void Cancel(Run* r) {
     if (!r) return;
-    if (!r->done) {
-      if (r->ticket) {
-        action_tickets.erase(r->ticket);
-        const auto* b = registry.FindAction(r->expr->name);
-        if (b && b->stop) b->stop(r->ticket);
-        r->ticket = 0;
-      }
-      if (r->callee >= 0) Deactivate(r->callee);
+    if (!r->done && r->ticket) {
+      action_tickets.erase(r->ticket);
+      const auto* b = registry.FindAction(r->expr->name);
+      if (b && b->stop) b->stop(r->ticket);
+      r->ticket = 0;
+    }
+    // A completed call may still hold its subroutine active (KeepsCalleeActive).
+    if (r->callee >= 0) {
+      const int callee = r->callee;
       r->callee = -1;
+      Deactivate(callee);
     }
     for (auto& k : r->kids) Cancel(k.get());
     r->done = true;
@@ -307,10 +317,31 @@ struct Interpreter::Impl {
   }
 
   // A leaf completed asynchronously: propagate up the tree.
-  void LeafDone(Run* r) {
+  // A call whose subroutine reached its goal inside a sustained (energized) action, and not in
+  // a sequence that moves on from it, keeps the subroutine active: it goes on monitoring its
+  // conditions (SPOTT's BUMPER_CHECK, INFRARED_CHECK called in parallel from the main program)
+  // while the calling rule stays the highest true one.
+  static bool KeepsCalleeActive(const Run* leaf) {
+    const Run* r = leaf;
+    while (r->parent) {
+      if (r->parent->expr->op == ActOp::kSequence) return false;
+      r = r->parent;
+    }
+    return !r->ballistic;
+  }
+
+  static bool HasLiveCallee(const Run* r) {
+    if (r->callee >= 0) return true;
+    for (const auto& k : r->kids) {
+      if (HasLiveCallee(k.get())) return true;
+    }
+    return false;
+  }
+
+  void LeafDone(Run* r, bool keep_callee = false) {
     r->done = true;
     r->ticket = 0;
-    r->callee = -1;
+    if (!keep_callee) r->callee = -1;
     dirty = true;
     Run* p = r->parent;
     while (p) {
@@ -396,19 +427,17 @@ struct Interpreter::Impl {
       p->demand_pass = pass;
       demanded.push_back(p);
     }
-    const auto kind = p->binding->kind;
-    if (kind != Registry::ConditionKind::kExternal) {
+    if (p->kind != Registry::ConditionKind::kExternal) {
       // Frequency 0: synchronous processes compute on every scan pass, asynchronous ones start
       // once per Scan() call (a re-entrant completion must not restart them in a loop).
-      const bool every_scan = p->decl->frequency_hz <= 0.0;
-      const bool sync = kind == Registry::ConditionKind::kSync;
-      const bool due = every_scan
-                           ? (sync ? p->computed_pass != pass : p->computed_call != scan_calls)
-                           : now >= p->next_due;
+      const bool due = p->frequency_hz <= 0.0 ? (p->kind == Registry::ConditionKind::kSync
+                                                     ? p->computed_pass != pass
+                                                     : p->computed_call != scan_calls)
+                                              : now >= p->next_due;
       if (due) Compute(p);
     }
     oldest = std::min(oldest, p->last_update);
-    if (p->computing && p->decl->semantics == Semantics::kBallistic) return false;
+    if (p->computing && p->ballistic) return false;
     return p->has_value && p->value;
   }
 
@@ -468,19 +497,39 @@ struct Interpreter::Impl {
 
   // --- Scanning -------------------------------------------------------------------------------
 
+  // Evaluates rule i of f and tracks its FALSE-to-TRUE transitions (for ballistic actions).
+  bool EvalRule(Frame& f, int i) {
+    double oldest = kInf;
+    const bool v = Eval(f, f.roots[i], oldest);
+    f.values[i] = v;
+    if (v && !f.prev_values[i]) f.armed[i] = 1;
+    if (!v) f.armed[i] = 0;
+    f.prev_values[i] = v;
+    return v;
+  }
+
+  // Scans f from the top. The highest true rule's action is dealt with as soon as that rule is
+  // found, then the rules below it are evaluated in the same scan (every active condition is
+  // monitored): the latency from a change to the action does not grow with the rules below.
   void ScanFrame(Frame& f) {
     const Program& p = file.programs[f.program];
     const int m = static_cast<int>(p.rules.size());
     f.firing = -1;
-    for (int i = 0; i < m; ++i) {
-      double oldest = kInf;
-      const bool v = Eval(f, f.roots[i], oldest);
-      f.values[i] = v;
-      if (v && !f.prev_values[i]) f.armed[i] = 1;
-      if (!v) f.armed[i] = 0;
-      f.prev_values[i] = v;
-      if (v && f.firing < 0) f.firing = i;
+    int i = 0;
+    for (; i < m; ++i) {
+      if (EvalRule(f, i)) {
+        f.firing = i;
+        ++i;
+        break;
+      }
     }
+    ActOnFiringRule(f, p);
+    // Acting never removes f itself (cancelling deactivates only its callees; completed calls
+    // are closed after the pass), so f is still valid here.
+    for (; i < m; ++i) EvalRule(f, i);
+  }
+
+  void ActOnFiringRule(Frame& f, const Program& p) {
     // Finished ballistic runs leave.
     f.ballistic.erase(std::remove_if(f.ballistic.begin(), f.ballistic.end(),
                                      [](const std::unique_ptr<Run>& r) { return r->done; }),
@@ -505,7 +554,8 @@ struct Interpreter::Impl {
         Cancel(f.energized.get());
         f.energized = StartRule(f, r, false);
         f.energized_rule = r;
-      } else if (f.energized && f.energized->done && f.energized->done_call < scan_calls) {
+      } else if (f.energized && f.energized->done && f.energized->done_call < scan_calls &&
+                 !HasLiveCallee(f.energized.get())) {
         f.energized = StartRule(f, r, false);  // sustained: restarted at a later scan
       }
       return;
@@ -539,10 +589,9 @@ struct Interpreter::Impl {
       next_wake = kInf;
       demanded.clear();
       completed_frames.clear();
-      std::vector<int> ids;
-      ids.reserve(frames.size());
-      for (const auto& [id, f] : frames) ids.push_back(id);
-      for (int id : ids) {
+      scan_ids.clear();
+      for (const auto& [id, f] : frames) scan_ids.push_back(id);
+      for (int id : scan_ids) {
         auto it = frames.find(id);
         if (it != frames.end()) ScanFrame(*it->second);
       }
@@ -550,12 +599,14 @@ struct Interpreter::Impl {
         auto it = frames.find(id);
         if (it == frames.end()) continue;
         Run* leaf = it->second->caller_run;
-        Deactivate(id);
-        if (leaf && !leaf->done) LeafDone(leaf);
+        if (!leaf || leaf->done) continue;  // goal holds again in a kept-active subroutine
+        const bool keep = KeepsCalleeActive(leaf);
+        if (!keep) Deactivate(id);
+        LeafDone(leaf, keep);
       }
       for (Process* p : demanded) {
-        const bool timer = p->binding->kind != Registry::ConditionKind::kExternal &&
-                           p->decl->frequency_hz > 0 && !p->computing;
+        const bool timer =
+            p->kind != Registry::ConditionKind::kExternal && p->frequency_hz > 0 && !p->computing;
         if (timer) next_wake = std::min(next_wake, p->next_due);
       }
     } while (dirty && ++passes < options.max_events_per_advance);

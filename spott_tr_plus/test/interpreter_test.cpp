@@ -173,6 +173,29 @@ TEST(Interpreter, SequentialAndDoesNotComputeItsRightOperandWhenTheLeftDecides) 
   EXPECT_FALSE(FindProcess(in->State(), "b")->computing);
 }
 
+TEST(Interpreter, FiringRuleActsBeforeTheRulesBelowAreEvaluated) {
+  // The latency from a change to the action does not depend on the rules below the firing one:
+  // its action starts first, then the lower conditions are computed in the same scan.
+  World w;
+  w.External("a");
+  w.registry.Condition("below", [&w](const ConditionCall&, std::vector<Value>&) {
+    w.log.push_back("compute below");
+    return false;
+  });
+  w.InstantAction("x");
+  w.InstantAction("y");
+  auto in = w.Load(
+      "condition a; condition below; action x; action y;\n"
+      "main m { a -> x; below -> y; true -> y; }");
+  in->Start(0.0);
+  w.log.clear();
+  in->SetCondition("a", true, 0.1);
+  ASSERT_GE(w.log.size(), 2u);
+  EXPECT_EQ(w.log[0], "run x");
+  EXPECT_EQ(w.log[1], "compute below");
+  EXPECT_TRUE(in->State().frames[0].rule_values == (std::vector<bool>{true, false, true}));
+}
+
 TEST(Interpreter, ConcurrentAndComputesBothOperands) {
   World w;
   w.Sync("a");
@@ -335,6 +358,62 @@ TEST(Interpreter, CallCompletesWhenTheSubroutineGoalHoldsAndTheSequenceGoesOn) {
   EXPECT_EQ(w.Log(), "start drive(\"door\"); stop drive; start report");
   EXPECT_EQ(in->State().frames.size(), 1u);
   EXPECT_TRUE(in->State().frames[0].action_running);
+}
+
+TEST(Interpreter, MonitoringSubroutineStaysActiveWhileTheCallingRuleIsSustained) {
+  // SPOTT's main program calls BUMPER_CHECK in parallel with the task: its goal (no contact)
+  // holds at once, yet it must keep watching the bumper while the main rule stays highest.
+  World w;
+  w.External("done");
+  w.External("bump");
+  w.LongAction("work");
+  w.LongAction("react");
+  auto in = w.Load(
+      "condition done; condition bump; action work; action react;\n"
+      "main m { done -> nil; true -> WATCH() || work; }\n"
+      "sub WATCH() { not bump -> nil; bump -> react; }");
+  in->Start(0.0);
+  EXPECT_EQ(w.Log(), "start work");
+  ASSERT_NE(FindFrame(in->State(), "WATCH"), nullptr);
+  EXPECT_EQ(FindFrame(in->State(), "WATCH")->firing_rule, 0);
+  in->SetCondition("bump", true, 0.1);
+  EXPECT_EQ(w.Log(), "start work; start react");
+  in->SetCondition("bump", false, 0.2);
+  EXPECT_EQ(w.Log(), "start work; start react; stop react");
+  EXPECT_NE(FindFrame(in->State(), "WATCH"), nullptr);
+  // Not restarted while parts of it run: `work` was started once.
+  in->Scan(0.3);
+  EXPECT_EQ(w.Log(), "start work; start react; stop react");
+  // The main goal: the sustained action is cancelled and WATCH deactivated.
+  in->SetCondition("done", true, 0.4);
+  EXPECT_EQ(w.log.back(), "stop work");
+  EXPECT_EQ(FindFrame(in->State(), "WATCH"), nullptr);
+}
+
+TEST(Interpreter, BallisticCallRunsUntilTheSubroutineGoalEvenWhenAHigherRuleFires) {
+  World w;
+  w.External("goal");
+  w.External("trigger");
+  w.External("urgent");
+  w.External("parked");
+  w.LongAction("park");
+  w.LongAction("alarm");
+  w.LongAction("idle");
+  auto in = w.Load(
+      "condition goal; condition trigger; condition urgent; condition parked;\n"
+      "action park; action alarm; action idle;\n"
+      "main m { goal -> nil; urgent -> alarm; trigger -> ballistic PARK(); true -> idle; }\n"
+      "sub PARK() { parked -> nil; true -> park; }");
+  in->Start(0.0);
+  in->SetCondition("trigger", true, 0.1);
+  EXPECT_EQ(w.Log(), "start idle; stop idle; start park");
+  in->SetCondition("urgent", true, 0.2);  // higher rule: PARK keeps running beside it
+  EXPECT_EQ(w.Log(), "start idle; stop idle; start park; start alarm");
+  EXPECT_NE(FindFrame(in->State(), "PARK"), nullptr);
+  in->SetCondition("parked", true, 0.3);  // the call completes: PARK is deactivated
+  EXPECT_EQ(w.log.back(), "stop park");
+  EXPECT_EQ(FindFrame(in->State(), "PARK"), nullptr);
+  EXPECT_EQ(in->State().frames[0].ballistic_running, 0);
 }
 
 TEST(Interpreter, ConcurrentActionsStartTogetherAndCompleteWhenBothHave) {

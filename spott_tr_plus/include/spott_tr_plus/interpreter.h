@@ -25,7 +25,13 @@
 //   its program (or Stop()) cancels it.
 // - `a || b` starts both and completes when both have; `a > b` starts b when a completes. A
 //   subroutine call completes when the subroutine's first rule fires with a nil action (its
-//   goal holds); a call whose subroutine has no such goal runs until cancelled.
+//   goal holds); a call whose subroutine has no such goal runs until cancelled. A call that
+//   completes inside a sustained (energized) action, not inside a `>` sequence, keeps its
+//   subroutine active (monitoring) while the calling rule stays highest; in a sequence or a
+//   ballistic action the subroutine is deactivated. A sustained action is restarted after it
+//   completes only when none of its subroutines is still active.
+// - The highest true rule is acted on as soon as the scan reaches it; the rules below it are
+//   evaluated afterwards in the same scan (all active conditions are monitored).
 // - Output variables of a rule's conditions are bound into its action's arguments when the
 //   action starts.
 #pragma once
@@ -90,6 +96,8 @@ class Interpreter {
                                              std::vector<Diagnostic>* diagnostics,
                                              const std::string& main_name = "",
                                              Options options = Options());
+  /// Stops every running primitive action through its binding's stop function: whatever those
+  /// functions use must outlive the interpreter.
   ~Interpreter();
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;

@@ -31,16 +31,36 @@ namespace {
 namespace conv = ros_conversions;
 
 struct NodeParameters {
-  std::string program_file;  ///< Required: the .tr file to run at start-up.
-  std::string main;          ///< The program to run; empty: the file's `main`.
-  int max_call_depth = 32;   ///< >= 1
+  std::string program_file;           ///< Required: the .tr file to run at start-up.
+  std::string main;                   ///< The program to run; empty: the file's `main`.
+  int max_call_depth = 32;            ///< >= 1
+  TaskInterpretationParameters task;  ///< ~task/... (task_command.h)
 };
 
 std::vector<std::string> Validate(const NodeParameters& p) {
   std::vector<std::string> v;
-  if (p.program_file.empty()) v.push_back("program_file: required (a .tr file)");
-  if (p.max_call_depth < 1) v.push_back("max_call_depth: must be >= 1");
+  if (p.program_file.empty()) v.push_back("program_file is required (a .tr file)");
+  if (p.max_call_depth < 1) v.push_back("max_call_depth must be >= 1");
+  for (const std::string& t : ValidateParameters(p.task)) v.push_back("task/" + t);
   return v;
+}
+
+void ReadTaskParameters(const ros::NodeHandle& pnh, TaskInterpretationParameters& t) {
+  const std::pair<const char*, double*> fields[] = {
+      {"task/at_distance_m", &t.at_distance_m},
+      {"task/against_distance_m", &t.against_distance_m},
+      {"task/near_distance_m", &t.near_distance_m},
+      {"task/far_distance_m", &t.far_distance_m},
+      {"task/beyond_distance_m", &t.beyond_distance_m},
+      {"task/goal_tolerance_m", &t.goal_tolerance_m},
+      {"task/default_door_width_m", &t.default_door_width_m},
+      {"task/default_chair_radius_m", &t.default_chair_radius_m},
+      {"task/default_desk_length_m", &t.default_desk_length_m},
+      {"task/default_desk_width_m", &t.default_desk_width_m},
+      {"task/slow_fraction", &t.slow_fraction},
+      {"task/normal_fraction", &t.normal_fraction},
+      {"task/quick_fraction", &t.quick_fraction}};
+  for (const auto& [name, field] : fields) pnh.param(name, *field, *field);
 }
 
 class TrPlusNode {
@@ -77,6 +97,9 @@ class TrPlusNode {
     if (!next) return false;
     if (interpreter_) interpreter_->Stop(Now());
     interpreter_ = std::move(next);
+    // The TR tree arcs (regression parents) do not change while a program runs: check once.
+    parents_.clear();
+    for (const ProgramVerdict& v : report->programs) parents_[v.program] = v.parent;
     running_.clear();
     interpreter_->Start(Now());
     AfterEvent();
@@ -161,7 +184,7 @@ class TrPlusNode {
       return true;
     }
     // The robot pose is not known to this node yet: interpret from the map origin.
-    const TaskInterpretResult in = InterpretTask(*parsed.command, 0, 0, 0, task_params_);
+    const TaskInterpretResult in = InterpretTask(*parsed.command, 0, 0, 0, params_.task);
     res.success = in.ok();
     res.message = FormatDiagnostics(in.diagnostics);
     if (in.ok()) res.interpretation = in.interpretation->ToString();
@@ -193,24 +216,23 @@ class TrPlusNode {
   std::string LiveDot(const InterpreterState& s) const {
     std::string text;
     const ProgramFile& file = interpreter_->program();
-    const CheckReport report = CheckProgram(file);
     for (const FrameState& f : s.frames) {
       const Program* p = file.FindProgram(f.program);
-      const ProgramVerdict* v = report.Find(f.program);
-      if (!p || !v) continue;
+      auto parent = parents_.find(f.program);
+      if (!p || parent == parents_.end()) continue;
       DotLiveState live;
       live.rule_values = f.rule_values;
       live.firing_rule = f.firing_rule;
-      text += TrTreeDot(*p, v->parent, &live);
+      text += TrTreeDot(*p, parent->second, &live);
     }
     return text;
   }
 
   ros::NodeHandle pnh_;
   NodeParameters params_;
-  TaskInterpretationParameters task_params_;
   std::unique_ptr<Interpreter> interpreter_;
   std::map<Ticket, std::string> running_;
+  std::map<std::string, std::vector<int>> parents_;  ///< per program: TR tree arc targets
   ros::Publisher state_pub_, dot_pub_, events_pub_;
   ros::Subscriber condition_sub_, done_sub_;
   ros::ServiceServer load_srv_, task_srv_;
@@ -227,6 +249,7 @@ int main(int argc, char** argv) {
   pnh.param("program_file", params.program_file, params.program_file);
   pnh.param("main", params.main, params.main);
   pnh.param("max_call_depth", params.max_call_depth, params.max_call_depth);
+  spott_tr_plus::ReadTaskParameters(pnh, params.task);
   const auto violations = spott_tr_plus::Validate(params);
   if (!violations.empty()) {
     for (const auto& v : violations) ROS_FATAL("tr_plus_node: parameter %s", v.c_str());
