@@ -132,9 +132,6 @@ void RunCold(benchmark::State& state, const Scenario& s, const shp::FieldOptions
   state.counters["cells"] = s.raster.width() * s.raster.height();
 }
 
-const shp::SolverKind kKinds[] = {shp::SolverKind::kSorRedBlack, shp::SolverKind::kAdi,
-                                  shp::SolverKind::kMultigrid};
-
 void BM_Paper35(benchmark::State& state) {
   RunCold(state, Paper35(),
           Options(static_cast<shp::SolverKind>(state.range(0)),
@@ -144,7 +141,7 @@ void BM_Paper35(benchmark::State& state) {
                  (state.range(1) ? " relative" : " absolute") +
                  (state.range(2) ? " nine_point" : " five_point"));
 }
-BENCHMARK(BM_Paper35)->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Paper35)->ArgsProduct({{0, 1, 2, 3}, {0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 // The first steering answer: the heuristic potential at the robot, window and goal loaded.
 void BM_FirstAnswer35(benchmark::State& state) {
@@ -177,7 +174,7 @@ void BM_Office(benchmark::State& state) {
                   shp::Stencil::kFivePoint));
   state.SetLabel(shp::ToString(static_cast<shp::SolverKind>(state.range(0))));
 }
-BENCHMARK(BM_Office)->ArgsProduct({{0, 1, 2}, {256, 512}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Office)->ArgsProduct({{0, 1, 2, 3}, {256, 512}})->Unit(benchmark::kMillisecond);
 
 void BM_Warm256(benchmark::State& state) {
   const auto kind = static_cast<shp::SolverKind>(state.range(0));
@@ -208,7 +205,7 @@ void BM_Warm256(benchmark::State& state) {
   state.counters["sweeps"] = sweeps;
   state.SetLabel(shp::ToString(kind));
 }
-BENCHMARK(BM_Warm256)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Warm256)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 void BM_Scaling(benchmark::State& state) {
   RunCold(state, Office(static_cast<int>(state.range(1))),
@@ -217,7 +214,7 @@ void BM_Scaling(benchmark::State& state) {
   state.SetLabel(shp::ToString(static_cast<shp::SolverKind>(state.range(0))));
 }
 BENCHMARK(BM_Scaling)
-    ->ArgsProduct({{2}, {32, 64, 128, 256, 512, 1024}})
+    ->ArgsProduct({{2, 3}, {32, 64, 128, 256, 512, 1024}})
     ->ArgsProduct({{0, 1}, {32, 64, 128, 256, 512}})
     ->Unit(benchmark::kMillisecond);
 

@@ -77,7 +77,7 @@ void PotentialField::SetOccupancy(const spott_map::OccupancyRaster& raster) {
   }
   goal_cells_ = kept;
   RebuildMask();
-  ComputeClearance();
+  clearance_ready_ = false;  // computed when first asked for (steering), not on every map update
 }
 
 void PotentialField::RebuildMask() {
@@ -206,6 +206,7 @@ void PotentialField::ColdStart() {
     p_[i] = table[wave_[i]];
   }
   table.clear();
+  solver_->Restart();
   report_ = IterationReport{};
   report_.residual = Residual();
   report_.converged = report_.residual < options_.tolerance;
@@ -262,7 +263,14 @@ IterationReport PotentialField::Iterate(int sweeps) {
       solver = polish_.get();
     }
     solver->Iterate(p_.data());
-    for (std::size_t i = 0; i < p_.size(); ++i) p_[i] = std::max(p_[i], 0.0);
+    bool clamped = false;
+    for (double& v : p_) {
+      if (v < 0.0) {
+        v = 0.0;
+        clamped = true;
+      }
+    }
+    if (clamped || solver != solver_.get()) solver_->Restart();  // its state no longer matches
   }
   report_.sweeps += sweeps;
   report_.residual = Residual();
@@ -273,7 +281,9 @@ IterationReport PotentialField::Iterate(int sweeps) {
 IterationReport PotentialField::Solve(int max_sweeps) {
   if (report_.converged && report_.sweeps > 0) return report_;
   // The residual costs about one sweep: SOR and ADI check it every fourth sweep.
-  const int check = solver_->kind() == SolverKind::kMultigrid ? 1 : 4;
+  const int check =
+      solver_->kind() == SolverKind::kMultigrid || solver_->kind() == SolverKind::kMultigridCg ? 1
+                                                                                               : 4;
   for (int s = 0; s < max_sweeps && !report_.converged; s += check) {
     Iterate(std::min(check, max_sweeps - s));
   }
@@ -460,7 +470,7 @@ PotentialField::Path PotentialField::DescendPath(const Vec2& start, double step_
   return path;
 }
 
-void PotentialField::ComputeClearance() {
+void PotentialField::ComputeClearance() const {
   // Chamfer distance (1, sqrt 2) between cell centres to the nearest blocked cell.
   const float inf = std::numeric_limits<float>::infinity();
   clearance_cells_.assign(blocked_.size(), inf);
@@ -495,6 +505,10 @@ void PotentialField::ComputeClearance() {
 double PotentialField::Clearance(const Vec2& p) const {
   const auto c = CellOf(p);
   if (!c) return 0.0;
+  if (!clearance_ready_) {
+    ComputeClearance();
+    clearance_ready_ = true;
+  }
   // Centre-to-centre distance minus half a cell: the distance to the blocked cell's square.
   return std::max(0.0, (clearance_cells_[Index(c->first, c->second)] - 0.5) * resolution_);
 }

@@ -135,6 +135,7 @@ class PotentialField {
   /// diagonal step past an obstacle corner): one step of discrete steepest descent.
   std::optional<std::pair<int, int>> BestNeighbour(int ix, int iy) const;
 
+  /// Not thread-safe even though const: the distance transform is computed on first use.
   /// Distance (m) from `p` to the nearest obstacle cell's square (border ring included).
   double Clearance(const Vec2& p) const;
 
@@ -144,7 +145,7 @@ class PotentialField {
            static_cast<std::size_t>(ix);
   }
   void RebuildMask();
-  void ComputeClearance();
+  void ComputeClearance() const;
 
   FieldOptions options_;
   std::unique_ptr<IterativeSolver> solver_;
@@ -155,7 +156,8 @@ class PotentialField {
   std::vector<std::uint8_t> blocked_;  // raster obstacles + border ring
   std::vector<FieldCell> kind_;
   std::vector<double> p_;
-  std::vector<float> clearance_cells_;
+  mutable std::vector<float> clearance_cells_;
+  mutable bool clearance_ready_ = false;
   std::vector<std::uint32_t> wave_;  // ColdStart's wavefront distances (chamfer 5/7)
   std::vector<double> exp_table_;    // distance transform (cells) to the nearest blocked cell
   GridMask mask_;

@@ -10,14 +10,15 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   pnh.param("robot_radius", w.robot_radius_m, w.robot_radius_m);
   pnh.param("max_localization_error", w.max_localization_error_m, w.max_localization_error_m);
   pnh.param("recentre_margin", w.recentre_margin_m, w.recentre_margin_m);
-  std::string solver = "multigrid", stencil = "five_point", norm = "relative";
+  std::string solver = "multigrid_cg", stencil = "five_point", norm = "relative";
   pnh.param<std::string>("solver", solver, solver);
   pnh.param<std::string>("stencil", stencil, stencil);
   pnh.param<std::string>("residual_norm", norm, norm);
   if (const auto k = ParseSolverKind(solver)) {
     p.planner.field.solver.kind = *k;
   } else {
-    v.push_back("~solver must be sor_red_black, adi or multigrid (got '" + solver + "')");
+    v.push_back("~solver must be sor_red_black, adi, multigrid or multigrid_cg (got '" + solver +
+                "')");
   }
   if (const auto s = ParseStencil(stencil)) {
     p.planner.field.solver.stencil = *s;
