@@ -97,13 +97,47 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
   ASSERT_TRUE(client.waitForResult(ros::Duration(80.0)));
   const auto result = client.getResult();
   EXPECT_EQ(result->outcome, spott_msgs::NavigateResult::SUCCEEDED) << result->reason;
-  std::lock_guard<std::mutex> lock(robot.mutex);
+  robot.mutex.lock();
   EXPECT_LT(std::hypot(robot.x - 9.3, robot.y - 4.0), 0.35);
   EXPECT_TRUE(robot.crossed_door);
   // Robot radius 0.225 m: the padded field (0.325 m + half the wall's 0.15 m) keeps it clear.
   EXPECT_GT(robot.min_wall_distance, 0.225);
   EXPECT_TRUE(converged_seen);
   EXPECT_TRUE(potential_seen);
+  const double x_end = robot.x, y_end = robot.y;
+  robot.mutex.unlock();
+
+  // Bad requests are refused with a reason, and the node keeps serving.
+  spott_msgs::NavigateGoal bad = goal;
+  bad.target.pose.position.x = std::nan("");
+  client.sendGoal(bad);
+  ASSERT_TRUE(client.waitForResult(ros::Duration(10.0)));
+  EXPECT_EQ(client.getResult()->outcome, spott_msgs::NavigateResult::FAILED);
+  EXPECT_NE(client.getResult()->reason.find("finite"), std::string::npos);
+
+  // A goal inside the wall x = 8: UNREACHABLE, with the reason, and the robot stays put.
+  spott_msgs::NavigateGoal in_wall = goal;
+  in_wall.target.pose.position.x = 8.0;
+  client.sendGoal(in_wall);
+  ASSERT_TRUE(client.waitForResult(ros::Duration(20.0)));
+  EXPECT_EQ(client.getResult()->outcome, spott_msgs::NavigateResult::UNREACHABLE);
+  EXPECT_NE(client.getResult()->reason.find("obstacle"), std::string::npos)
+      << client.getResult()->reason;
+
+  // Preemption: a goal back in the room, cancelled after a second; the robot stops.
+  spott_msgs::NavigateGoal back = goal;
+  back.target.pose.position.x = 6.5;
+  back.target.pose.position.y = 3.0;
+  client.sendGoal(back);
+  ros::Duration(1.0).sleep();
+  client.cancelGoal();
+  ASSERT_TRUE(client.waitForResult(ros::Duration(10.0)));
+  EXPECT_EQ(client.getState(), actionlib::SimpleClientGoalState::PREEMPTED);
+  ros::Duration(0.3).sleep();
+  std::lock_guard<std::mutex> relock(robot.mutex);
+  EXPECT_EQ(robot.v, 0.0);
+  EXPECT_EQ(robot.w, 0.0);
+  EXPECT_LT(std::hypot(robot.x - x_end, robot.y - y_end), 1.0);
 }
 
 TEST(HarmonicPlannerNode, BadParametersAreRefusedByName) {
