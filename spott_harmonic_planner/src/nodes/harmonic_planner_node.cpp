@@ -115,6 +115,10 @@ class HarmonicPlannerNode {
     tolerance_ = goal->position_tolerance > 0.0 ? goal->position_tolerance
                                                 : params_.planner.goal_tolerance_m;
     target_ = Vec2(t.pose.position.x, t.pose.position.y);
+    target_yaw_.reset();
+    if (!goal->ignore_heading) target_yaw_ = tf2::getYaw(t.pose.orientation);
+    heading_tolerance_ =
+        goal->heading_tolerance > 0.0 ? goal->heading_tolerance : params_.heading_tolerance_rad;
     planner_.SetGoal(*target_);
     start_ = planner_.pose();
     solve_time_ = 0.0;
@@ -162,9 +166,21 @@ class HarmonicPlannerNode {
     result.final_pose.pose.orientation.z = std::sin(planner_.pose().yaw / 2);
     result.final_pose.pose.orientation.w = std::cos(planner_.pose().yaw / 2);
     if ((planner_.pose().Position() - *target_).norm() <= tolerance_) {
-      Stop();
-      result.outcome = spott_msgs::NavigateResult::SUCCEEDED;
-      server_.setSucceeded(result, "goal reached");
+      bool done = true;
+      SteeringCommand turn;
+      if (target_yaw_) {
+        turn = TurnInPlace(planner_.pose().yaw, *target_yaw_, heading_tolerance_,
+                           params_.planner.steering, &done);
+      }
+      if (done) {
+        Stop();
+        result.outcome = spott_msgs::NavigateResult::SUCCEEDED;
+        server_.setSucceeded(result, "goal reached");
+      } else {
+        geometry_msgs::Twist twist;
+        twist.angular.z = turn.angular;
+        cmd_pub_.publish(twist);
+      }
       return;
     }
     const SteeringCommand cmd = planner_.Steer(mode_, bias_);
@@ -201,6 +217,8 @@ class HarmonicPlannerNode {
   SpeedMode mode_ = SpeedMode::kNormal;
   std::optional<double> bias_;
   std::optional<Vec2> target_;
+  std::optional<double> target_yaw_;
+  double heading_tolerance_ = 0.1;
   spott_map::Pose2 start_;
   double tolerance_ = 0.2;
   double solve_time_ = 0.0;

@@ -1,5 +1,7 @@
 #include "spott_harmonic_planner/ros/parameters.h"
 
+#include <cmath>
+
 namespace spott_harmonic_planner {
 
 std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
@@ -51,6 +53,11 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   pnh.param("cycle_rate", p.cycle_rate_hz, p.cycle_rate_hz);
   pnh.param("visualization_every", p.visualization_every, p.visualization_every);
   pnh.param("unreachable_cycles", p.unreachable_cycles, p.unreachable_cycles);
+  pnh.param("heading_tolerance", p.heading_tolerance_rad, p.heading_tolerance_rad);
+  if (!(p.heading_tolerance_rad > 0.0 && p.heading_tolerance_rad <= M_PI)) {
+    v.push_back("~heading_tolerance must be in (0, pi] rad (got " +
+                std::to_string(p.heading_tolerance_rad) + ")");
+  }
   for (const auto& e : ValidateParameters(p.planner)) v.push_back("~" + e);
   if (!(p.cycle_rate_hz > 0.0 && p.cycle_rate_hz <= 1000.0)) {
     v.push_back("~cycle_rate must be in (0, 1000] Hz (got " + std::to_string(p.cycle_rate_hz) +

@@ -88,11 +88,13 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
   goal.target.header.frame_id = "map";
   goal.target.pose.position.x = 9.3;  // in the corridor, behind the wall x = 8
   goal.target.pose.position.y = 4.0;
-  goal.target.pose.orientation.w = 1.0;
+  goal.target.pose.orientation.z = std::sin(M_PI / 4);  // final heading: north (pi / 2)
+  goal.target.pose.orientation.w = std::cos(M_PI / 4);
   goal.speed_mode = spott_msgs::NavigateGoal::QUICKLY;
   goal.direction_bias = std::nan("");
   goal.position_tolerance = 0.25;
-  goal.ignore_heading = true;
+  goal.heading_tolerance = 0.1;
+  goal.ignore_heading = false;
   client.sendGoal(goal);
   ASSERT_TRUE(client.waitForResult(ros::Duration(80.0)));
   const auto result = client.getResult();
@@ -100,6 +102,7 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
   robot.mutex.lock();
   EXPECT_LT(std::hypot(robot.x - 9.3, robot.y - 4.0), 0.35);
   EXPECT_TRUE(robot.crossed_door);
+  EXPECT_LT(std::abs(std::remainder(robot.yaw - M_PI / 2, 2 * M_PI)), 0.15);
   // Robot radius 0.225 m: the padded field (0.325 m + half the wall's 0.15 m) keeps it clear.
   EXPECT_GT(robot.min_wall_distance, 0.225);
   EXPECT_TRUE(converged_seen);
@@ -108,6 +111,7 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
   robot.mutex.unlock();
 
   // Bad requests are refused with a reason, and the node keeps serving.
+  goal.ignore_heading = true;
   spott_msgs::NavigateGoal bad = goal;
   bad.target.pose.position.x = std::nan("");
   client.sendGoal(bad);
