@@ -54,8 +54,10 @@ void ColourPass(Stencil s, int nx, int ny, double* u, const double* f, const dou
   }
 }
 
-double Residual(Stencil s, int nx, int ny, const double* u, const double* f,
-                const std::uint8_t* free, double* r) {
+namespace {
+template <bool kNine>
+double ResidualT(int nx, int ny, const double* u, const double* f, const std::uint8_t* free,
+                 double* r) {
   double worst = 0.0;
   for (int y = 1; y < ny - 1; ++y) {
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(y) * nx;
@@ -63,22 +65,30 @@ double Residual(Stencil s, int nx, int ny, const double* u, const double* f,
     const double* __restrict up = row + nx;
     const double* __restrict down = row - nx;
     const std::uint8_t* __restrict fr = free + base;
+    const double* __restrict rhs = f ? f + base : nullptr;
     double* __restrict rr = r ? r + base : nullptr;
     for (int x = 1; x < nx - 1; ++x) {
       double m;
-      if (s == Stencil::kFivePoint) {
-        m = 0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x]));
-      } else {
+      if constexpr (kNine) {
         m = 0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
             0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1]));
+      } else {
+        m = 0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x]));
       }
-      if (f) m += f[base + x];
+      if (rhs) m += rhs[x];
       const double v = fr[x] ? m - row[x] : 0.0;
       if (rr) rr[x] = v;
       worst = std::max(worst, std::abs(v));
     }
   }
   return worst;
+}
+}  // namespace
+
+double Residual(Stencil s, int nx, int ny, const double* u, const double* f,
+                const std::uint8_t* free, double* r) {
+  return s == Stencil::kFivePoint ? ResidualT<false>(nx, ny, u, f, free, r)
+                                  : ResidualT<true>(nx, ny, u, f, free, r);
 }
 
 }  // namespace spott_harmonic_planner::kernels

@@ -13,8 +13,8 @@ namespace spott_harmonic_planner {
 
 namespace {
 constexpr double kSqrt2 = 1.4142135623730951;
-// Multigrid hands over to line relaxation (relative norm) once its absolute residual is at
-// round-off of the O(1) values near the goal.
+// In the relative norm the solver hands over to line relaxation once its absolute residual is
+// at round-off of the O(1) values near the goal.
 constexpr double kPolishBelowAbsoluteResidual = 1e-13;
 constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
 constexpr int kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
@@ -77,7 +77,7 @@ void PotentialField::SetOccupancy(const spott_map::OccupancyRaster& raster) {
   }
   goal_cells_ = kept;
   RebuildMask();
-  ComputeClearance();
+  clearance_ready_ = false;  // computed when first asked for (steering), not on every map update
 }
 
 void PotentialField::RebuildMask() {
@@ -153,43 +153,60 @@ bool PotentialField::SetGoalSegment(const spott_map::Segment& s, double half_wid
 }
 
 void PotentialField::ColdStart() {
-  // 8-connected wavefront (Dijkstra, no corner cutting) from the goal through free cells.
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> d(kind_.size(), inf);
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  // 8-connected wavefront from the goal through free cells (no corner cutting), with the
+  // integer chamfer weights 5 (straight) and 7 (diagonal) so that a bucket queue (Dial's
+  // algorithm) runs it in O(cells): d / 5 approximates the octile distance in cells.
+  constexpr int kStraight = 5, kDiagonal = 7;
+  constexpr std::uint32_t kUnseen = std::numeric_limits<std::uint32_t>::max();
+  wave_.assign(kind_.size(), kUnseen);
+  std::vector<std::vector<std::uint32_t>> buckets(kDiagonal + 1);
   for (std::size_t i : goal_cells_) {
-    d[i] = 0.0;
-    open.push({0.0, i});
+    wave_[i] = 0;
+    buckets[0].push_back(static_cast<std::uint32_t>(i));
   }
-  while (!open.empty()) {
-    const auto [di, i] = open.top();
-    open.pop();
-    if (di > d[i]) continue;
-    const int x = static_cast<int>(i % width_);
-    const int y = static_cast<int>(i / width_);
-    for (int k = 0; k < 8; ++k) {
-      const int nx = x + kDx[k];
-      const int ny = y + kDy[k];
-      if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
-      const std::size_t j = Index(nx, ny);
-      if (kind_[j] != FieldCell::kFree) continue;
-      if (k >= 4 && (kind_[Index(nx, y)] == FieldCell::kObstacle ||
-                     kind_[Index(x, ny)] == FieldCell::kObstacle)) {
-        continue;
-      }
-      const double nd = di + (k < 4 ? 1.0 : kSqrt2);
-      if (nd < d[j]) {
-        d[j] = nd;
-        open.push({nd, j});
+  std::size_t pending = goal_cells_.size();
+  for (std::uint32_t dist = 0; pending > 0; ++dist) {
+    auto& bucket = buckets[dist % buckets.size()];
+    for (std::size_t q = 0; q < bucket.size(); ++q) {
+      const std::uint32_t i = bucket[q];
+      --pending;
+      if (wave_[i] != dist) continue;  // a stale entry: reached sooner since
+      const int x = static_cast<int>(i % width_);
+      const int y = static_cast<int>(i / width_);
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k];
+        const int ny = y + kDy[k];
+        if (nx < 0 || ny < 0 || nx >= width_ || ny >= height_) continue;
+        const std::size_t j = Index(nx, ny);
+        if (kind_[j] != FieldCell::kFree) continue;
+        if (k >= 4 && (kind_[Index(nx, y)] == FieldCell::kObstacle ||
+                       kind_[Index(x, ny)] == FieldCell::kObstacle)) {
+          continue;
+        }
+        const std::uint32_t nd = dist + (k < 4 ? kStraight : kDiagonal);
+        if (nd < wave_[j]) {
+          wave_[j] = nd;
+          buckets[nd % buckets.size()].push_back(static_cast<std::uint32_t>(j));
+          ++pending;
+        }
       }
     }
+    bucket.clear();
   }
+  // p = exp(-k d): one exp per distinct distance step, multiplied up.
+  const double step = std::exp(-options_.heuristic_decay_per_cell / kStraight);
+  std::vector<double>& table = exp_table_;
   for (std::size_t i = 0; i < kind_.size(); ++i) {
-    if (kind_[i] == FieldCell::kFree) {
-      p_[i] = std::isfinite(d[i]) ? std::exp(-options_.heuristic_decay_per_cell * d[i]) : 0.0;
+    if (kind_[i] != FieldCell::kFree) continue;
+    if (wave_[i] == kUnseen) {
+      p_[i] = 0.0;
+      continue;
     }
+    while (table.size() <= wave_[i]) table.push_back(table.empty() ? 1.0 : table.back() * step);
+    p_[i] = table[wave_[i]];
   }
+  table.clear();
+  solver_->Restart();
   report_ = IterationReport{};
   report_.residual = Residual();
   report_.converged = report_.residual < options_.tolerance;
@@ -226,17 +243,17 @@ IterationReport PotentialField::Iterate(int sweeps) {
       solver_->Iterate(p_.data());
       continue;
     }
-    // Relative accuracy needs p >= 0 everywhere (the exact p is). A multigrid coarse correction
-    // is accurate in absolute terms only: it brings the field to round-off of its largest
-    // values, after which line relaxation (local, positive weights) resolves the small tails.
+    // Relative accuracy needs p >= 0 everywhere (the exact p is). The configured solver is
+    // accurate in absolute terms: it brings the field to round-off of its largest values; then
+    // line Gauss-Seidel without over-relaxation (all weights positive, Thomas algorithm on an
+    // M-matrix: no cancellation) resolves the small tails, each to its own magnitude.
     IterativeSolver* solver = solver_.get();
-    if (solver_->kind() == SolverKind::kMultigrid &&
-        kernels::Residual(options_.solver.stencil, width_, height_, p_.data(), nullptr,
+    if (kernels::Residual(options_.solver.stencil, width_, height_, p_.data(), nullptr,
                           mask_.free.data(), nullptr) < kPolishBelowAbsoluteResidual) {
       if (!polish_) {
         SolverOptions o = options_.solver;
         o.kind = SolverKind::kAdi;
-        o.omega = 0.0;
+        o.omega = 1.0;  // over-relaxation would overshoot tiny values below zero
         polish_ = MakeSolver(o);
       }
       if (!polish_ready_) {
@@ -246,7 +263,14 @@ IterationReport PotentialField::Iterate(int sweeps) {
       solver = polish_.get();
     }
     solver->Iterate(p_.data());
-    for (std::size_t i = 0; i < p_.size(); ++i) p_[i] = std::max(p_[i], 0.0);
+    bool clamped = false;
+    for (double& v : p_) {
+      if (v < 0.0) {
+        v = 0.0;
+        clamped = true;
+      }
+    }
+    if (clamped || solver != solver_.get()) solver_->Restart();  // its state no longer matches
   }
   report_.sweeps += sweeps;
   report_.residual = Residual();
@@ -256,9 +280,12 @@ IterationReport PotentialField::Iterate(int sweeps) {
 
 IterationReport PotentialField::Solve(int max_sweeps) {
   if (report_.converged && report_.sweeps > 0) return report_;
-  for (int s = 0; s < max_sweeps; ++s) {
-    Iterate(1);
-    if (report_.converged) break;
+  // The residual costs about one sweep: SOR and ADI check it every fourth sweep.
+  const int check =
+      solver_->kind() == SolverKind::kMultigrid || solver_->kind() == SolverKind::kMultigridCg ? 1
+                                                                                               : 4;
+  for (int s = 0; s < max_sweeps && !report_.converged; s += check) {
+    Iterate(std::min(check, max_sweeps - s));
   }
   return report_;
 }
@@ -320,6 +347,41 @@ std::optional<Vec2> PotentialField::DescentDirection(const Vec2& p) const {
   const double n = std::hypot(dx, dy);  // hypot: no underflow for p ~ 1e-300 in corridors
   if (!(n > 0.0)) return std::nullopt;
   return Vec2(dx / n, dy / n);
+}
+
+std::optional<Vec2> PotentialField::HeuristicDirection(const Vec2& p, int influence) const {
+  const auto c = CellOf(p);
+  if (!c || goal_cells_.empty()) return std::nullopt;
+  // Attraction: unit vector to the nearest goal cell (a point goal has one).
+  Vec2 goal = CellCentre(static_cast<int>(goal_cells_[0] % width_),
+                         static_cast<int>(goal_cells_[0] / width_));
+  double best = (goal - p).squaredNorm();
+  for (std::size_t k = 1; k < goal_cells_.size(); ++k) {
+    const Vec2 g = CellCentre(static_cast<int>(goal_cells_[k] % width_),
+                              static_cast<int>(goal_cells_[k] / width_));
+    if ((g - p).squaredNorm() < best) {
+      best = (g - p).squaredNorm();
+      goal = g;
+    }
+  }
+  Vec2 force = goal - p;
+  const double dist = force.norm();
+  if (dist > 0.0) force /= dist;
+  // Repulsion from nearby blocked cells (the window border included), in cells.
+  Vec2 push(0.0, 0.0);
+  for (int dy = -influence; dy <= influence; ++dy) {
+    for (int dx = -influence; dx <= influence; ++dx) {
+      const int x = c->first + dx, y = c->second + dy;
+      if (x < 0 || y < 0 || x >= width_ || y >= height_ || !blocked_[Index(x, y)]) continue;
+      const Vec2 away = (p - CellCentre(x, y)) / resolution_;
+      const double d2 = std::max(away.squaredNorm(), 0.25);
+      push += away / (d2 * std::sqrt(d2));
+    }
+  }
+  force += push / static_cast<double>(influence * influence);
+  const double n = force.norm();
+  if (!(n > 0.0)) return std::nullopt;
+  return Vec2(force / n);
 }
 
 std::optional<std::pair<int, int>> PotentialField::BestNeighbour(int x, int y) const {
@@ -408,7 +470,7 @@ PotentialField::Path PotentialField::DescendPath(const Vec2& start, double step_
   return path;
 }
 
-void PotentialField::ComputeClearance() {
+void PotentialField::ComputeClearance() const {
   // Chamfer distance (1, sqrt 2) between cell centres to the nearest blocked cell.
   const float inf = std::numeric_limits<float>::infinity();
   clearance_cells_.assign(blocked_.size(), inf);
@@ -443,6 +505,10 @@ void PotentialField::ComputeClearance() {
 double PotentialField::Clearance(const Vec2& p) const {
   const auto c = CellOf(p);
   if (!c) return 0.0;
+  if (!clearance_ready_) {
+    ComputeClearance();
+    clearance_ready_ = true;
+  }
   // Centre-to-centre distance minus half a cell: the distance to the blocked cell's square.
   return std::max(0.0, (clearance_cells_[Index(c->first, c->second)] - 0.5) * resolution_);
 }

@@ -21,6 +21,8 @@ const char* ToString(SolverKind kind) {
       return "adi";
     case SolverKind::kMultigrid:
       return "multigrid";
+    case SolverKind::kMultigridCg:
+      return "multigrid_cg";
   }
   return "?";
 }
@@ -35,6 +37,7 @@ std::optional<SolverKind> ParseSolverKind(const std::string& text) {
   if (text == "sor_red_black") return SolverKind::kSorRedBlack;
   if (text == "adi") return SolverKind::kAdi;
   if (text == "multigrid") return SolverKind::kMultigrid;
+  if (text == "multigrid_cg") return SolverKind::kMultigridCg;
   return std::nullopt;
 }
 
@@ -147,6 +150,7 @@ std::unique_ptr<IterativeSolver> MakeSolver(const SolverOptions& options) {
     case SolverKind::kAdi:
       return internal::MakeAdiSolver(options);
     case SolverKind::kMultigrid:
+    case SolverKind::kMultigridCg:
       return internal::MakeMultigridSolver(options);
   }
   throw std::invalid_argument("unknown solver kind");

@@ -81,4 +81,18 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
   return cmd;
 }
 
+SteeringCommand TurnInPlace(double yaw, double target_yaw, double tolerance_rad,
+                            const SteeringParameters& params, bool* done) {
+  SteeringCommand cmd;
+  cmd.valid = true;
+  cmd.heading = target_yaw;
+  const double error = WrapAngle(target_yaw - yaw);
+  *done = std::abs(error) <= tolerance_rad;
+  if (!*done) {
+    cmd.angular =
+        std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);
+  }
+  return cmd;
+}
+
 }  // namespace spott_harmonic_planner

@@ -54,7 +54,8 @@ TEST(Corridor, PlainDoubleGoesFlatBetweenSevenAndTwentyToOne) {
 }
 
 TEST(Corridor, HundredToOneCorridorHasNoFlatCellAndAUsablePath) {
-  for (SolverKind kind : {SolverKind::kAdi, SolverKind::kSorRedBlack, SolverKind::kMultigrid}) {
+  for (SolverKind kind : {SolverKind::kAdi, SolverKind::kSorRedBlack, SolverKind::kMultigrid,
+                          SolverKind::kMultigridCg}) {
     SCOPED_TRACE(ToString(kind));
     const int w = 5;
     const PotentialField f = SolveCorridor(100 * w, w, kind);

@@ -40,6 +40,21 @@ TEST(Steering, DirectionBiasIsFollowedWithinDescentAndClampedBeyond) {
   EXPECT_NEAR(BiasedHeading(descent, std::nan(""), 1.2), 0.0, 1e-12);
 }
 
+TEST(Steering, TurnInPlaceTurnsTheShortWayWithinLimitsAndStopsAtTolerance) {
+  SteeringParameters p;  // gain 2 /s, max 1 rad/s
+  bool done = true;
+  SteeringCommand c = TurnInPlace(0.0, 3.0, 0.1, p, &done);
+  EXPECT_FALSE(done);
+  EXPECT_DOUBLE_EQ(c.angular, 1.0);  // clamped
+  EXPECT_DOUBLE_EQ(c.linear, 0.0);
+  c = TurnInPlace(3.0, -3.0, 0.1, p, &done);  // across +-pi: 0.28 rad counter-clockwise
+  EXPECT_FALSE(done);
+  EXPECT_NEAR(c.angular, 2.0 * (2 * M_PI - 6.0), 1e-9);
+  c = TurnInPlace(1.0, 1.05, 0.1, p, &done);
+  EXPECT_TRUE(done);
+  EXPECT_DOUBLE_EQ(c.angular, 0.0);
+}
+
 TEST(LocalPlanner, SteersStraightAtGoalInOpenSpaceWithSpeedByMode) {
   LocalPlanner planner(SmallWindow());
   planner.CorrectPose({0.0, 0.0, 0.0});

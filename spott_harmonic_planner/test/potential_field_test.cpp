@@ -25,7 +25,7 @@ FieldOptions Options(SolverKind kind, Stencil stencil = Stencil::kFivePoint) {
 }
 
 const SolverKind kAllSolvers[] = {SolverKind::kSorRedBlack, SolverKind::kAdi,
-                                  SolverKind::kMultigrid};
+                                  SolverKind::kMultigrid, SolverKind::kMultigridCg};
 
 // 5 x 3 window: one free row of three cells between border cells; goal in the first. With the
 // 5-point stencil p2 = (1 + p3) / 4 and p3 = p2 / 4, so p2 = 4/15 and p3 = 1/15; with the

@@ -49,7 +49,7 @@ TEST_P(EverySolver, ReproducesLinearProfileBetweenFixedValues) {
 INSTANTIATE_TEST_SUITE_P(
     AllKernels, EverySolver,
     ::testing::Combine(::testing::Values(SolverKind::kSorRedBlack, SolverKind::kAdi,
-                                         SolverKind::kMultigrid),
+                                         SolverKind::kMultigrid, SolverKind::kMultigridCg),
                        ::testing::Values(Stencil::kFivePoint, Stencil::kNinePoint)));
 
 }  // namespace

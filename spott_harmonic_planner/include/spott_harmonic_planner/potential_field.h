@@ -81,7 +81,8 @@ class PotentialField {
   bool goal_on_border() const { return goal_on_border_; }
 
   /// Anytime initial guess (III.D.1): p = exp(-k d) with d the 8-connected wavefront distance
-  /// from the goal through free cells; 0 where the goal cannot be reached (which is exact).
+  /// (chamfer 5/7, in cells) from the goal through free cells; 0 where the goal cannot be
+  /// reached (which is exact).
   /// Resets the sweep count.
   void ColdStart();
   /// `sweeps` more iterations (warm). Returns the state after them.
@@ -111,6 +112,12 @@ class PotentialField {
   /// nullopt outside the window, in a blocked cell, or where the field is flat (p = 0: the goal
   /// is unreachable from there, or the field is not yet initialized).
   std::optional<Vec2> DescentDirection(const Vec2& p) const;
+  /// The cheap heuristic potential of the paper's anytime scheme ([46], Khatib): attraction to
+  /// the nearest goal cell plus repulsion 1/d^2 from the blocked cells within `influence_cells`
+  /// of `p`. Answers at once, before any sweep, from the loaded window and goal; it can have local
+  /// minima (which is why the harmonic field replaces it). nullopt outside the window or with no
+  /// goal.
+  std::optional<Vec2> HeuristicDirection(const Vec2& p, int influence_cells = 3) const;
   /// Bilinear interpolation of p at a continuous position (0 outside).
   double InterpolatedGoalProbability(const Vec2& p) const;
 
@@ -128,6 +135,7 @@ class PotentialField {
   /// diagonal step past an obstacle corner): one step of discrete steepest descent.
   std::optional<std::pair<int, int>> BestNeighbour(int ix, int iy) const;
 
+  /// Not thread-safe even though const: the distance transform is computed on first use.
   /// Distance (m) from `p` to the nearest obstacle cell's square (border ring included).
   double Clearance(const Vec2& p) const;
 
@@ -137,7 +145,7 @@ class PotentialField {
            static_cast<std::size_t>(ix);
   }
   void RebuildMask();
-  void ComputeClearance();
+  void ComputeClearance() const;
 
   FieldOptions options_;
   std::unique_ptr<IterativeSolver> solver_;
@@ -148,10 +156,13 @@ class PotentialField {
   std::vector<std::uint8_t> blocked_;  // raster obstacles + border ring
   std::vector<FieldCell> kind_;
   std::vector<double> p_;
-  std::vector<float> clearance_cells_;  // distance transform (cells) to the nearest blocked cell
+  mutable std::vector<float> clearance_cells_;
+  mutable bool clearance_ready_ = false;
+  std::vector<std::uint32_t> wave_;  // ColdStart's wavefront distances (chamfer 5/7)
+  std::vector<double> exp_table_;    // distance transform (cells) to the nearest blocked cell
   GridMask mask_;
   bool solver_ready_ = false;
-  std::unique_ptr<IterativeSolver> polish_;  // relative norm with multigrid: ADI after V-cycles
+  std::unique_ptr<IterativeSolver> polish_;  // relative norm: line Gauss-Seidel at the end
   bool polish_ready_ = false;
   int goal_count_ = 0;
   bool goal_on_border_ = false;

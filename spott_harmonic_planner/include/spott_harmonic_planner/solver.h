@@ -9,8 +9,10 @@
 // Solvers: Gauss-Seidel with successive over-relaxation in red-black order (four colours for the
 // 9-point stencil, whose diagonal neighbours would share a colour otherwise); alternating-
 // direction line relaxation (x lines then y lines, each line solved exactly); and geometric
-// multigrid (V-cycles with the same colour Gauss-Seidel as smoother). All three are iterations
-// on the same equations and converge to the same discrete solution.
+// multigrid (V-cycles with the same colour Gauss-Seidel as smoother); and conjugate gradients
+// preconditioned by one such V-cycle (symmetric: the post-smoother runs the colours backwards),
+// which stays fast where obstacles leave the coarse grids poor. All are iterations on the same
+// equations and converge to the same discrete solution.
 //
 // Not thread-safe: one solver per thread. Grids are row-major, index = y * width + x.
 #pragma once
@@ -24,12 +26,12 @@
 namespace spott_harmonic_planner {
 
 enum class Stencil { kFivePoint, kNinePoint };
-enum class SolverKind { kSorRedBlack, kAdi, kMultigrid };
+enum class SolverKind { kSorRedBlack, kAdi, kMultigrid, kMultigridCg };
 
 const char* ToString(Stencil stencil);
 const char* ToString(SolverKind kind);
 std::optional<Stencil> ParseStencil(const std::string& text);  ///< five_point | nine_point
-/// sor_red_black | adi | multigrid
+/// sor_red_black | adi | multigrid | multigrid_cg
 std::optional<SolverKind> ParseSolverKind(const std::string& text);
 
 struct SolverOptions {
@@ -72,6 +74,9 @@ class IterativeSolver {
   virtual Stencil stencil() const = 0;
   /// Relaxation factor in use (1 for multigrid, whose smoother is plain Gauss-Seidel).
   virtual double omega() const = 0;
+  /// `u` was changed from outside (a cold start, values clamped): solvers that keep state
+  /// between iterations (conjugate gradients) start over from it.
+  virtual void Restart() {}
 };
 
 /// Throws std::invalid_argument when `options` are invalid.

@@ -53,4 +53,9 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
                                 SpeedMode mode, std::optional<double> direction_bias,
                                 double distance_to_goal_m, const SteeringParameters& params);
 
+/// At the goal position: turn in place toward `target_yaw` (rad, map) within the turn-rate
+/// limit; `valid` and zero speeds once within `tolerance_rad`.
+SteeringCommand TurnInPlace(double yaw, double target_yaw, double tolerance_rad,
+                            const SteeringParameters& params, bool* done);
+
 }  // namespace spott_harmonic_planner

@@ -1,0 +1,42 @@
+// Conversions between the planner's core types and ROS messages (the only ROS-facing code
+// besides the node).
+#pragma once
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
+#include <ros/time.h>
+#include <spott_msgs/PotentialFieldStatus.h>
+#include <spott_msgs/SteeringStatus.h>
+#include <visualization_msgs/Marker.h>
+
+#include <string>
+
+#include "spott_harmonic_planner/local_planner.h"
+
+namespace spott_harmonic_planner::ros_conversions {
+
+/// Decades of p shown by the potential image and the contours: u = 1 - 10^-k, k = 1..12.
+constexpr int kDecades = 12;
+
+/// The potential as an image for rviz: obstacles (and cells cut off from the goal) 100, the goal
+/// 0, free cells 1..99 growing with -log10(p) (p = 1 - u) over kDecades decades, so long
+/// corridors stay visible where u itself is 1 to double precision.
+nav_msgs::OccupancyGrid ToPotentialImage(const PotentialField& field, const std::string& frame_id,
+                                         const ros::Time& stamp);
+
+/// Equipotential contours u = 1 - 10^-k (k = 1..kDecades) by marching squares over the cell
+/// centres, as one LINE_LIST (like the paper's figures).
+visualization_msgs::Marker ToContours(const PotentialField& field, const std::string& frame_id,
+                                      const ros::Time& stamp);
+
+nav_msgs::Path ToPath(const PotentialField::Path& path, const std::string& frame_id,
+                      const ros::Time& stamp);
+
+spott_msgs::PotentialFieldStatus ToStatus(const LocalPlanner& planner, double solve_time_s,
+                                          const std::string& frame_id, const ros::Time& stamp);
+
+spott_msgs::SteeringStatus ToSteering(const SteeringCommand& cmd, SpeedMode mode,
+                                      double distance_to_goal_m, const std::string& frame_id,
+                                      const ros::Time& stamp);
+
+}  // namespace spott_harmonic_planner::ros_conversions

@@ -1,0 +1,143 @@
+#include "spott_harmonic_planner/ros/conversions.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace spott_harmonic_planner::ros_conversions {
+
+nav_msgs::OccupancyGrid ToPotentialImage(const PotentialField& field, const std::string& frame_id,
+                                         const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid g;
+  g.header.frame_id = frame_id;
+  g.header.stamp = stamp;
+  g.info.map_load_time = stamp;
+  g.info.resolution = static_cast<float>(field.resolution());
+  g.info.width = static_cast<std::uint32_t>(field.width());
+  g.info.height = static_cast<std::uint32_t>(field.height());
+  g.info.origin.position.x = field.origin().x();
+  g.info.origin.position.y = field.origin().y();
+  g.info.origin.orientation.w = 1.0;
+  g.data.resize(static_cast<std::size_t>(field.width()) * field.height());
+  for (int y = 0; y < field.height(); ++y) {
+    for (int x = 0; x < field.width(); ++x) {
+      std::int8_t v;
+      const FieldCell c = field.cell(x, y);
+      const double p = field.GoalProbability(x, y);
+      if (c == FieldCell::kGoal) {
+        v = 0;
+      } else if (c != FieldCell::kFree || p <= 0.0) {
+        v = 100;
+      } else {
+        const double decades = std::clamp(-std::log10(p) / kDecades, 0.0, 1.0);
+        v = static_cast<std::int8_t>(1 + std::lround(98.0 * decades));
+      }
+      g.data[static_cast<std::size_t>(y) * field.width() + x] = v;
+    }
+  }
+  return g;
+}
+
+visualization_msgs::Marker ToContours(const PotentialField& field, const std::string& frame_id,
+                                      const ros::Time& stamp) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame_id;
+  m.header.stamp = stamp;
+  m.ns = "equipotentials";
+  m.id = 0;
+  m.type = visualization_msgs::Marker::LINE_LIST;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = 0.02;
+  m.color.r = 0.9f;
+  m.color.g = 0.6f;
+  m.color.b = 0.1f;
+  m.color.a = 1.0f;
+  // Contours of log10(p) (the same curves as u = 1 - 10^-k), at the cell centres.
+  const auto level_value = [&](int x, int y) {
+    const double p = field.GoalProbability(x, y);
+    return p > 0.0 ? std::log10(p) : -1e9;
+  };
+  const auto point = [&](double gx, double gy) {
+    geometry_msgs::Point q;
+    q.x = field.origin().x() + (gx + 0.5) * field.resolution();
+    q.y = field.origin().y() + (gy + 0.5) * field.resolution();
+    return q;
+  };
+  for (int k = 1; k <= kDecades; ++k) {
+    const double level = -k;
+    for (int y = 0; y + 1 < field.height(); ++y) {
+      for (int x = 0; x + 1 < field.width(); ++x) {
+        const double v[4] = {level_value(x, y), level_value(x + 1, y), level_value(x + 1, y + 1),
+                             level_value(x, y + 1)};
+        const double cx[4] = {0, 1, 1, 0}, cy[4] = {0, 0, 1, 1};
+        std::vector<geometry_msgs::Point> crossings;
+        for (int e = 0; e < 4; ++e) {
+          const int a = e, b = (e + 1) % 4;
+          if ((v[a] < level) == (v[b] < level)) continue;
+          const double t = (level - v[a]) / (v[b] - v[a]);
+          crossings.push_back(
+              point(x + cx[a] + t * (cx[b] - cx[a]), y + cy[a] + t * (cy[b] - cy[a])));
+        }
+        for (std::size_t i = 0; i + 1 < crossings.size(); i += 2) {
+          m.points.push_back(crossings[i]);
+          m.points.push_back(crossings[i + 1]);
+        }
+      }
+    }
+  }
+  return m;
+}
+
+nav_msgs::Path ToPath(const PotentialField::Path& path, const std::string& frame_id,
+                      const ros::Time& stamp) {
+  nav_msgs::Path msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  for (const Vec2& p : path.points) {
+    geometry_msgs::PoseStamped ps;
+    ps.header = msg.header;
+    ps.pose.position.x = p.x();
+    ps.pose.position.y = p.y();
+    ps.pose.orientation.w = 1.0;
+    msg.poses.push_back(ps);
+  }
+  return msg;
+}
+
+spott_msgs::PotentialFieldStatus ToStatus(const LocalPlanner& planner, double solve_time_s,
+                                          const std::string& frame_id, const ros::Time& stamp) {
+  spott_msgs::PotentialFieldStatus s;
+  s.header.frame_id = frame_id;
+  s.header.stamp = stamp;
+  const auto& o = planner.parameters().field;
+  s.solver = std::string(ToString(o.solver.kind)) + "/" + ToString(o.solver.stencil);
+  s.sweeps = static_cast<std::uint32_t>(std::max(0, planner.status().iteration.sweeps));
+  s.residual = planner.status().iteration.residual;
+  s.converged = planner.status().iteration.converged;
+  s.solve_time = solve_time_s;
+  s.window_origin.x = planner.field().origin().x();
+  s.window_origin.y = planner.field().origin().y();
+  s.window_size = planner.field().width() * planner.field().resolution();
+  s.resolution = planner.field().resolution();
+  s.goal_on_border = planner.status().goal_on_border;
+  return s;
+}
+
+spott_msgs::SteeringStatus ToSteering(const SteeringCommand& cmd, SpeedMode mode,
+                                      double distance_to_goal_m, const std::string& frame_id,
+                                      const ros::Time& stamp) {
+  spott_msgs::SteeringStatus s;
+  s.header.frame_id = frame_id;
+  s.header.stamp = stamp;
+  s.gradient.x = cmd.descent.x();
+  s.gradient.y = cmd.descent.y();
+  s.heading = cmd.heading;
+  s.linear = cmd.linear;
+  s.angular = cmd.angular;
+  s.speed_mode = static_cast<std::uint8_t>(mode);
+  s.clearance = cmd.clearance;
+  s.distance_to_goal = distance_to_goal_m;
+  return s;
+}
+
+}  // namespace spott_harmonic_planner::ros_conversions

@@ -1,0 +1,63 @@
+#include "spott_harmonic_planner/ros/conversions.h"
+
+#include <gtest/gtest.h>
+
+#include "../test_maps.h"
+
+namespace spott_harmonic_planner {
+namespace {
+
+PotentialField SolvedRow() {
+  // 5 x 3 window, goal at (1, 1): p = 1, 4/15, 1/15 along the row (see potential_field_test).
+  FieldOptions o;
+  o.tolerance = 1e-12;
+  PotentialField f(o);
+  f.SetOccupancy(testing_maps::EmptyRaster(5, 3, 0.5));
+  EXPECT_TRUE(f.SetGoalPoint(Vec2(0.75, 0.75)));
+  f.ColdStart();
+  f.Solve(1000);
+  return f;
+}
+
+TEST(Conversions, PotentialImageScalesDecadesOfGoalProbability) {
+  const PotentialField f = SolvedRow();
+  const auto g = ros_conversions::ToPotentialImage(f, "map", ros::Time(3.0));
+  EXPECT_EQ(g.header.frame_id, "map");
+  EXPECT_EQ(g.info.width, 5u);
+  EXPECT_EQ(g.info.height, 3u);
+  EXPECT_FLOAT_EQ(g.info.resolution, 0.5f);
+  EXPECT_EQ(g.data[5 + 1], 0);  // goal
+  EXPECT_EQ(g.data[0], 100);    // border ring
+  // -log10(4/15) = 0.574 decades of 12: 1 + round(98 * 0.0478) = 6; -log10(1/15) = 1.176: 11.
+  EXPECT_EQ(g.data[5 + 2], 6);
+  EXPECT_EQ(g.data[5 + 3], 11);
+}
+
+TEST(Conversions, ContoursCrossBetweenCellsAtTheRightLevel) {
+  const PotentialField f = SolvedRow();
+  const auto m = ros_conversions::ToContours(f, "map", ros::Time(0));
+  ASSERT_FALSE(m.points.empty());
+  EXPECT_EQ(m.points.size() % 2, 0u);
+  // The level log10 p = -1 lies between cells 2 (p = 4/15) and 3 (p = 1/15) of the row, i.e.
+  // between x = 1.25 and 1.75 m; every crossing is somewhere in the window.
+  bool found = false;
+  for (const auto& p : m.points) {
+    EXPECT_GE(p.x, 0.0);
+    EXPECT_LE(p.x, 2.5);
+    if (std::abs(p.y - 0.75) < 1e-9 && p.x > 1.25 && p.x < 1.75) found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(Conversions, PathKeepsPointsInOrder) {
+  PotentialField::Path path;
+  path.points = {Vec2(0, 0), Vec2(1, 0.5), Vec2(2, 1)};
+  const auto msg = ros_conversions::ToPath(path, "map", ros::Time(1.0));
+  ASSERT_EQ(msg.poses.size(), 3u);
+  EXPECT_DOUBLE_EQ(msg.poses[1].pose.position.x, 1.0);
+  EXPECT_DOUBLE_EQ(msg.poses[2].pose.position.y, 1.0);
+  EXPECT_EQ(msg.poses[0].header.frame_id, "map");
+}
+
+}  // namespace
+}  // namespace spott_harmonic_planner
