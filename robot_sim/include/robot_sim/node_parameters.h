@@ -28,6 +28,9 @@ struct SimNodeParameters {
   SimWorldParameters world;
   OdometryErrorModel odometry;
   bool publish_octomap_markers = true;
+  /// Publish map->odom from the ground truth (demos and screenshots without localization only:
+  /// off whenever a localization node publishes map->odom).
+  bool publish_truth_map_to_odom = false;
   std::string octomap_file = "/tmp/robot_sim.bt";  ///< Where ~save_octomap writes.
 };
 

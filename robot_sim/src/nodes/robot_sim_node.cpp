@@ -141,6 +141,14 @@ class SimNode {
     odom_pub_.publish(
         conv::ToOdometry(odo.pose(), odo.twist(), params_.odom_frame, params_.base_frame, stamp));
     tf_.sendTransform(ToTransform(odo.pose(), params_.odom_frame, params_.base_frame, stamp));
+    if (params_.publish_truth_map_to_odom) {
+      // map->odom = truth * odom^-1.
+      const spott_map::Pose2& t = sim_->GroundTruth(robot_);
+      const spott_map::Pose2& o = odo.pose();
+      const double yaw = t.yaw - o.yaw, c = std::cos(yaw), s = std::sin(yaw);
+      const spott_map::Pose2 map_odom{t.x - (c * o.x - s * o.y), t.y - (s * o.x + c * o.y), yaw};
+      tf_.sendTransform(ToTransform(map_odom, params_.map_frame, params_.odom_frame, stamp));
+    }
     truth_pub_.publish(conv::ToOdometry(sim_->GroundTruth(robot_), sim_->Velocity(robot_),
                                         params_.map_frame, params_.base_frame, stamp));
     sensor_msgs::JointState js;

@@ -115,6 +115,7 @@ std::vector<std::string> Read(const ros::NodeHandle& pnh, SimNodeParameters& p) 
   GetDouble(pnh, "odometry/angular_noise_per_m", p.odometry.angular_noise_per_m, errors, known);
   Get(pnh, "publish_octomap_markers", p.publish_octomap_markers, errors, known);
   Get(pnh, "octomap_file", p.octomap_file, errors, known);
+  Get(pnh, "publish_truth_map_to_odom", p.publish_truth_map_to_odom, errors, known);
   // Unknown names under the node's namespace: most likely typos.
   std::vector<std::string> names;
   ros::param::getParamNames(names);
