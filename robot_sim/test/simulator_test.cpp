@@ -131,6 +131,25 @@ TEST_F(SimulatorTest, SensorDropoutLastsItsDurationAndUnknownSensorsAreErrors) {
   EXPECT_NE(error.find("lidar"), std::string::npos);
 }
 
+TEST_F(SimulatorTest, QuadrisHeadsPointAndProfile) {
+  // Nomad at (8.95 - 0.05 - 1, 4.5) facing east: quadris_1 is 0.05 m ahead of the centre, so its
+  // horizontal profile meets the east wall face (x = 9.95) 1 m ahead in its middle.
+  Start("nomad200", {9.95 - 1.0 - 0.05, 4.5, 0.0});
+  ASSERT_EQ(sim_->spec(id_).profilers.size(), 2u);
+  std::vector<double> angles;
+  auto r = sim_->SenseProfile(id_, 0, true, rng_, &angles);
+  ASSERT_EQ(r.size(), 64u);
+  EXPECT_NEAR(r[31], 1.0 / std::cos(angles[31]), 0.03);
+  // Panned 90 degrees left it looks up the room: the north wall face y = 5.95 is 1.35 m away.
+  ASSERT_TRUE(sim_->PointHead(id_, 0, M_PI / 2, 0.0));
+  r = sim_->SenseProfile(id_, 0, true, rng_, &angles);
+  EXPECT_NEAR(r[31], (5.95 - 4.6) / std::cos(angles[31]), 0.03);
+  EXPECT_FALSE(sim_->PointHead(id_, 2, 0.0, 0.0));
+  EXPECT_FALSE(sim_->PointHead(id_, 0, NAN, 0.0));
+  ASSERT_TRUE(sim_->InjectFault(id_, "quadris_1", {FaultKind::kDropout, 0.0, 10.0}, nullptr));
+  EXPECT_TRUE(std::isnan(sim_->SenseProfile(id_, 0, false, rng_, nullptr)[0]));
+}
+
 TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {
   Start("nomad200", {5.0, 3.0, 0.0});
   const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");

@@ -46,6 +46,16 @@ class Simulator {
   std::vector<double> SenseRing(int robot, const RangeRingSpec& ring, Rng& rng);
   /// Laser readings (m, +inf for no return; NaN when dropped out), empty without a laser.
   std::vector<double> SenseLaser(int robot, Rng& rng);
+  /// A profile of pan-tilt head `index` (robot's range_profilers order), faults applied.
+  std::vector<double> SenseProfile(int robot, int index, bool horizontal, Rng& rng,
+                                   std::vector<double>* angles);
+  /// Points head `index` (pan about z, tilt positive down, rad); false for a bad index or a
+  /// value that is not finite.
+  bool PointHead(int robot, int index, double pan, double tilt);
+  /// Current pan and tilt of head `index` (rad).
+  std::pair<double, double> Head(int robot, int index) const {
+    return robots_.at(robot).heads.at(index);
+  }
   /// Bumper segments pressed after the last step (all false when dropped out).
   std::vector<bool> Bumper(int robot);
 
@@ -86,6 +96,7 @@ class Simulator {
     double turret_yaw = 0.0;
     bool stalled = false;
     std::vector<bool> bumper;
+    std::vector<std::pair<double, double>> heads;  ///< Pan and tilt of each range profiler.
     std::map<std::string, SensorFault> faults;
     std::map<std::string, std::vector<double>> last;  ///< Last readings, for stuck faults.
     double slip_until = -1.0;

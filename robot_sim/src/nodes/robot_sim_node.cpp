@@ -63,6 +63,10 @@ class SimNode {
     }
     if (spec.laser) scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
     if (spec.bumper) bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
+    if (!spec.profilers.empty()) {
+      profile_pub_ = nh.advertise<spott_msgs::RangeProfile>("range_profile", 10);
+      head_sub_ = nh.subscribe("range_profile/point_head", 10, &SimNode::OnPointHead, this);
+    }
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("sim/octomap_markers", 1, true);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimNode::OnCmdVel, this);
     turret_sub_ = nh.subscribe("turret/command", 10, &SimNode::OnTurret, this);
@@ -86,6 +90,7 @@ class SimNode {
     const long odom_every = every(params_.odom_rate_hz);
     const long sensor_every = every(params_.sensor_rate_hz);
     const long laser_every = every(params_.laser_rate_hz);
+    const long profile_every = every(params_.profile_rate_hz);
     PublishClock(ros::Time(0, 0));
     PublishOdometry(ros::Time(0, 0));
     ros::WallTime wall_start = ros::WallTime::now();
@@ -108,6 +113,7 @@ class SimNode {
       if (step % odom_every == 0) PublishOdometry(stamp);
       if (step % sensor_every == 0) PublishSensors(stamp);
       if (step % laser_every == 0) PublishLaser(stamp, laser_every * dt);
+      if (step % profile_every == 0) PublishProfiles(stamp);
       if (params_.publish_octomap_markers && sim_->world().revision() != markers_revision_) {
         markers_revision_ = sim_->world().revision();
         markers_pub_.publish(
@@ -153,9 +159,16 @@ class SimNode {
                                         params_.map_frame, params_.base_frame, stamp));
     sensor_msgs::JointState js;
     js.header.stamp = stamp;
-    for (const std::string& j : sim_->spec(robot_).movable_joints) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    for (const std::string& j : spec.movable_joints) {
+      double position = j == spec.turret_joint ? sim_->turret_yaw(robot_) : 0.0;
+      for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+        const auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+        if (j == spec.profilers[i].pan_joint) position = pan;
+        if (j == spec.profilers[i].tilt_joint) position = tilt;
+      }
       js.name.push_back(j);
-      js.position.push_back(j == sim_->spec(robot_).turret_joint ? sim_->turret_yaw(robot_) : 0.0);
+      js.position.push_back(position);
     }
     joints_pub_.publish(js);
   }
@@ -183,6 +196,54 @@ class SimNode {
     if (!spec.laser) return;
     scan_pub_.publish(
         conv::ToLaserScan(*spec.laser, sim_->SenseLaser(robot_, rng_), period, stamp));
+  }
+
+  void PublishProfiles(const ros::Time& stamp) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+      const auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+      for (const bool horizontal : {true, false}) {
+        std::vector<double> angles;
+        const std::vector<double> ranges =
+            sim_->SenseProfile(robot_, static_cast<int>(i), horizontal, rng_, &angles);
+        profile_pub_.publish(
+            conv::ToRangeProfile(spec.profilers[i], horizontal, pan, tilt, angles, ranges, stamp));
+      }
+    }
+  }
+
+  // Joint positions for the heads' pan and tilt joints (names from the URDF).
+  void OnPointHead(const sensor_msgs::JointState& msg) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    if (msg.position.size() != msg.name.size()) {
+      ROS_WARN_THROTTLE(1.0, "robot_sim: point_head: %zu names but %zu positions", msg.name.size(),
+                        msg.position.size());
+      return;
+    }
+    for (std::size_t k = 0; k < msg.name.size(); ++k) {
+      bool known = false;
+      for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+        auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+        if (msg.name[k] == spec.profilers[i].pan_joint) {
+          pan = msg.position[k];
+        } else if (msg.name[k] == spec.profilers[i].tilt_joint) {
+          tilt = msg.position[k];
+        } else {
+          continue;
+        }
+        known = true;
+        if (!sim_->PointHead(robot_, static_cast<int>(i), pan, tilt)) {
+          ROS_WARN_THROTTLE(1.0,
+                            "robot_sim: point_head: refused %s = %f (not finite, or tilt "
+                            "beyond +-pi/2)",
+                            msg.name[k].c_str(), msg.position[k]);
+        }
+      }
+      if (!known) {
+        ROS_WARN_THROTTLE(1.0, "robot_sim: point_head: no pan or tilt joint '%s'",
+                          msg.name[k].c_str());
+      }
+    }
   }
 
   void RunSchedule(double now_s) {
@@ -275,9 +336,9 @@ class SimNode {
   int markers_revision_ = -1;
   int obstacle_counter_ = 0;
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
-      markers_pub_;
+      markers_pub_, profile_pub_;
   std::vector<ros::Publisher> ring_pubs_, range_pubs_;
-  ros::Subscriber cmd_sub_, turret_sub_;
+  ros::Subscriber cmd_sub_, turret_sub_, head_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
 };
