@@ -295,6 +295,27 @@ bool Simulator::Slip(int robot, double linear_scale, double angular_scale, doubl
   return true;
 }
 
+bool Simulator::ReplaceWorld(const spott_map::World& world, std::string* error) {
+  // Check on a scratch copy first, so that a refusal leaves the old building untouched.
+  SimWorld scratch(world_->params());
+  scratch.Build(world);
+  for (const Robot& r : robots_) {
+    const std::string solid =
+        scratch.SolidAt(r.pose.x, r.pose.y, r.spec.radius_m, r.spec.height_m, nullptr);
+    if (!solid.empty() || !scratch.InsideMap(r.pose.x, r.pose.y)) {
+      if (error) {
+        *error = "robot " + r.spec.name + " at (" + std::to_string(r.pose.x) + ", " +
+                 std::to_string(r.pose.y) + ") would be " +
+                 (solid.empty() ? "outside every room" : "inside '" + solid + "'") + " of world '" +
+                 world.name + "'";
+      }
+      return false;
+    }
+  }
+  world_->Build(world);
+  return true;
+}
+
 void Simulator::SetTurretYaw(int robot, double yaw) {
   if (std::isfinite(yaw)) robots_.at(robot).turret_yaw = WrapAngle(yaw);
 }

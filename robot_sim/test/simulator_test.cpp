@@ -4,6 +4,7 @@
 #include <cstring>
 #include <functional>
 
+#include "robot_sim/node_parameters.h"
 #include "robot_sim/simulator.h"
 #include "test_world.h"
 
@@ -148,6 +149,50 @@ TEST_F(SimulatorTest, QuadrisHeadsPointAndProfile) {
   EXPECT_FALSE(sim_->PointHead(id_, 0, NAN, 0.0));
   ASSERT_TRUE(sim_->InjectFault(id_, "quadris_1", {FaultKind::kDropout, 0.0, 10.0}, nullptr));
   EXPECT_TRUE(std::isnan(sim_->SenseProfile(id_, 0, false, rng_, nullptr)[0]));
+}
+
+TEST_F(SimulatorTest, ReplacingTheWorldKeepsTheRobotOrRefusesAndKeepsEverything) {
+  Start("b21", {3.0, 3.0, 0.0});
+  const auto open_world = spott_map::LoadWorldFromString(
+      "world: {name: hall}\nwalls: {from_rooms: true}\n"
+      "rooms: [{id: r, polygon: [[0, 0], [20, 0], [20, 6], [0, 6]]}]\n"
+      "robot_start: {pose: [2, 2, 0]}\n",
+      "hall.yaml");
+  ASSERT_TRUE(open_world.ok());
+  std::string error;
+  ASSERT_TRUE(sim_->ReplaceWorld(*open_world.world, &error)) << error;
+  Rng rng(1);
+  // No wall at x = 10 any more: the laser straight ahead reaches x = 19.95.
+  auto scan = sim_->SenseLaser(id_, rng);
+  EXPECT_NEAR(scan[90], 19.95 - 3.0 - 0.15, 0.05);
+  const auto blocked = spott_map::LoadWorldFromString(
+      "world: {name: blocked}\nwalls: {from_rooms: true}\n"
+      "rooms: [{id: r, polygon: [[0, 0], [20, 0], [20, 6], [0, 6]]}]\n"
+      "objects: [{id: pillar, kind: cylinder, pose: [3, 3, 0], size: [0.5, 0.5], height: 2}]\n"
+      "robot_start: {pose: [2, 2, 0]}\n",
+      "blocked.yaml");
+  ASSERT_TRUE(blocked.ok());
+  EXPECT_FALSE(sim_->ReplaceWorld(*blocked.world, &error));
+  EXPECT_NE(error.find("pillar"), std::string::npos);
+  scan = sim_->SenseLaser(id_, rng);
+  EXPECT_NEAR(scan[90], 19.95 - 3.0 - 0.15, 0.05);  // still the hall
+}
+
+TEST(NodeParametersTest, EveryViolationIsNamed) {
+  SimNodeParameters p;
+  EXPECT_EQ(ValidateParameters(p).size(), 1u);  // world_file is required
+  p.world_file = "w.yaml";
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.robot = "../etc";
+  p.sensor_rate_hz = 0;
+  p.real_time_factor = -1;
+  p.odometry.linear_scale = 2;
+  const auto e = ValidateParameters(p);
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_NE(e[0].find("robot"), std::string::npos);
+  EXPECT_NE(e[1].find("sensor_rate_hz"), std::string::npos);
+  EXPECT_NE(e[2].find("real_time_factor"), std::string::npos);
+  EXPECT_NE(e[3].find("odometry/linear_scale"), std::string::npos);
 }
 
 TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {

@@ -70,6 +70,10 @@ class Simulator {
   /// Odometry measures `linear_scale` / `angular_scale` of the true motion for `duration` s.
   bool Slip(int robot, double linear_scale, double angular_scale, double duration,
             std::string* error);
+  /// Replaces the building by `world`, keeping the robots, their odometry and faults. Refused
+  /// (false, message; nothing changes) when a robot would stand inside a solid or outside
+  /// every room of the new world.
+  bool ReplaceWorld(const spott_map::World& world, std::string* error);
   /// Turns the sensor turret (synchro drives) to `yaw` (rad) relative to the base.
   void SetTurretYaw(int robot, double yaw);
 

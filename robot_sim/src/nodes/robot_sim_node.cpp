@@ -12,6 +12,7 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
+#include <spott_msgs/LoadWorld.h>
 #include <spott_msgs/RemoveObstacle.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Trigger.h>
@@ -79,6 +80,7 @@ class SimNode {
     services_.push_back(sim_nh.advertiseService("sensor_fault", &SimNode::OnSensorFault, this));
     services_.push_back(sim_nh.advertiseService("odometry_slip", &SimNode::OnSlip, this));
     services_.push_back(sim_nh.advertiseService("save_octomap", &SimNode::OnSaveOctomap, this));
+    services_.push_back(sim_nh.advertiseService("load_world", &SimNode::OnLoadWorld, this));
     (void)pnh;
   }
 
@@ -319,6 +321,22 @@ class SimNode {
     res.message = res.success ? "removed" : error;
     return true;
   }
+  // A new world file; on any error (file, line, column) the old world and the robot stay.
+  bool OnLoadWorld(spott_msgs::LoadWorld::Request& req, spott_msgs::LoadWorld::Response& res) {
+    const auto loaded = spott_map::LoadWorldFile(req.path);
+    for (const auto& e : loaded.errors) res.errors.push_back(e.ToString());
+    std::string error;
+    res.success = loaded.ok() && sim_->ReplaceWorld(*loaded.world, &error);
+    if (!error.empty()) res.errors.push_back(req.path + ": " + error);
+    if (res.success) {
+      ROS_INFO("robot_sim: loaded world '%s' from %s", loaded.world->name.c_str(),
+               req.path.c_str());
+    } else {
+      ROS_WARN("robot_sim: load_world %s refused; keeping the current world", req.path.c_str());
+    }
+    return true;
+  }
+
   bool OnSaveOctomap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
     res.success = sim_->world().WriteOctomap(params_.octomap_file);
     res.message = (res.success ? "wrote " : "cannot write ") + params_.octomap_file;

@@ -16,6 +16,7 @@
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/Door.h>
 #include <spott_msgs/Kidnap.h>
+#include <spott_msgs/LoadWorld.h>
 #include <spott_msgs/RangeProfile.h>
 #include <spott_msgs/RangeRing.h>
 #include <spott_msgs/SensorFault.h>
@@ -228,6 +229,17 @@ TEST_F(SimFixture, DropoutServiceBlanksTheSensorForItsDuration) {
   add.request.kind = "piano";
   ASSERT_TRUE(ros::service::call("sim/add_obstacle", add));
   EXPECT_FALSE(add.response.success);
+}
+
+TEST_F(SimFixture, BadWorldFileIsRefusedAndTheOldWorldStays) {
+  ASSERT_TRUE(Kidnap(9.25, 8.925 - 1.0 - kRadius, M_PI / 2, false));
+  spott_msgs::LoadWorld load;
+  load.request.path = "/nonexistent/world.yaml";
+  ASSERT_TRUE(ros::service::call("sim/load_world", load));
+  EXPECT_FALSE(load.response.success);
+  ASSERT_FALSE(load.response.errors.empty());
+  EXPECT_NE(load.response.errors[0].find("/nonexistent/world.yaml"), std::string::npos);
+  EXPECT_NEAR(FreshSonar().ranges[0], 1.0, 0.07);  // the corridor's end wall is still there
 }
 
 TEST_F(SimFixture, NanVelocityIsRefusedAndTheRobotStops) {
