@@ -65,7 +65,7 @@ SourceError UrdfError(const std::string& urdf_name, const std::string& message) 
 void ReadDrive(YamlReader& in, const YAML::Node& node, DriveSpec& drive) {
   if (!in.ExpectMap(node, "drive",
                     {"kind", "max_linear_mps", "max_angular_rps", "max_linear_accel",
-                     "max_angular_accel", "wheel_separation_m"})) {
+                     "max_angular_accel", "wheel_separation_m", "max_turret_rps"})) {
     return;
   }
   const std::string kind = in.String(node, "kind", "drive", true).value_or("synchro");
@@ -86,6 +86,8 @@ void ReadDrive(YamlReader& in, const YAML::Node& node, DriveSpec& drive) {
   drive.wheel_separation_m = in.Number(node, "wheel_separation_m", "drive",
                                        drive.kind == DriveKind::kDifferential, positive)
                                  .value_or(0.0);
+  drive.max_turret_rps =
+      in.Number(node, "max_turret_rps", "drive", false, NumberRule::kNonNegative).value_or(0.0);
 }
 
 void ReadRing(YamlReader& in, const YAML::Node& node, const std::string& what,

@@ -62,6 +62,9 @@ bool Simulator::Collides(const Robot& r, double x, double y) const {
 
 void Simulator::Step(double dt, Rng& rng) {
   for (Robot& r : robots_) {
+    const double turret_step = r.spec.drive.max_turret_rps * dt;
+    r.turret_yaw = WrapAngle(r.turret_yaw + std::clamp(WrapAngle(r.turret_target - r.turret_yaw),
+                                                       -turret_step, turret_step));
     r.twist = LimitVelocity(r.twist, r.command, r.spec.drive, dt);
     spott_map::Pose2 next = Integrate(r.pose, r.twist, dt);
     r.stalled = false;
@@ -317,7 +320,7 @@ bool Simulator::ReplaceWorld(const spott_map::World& world, std::string* error) 
 }
 
 void Simulator::SetTurretYaw(int robot, double yaw) {
-  if (std::isfinite(yaw)) robots_.at(robot).turret_yaw = WrapAngle(yaw);
+  if (std::isfinite(yaw)) robots_.at(robot).turret_target = WrapAngle(yaw);
 }
 
 }  // namespace robot_sim

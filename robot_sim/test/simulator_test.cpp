@@ -195,6 +195,20 @@ TEST(NodeParametersTest, EveryViolationIsNamed) {
   EXPECT_NE(e[3].find("odometry/linear_scale"), std::string::npos);
 }
 
+TEST_F(SimulatorTest, TurretSlewsAtItsRateAndCarriesTheSonarRing) {
+  // SPOTT's dense scan turns the turret in 2.5 degree steps; the turret turns at 0.79 rad/s.
+  Start("nomad200", {5.0, 3.0, 0.0});
+  sim_->SetTurretYaw(id_, M_PI / 2);
+  Run(1.0);
+  EXPECT_NEAR(sim_->turret_yaw(id_), 0.79, 1e-9);
+  Run(2.0);
+  EXPECT_NEAR(sim_->turret_yaw(id_), M_PI / 2, 1e-9);
+  EXPECT_EQ(sim_->GroundTruth(id_).yaw, 0.0);  // the base did not turn
+  // sonar_1 now faces north: the north wall face (y = 5.95) is 2.95 - 0.2285 m away.
+  const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");
+  EXPECT_NEAR(sim_->SenseRing(id_, sonar, rng_)[0], 2.95 - 0.2285, 0.1);
+}
+
 TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {
   Start("nomad200", {5.0, 3.0, 0.0});
   const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");

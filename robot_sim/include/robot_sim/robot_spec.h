@@ -32,6 +32,7 @@ struct DriveSpec {
   double max_linear_accel = 0.5;   ///< (m/s^2) > 0
   double max_angular_accel = 2.0;  ///< (rad/s^2) > 0
   double wheel_separation_m = 0;   ///< differential only: distance between the wheels (m) > 0
+  double max_turret_rps = 0;       ///< turret slew rate (rad/s); 0 = no turret
 };
 
 enum class RangeKind { kUltrasound, kInfrared };

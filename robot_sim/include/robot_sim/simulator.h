@@ -74,7 +74,8 @@ class Simulator {
   /// (false, message; nothing changes) when a robot would stand inside a solid or outside
   /// every room of the new world.
   bool ReplaceWorld(const spott_map::World& world, std::string* error);
-  /// Turns the sensor turret (synchro drives) to `yaw` (rad) relative to the base.
+  /// Turns the sensor turret (synchro drives) towards `yaw` (rad) relative to the base, at the
+  /// robot's max_turret_rps (the shorter way round).
   void SetTurretYaw(int robot, double yaw);
 
   const spott_map::Pose2& GroundTruth(int robot) const { return robots_.at(robot).pose; }
@@ -98,6 +99,7 @@ class Simulator {
     Odometry odometry;
     btCollisionObject* body = nullptr;
     double turret_yaw = 0.0;
+    double turret_target = 0.0;
     bool stalled = false;
     std::vector<bool> bumper;
     std::vector<std::pair<double, double>> heads;  ///< Pan and tilt of each range profiler.
