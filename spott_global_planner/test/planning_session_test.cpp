@@ -238,6 +238,29 @@ TEST_F(Session, UnknownDoorIsRefusedWithoutChangingAnything) {
   EXPECT_EQ(session_.Update(Vec2(2, 2), &window_).path->doors, (Ids{"dAB", "dBC"}));
 }
 
+TEST(SessionFitNode, WindowHoldingTheRobotsNodeTurnsCase2IntoCase1) {
+  // The paper's remedy: with fit_node the window grows to hold the robot's node H = [0,12]x[4,6]
+  // around the robot (3,5), so a goal (10,5) in H is inside the window: case 1, not case 2.
+  GlobalPlannerParameters params;
+  params.window.window_size_m = 4.0;
+  params.window.resolution_m = 0.2;
+  params.window.recentre_margin_m = 0.5;
+  params.window.max_window_size_m = 30.0;
+  PlanningSession plain(params);
+  params.window.fit_node = true;
+  PlanningSession fitted(params);
+  for (PlanningSession* s : {&plain, &fitted}) {
+    s->SetGraph(test::MakeTestBuilding());
+    s->SetGoal(Vec2(10, 5));
+  }
+  EXPECT_EQ(plain.Update(Vec2(3, 5)).projection->projection_case,
+            ProjectionCase::kSameNodeOutsideWindow);
+  const SessionUpdate u = fitted.Update(Vec2(3, 5));
+  EXPECT_EQ(u.projection->projection_case, ProjectionCase::kSameNodeInWindow);
+  EXPECT_TRUE(u.projection->window.Contains(Vec2(0, 4)) &&
+              u.projection->window.Contains(Vec2(12, 6)));
+}
+
 TEST_F(Session, TrackedWindowIsUsedWhenTheLocalPlannerGivesNone) {
   session_.SetGoal(Vec2(11, 1));
   const SessionUpdate u = session_.Update(Vec2(2, 2));
