@@ -261,6 +261,17 @@ TEST(SessionFitNode, WindowHoldingTheRobotsNodeTurnsCase2IntoCase1) {
               u.projection->window.Contains(Vec2(12, 6)));
 }
 
+TEST_F(Session, StaleLocalWindowThatNoLongerHoldsTheRobotIsNotUsed) {
+  session_.SetGoal(Vec2(11, 1));
+  // window_ is [0.5,3.5]^2; the robot at (6,2) in B has left it: the modelled 3 m window on the
+  // 0.5 m lattice around (6,2), [4.5,7.5]x[0.5,3.5], is used instead.
+  const SessionUpdate u = session_.Update(Vec2(6, 2), &window_);
+  ASSERT_TRUE(u.projection);
+  EXPECT_TRUE(u.projection->window.min.isApprox(Vec2(4.5, 0.5)));
+  EXPECT_TRUE(u.projection->window.max.isApprox(Vec2(7.5, 3.5)));
+  EXPECT_EQ(u.projection->edge_id, "dBC");
+}
+
 TEST_F(Session, TrackedWindowIsUsedWhenTheLocalPlannerGivesNone) {
   session_.SetGoal(Vec2(11, 1));
   const SessionUpdate u = session_.Update(Vec2(2, 2));
