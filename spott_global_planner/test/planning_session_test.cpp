@@ -216,6 +216,12 @@ TEST_F(Session, GoalBehindAnObstacleInTheRobotsOwnNodeIsReachedAroundIt) {
   ASSERT_EQ(u.state, SessionState::kPlanned) << u.failure.message;
   EXPECT_EQ(u.path->doors, (Ids{"dAH", "dAB", "dBH"}));
   EXPECT_NEAR(u.path->cost, 9.0 + test::kSqrt17, 1e-9);
+  // Not case 2 (the straight line to the goal crosses the obstacle) but case 3: in the tracked
+  // window [1,4]x[3.5,6.5] dAH is inside, dAB (y in [1.5,2.5]) is not: e_k = dAB, n_k = A.
+  ASSERT_TRUE(u.projection);
+  EXPECT_EQ(u.projection->projection_case, ProjectionCase::kGeneral);
+  EXPECT_EQ(u.projection->edge_id, "dAB");
+  EXPECT_EQ(u.projection->node_id, "A");
   // On the goal's side the robot goes straight there.
   EXPECT_TRUE(session_.Update(Vec2(9, 5)).path->doors.empty());
 }
