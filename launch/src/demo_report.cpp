@@ -1,11 +1,12 @@
 #include "demo_report.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <iomanip>
 #include <optional>
 #include <sstream>
 
 #include <nav_msgs/OccupancyGrid.h>
+#include <ros/package.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/SetDoorState.h>
@@ -80,6 +81,14 @@ std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spo
 DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
                    const std::vector<std::string>& doors_to_close, double timeout_s) {
   DemoReport report;
+  // The report says which parts of the designed stack this build lacks, rather than a list
+  // written by hand that goes stale.
+  for (const char* package : {"robot_sim", "markov_localization", "spott_global_planner",
+                              "spott_harmonic_planner", "spott_tr_plus", "rpl_executive"}) {
+    (ros::package::getPath(package).empty() ? report.stack_packages_missing
+                                            : report.stack_packages_not_run)
+        .push_back(package);
+  }
   const ros::WallTime start = ros::WallTime::now();
   const auto fail = [&](const std::string& why) {
     report.failure = why;
@@ -195,24 +204,28 @@ std::string FormatReport(const DemoReport& r) {
   std::ostringstream out;
   const std::string rule(72, '=');
   out << "\n" << rule << "\n SPOTT-ROS demo report: world " << r.world << "\n" << rule << "\n";
-  out << " Running: world_server (spott_map: the map database of SPOTT section III.A).\n"
-      << " Not built yet, so not in this demo: robot_sim, markov_localization,\n"
-      << " spott_global_planner, spott_harmonic_planner, spott_tr_plus, rpl_executive.\n\n";
+  out << " Running: world_server (spott_map: the map database of SPOTT section III.A).\n";
+  const auto list = [&out](const char* title, const std::vector<std::string>& packages) {
+    if (packages.empty()) return;
+    out << title;
+    for (const std::string& p : packages) out << " " << p;
+    out << "\n";
+  };
+  list(" Built, not yet run by this demo:", r.stack_packages_not_run);
+  list(" Not built yet:", r.stack_packages_missing);
+  out << "\n";
   if (!r.ok) {
     out << " FAILED: " << r.failure << "\n";
     return out.str();
   }
-  char line[256];
-  std::snprintf(line, sizeof(line),
-                " Map database\n   rooms: %d (%d hallway portions)\n"
-                "   doors: %d open, %d closed, %d unknown (assumed open), %d openings\n"
-                "   CAD wall features: %d\n"
-                "   occupancy map: %d x %d cells of %.2f m, %d occupied\n"
-                "   objects not in the CAD map (for the robot to discover): %d\n\n",
-                r.rooms, r.hallways, r.doors_open, r.doors_closed, r.doors_unknown, r.openings,
-                r.cad_features, r.map_width, r.map_height, r.map_resolution, r.map_occupied,
-                r.objects_not_in_cad);
-  out << line;
+  out << " Map database\n   rooms: " << r.rooms << " (" << r.hallways << " hallway portions)\n"
+      << "   doors: " << r.doors_open << " open, " << r.doors_closed << " closed, "
+      << r.doors_unknown << " unknown (assumed open), " << r.openings << " openings\n"
+      << "   CAD wall features: " << r.cad_features << "\n"
+      << "   occupancy map: " << r.map_width << " x " << r.map_height << " cells of " << std::fixed
+      << std::setprecision(2) << r.map_resolution << " m, " << r.map_occupied << " occupied\n"
+      << "   objects not in the CAD map (for the robot to discover): " << r.objects_not_in_cad
+      << "\n\n";
   out << " Robot start is in " << r.start_room
       << "; reachable through passable doors: " << r.reachable.size() << " of " << r.rooms
       << " rooms\n";
@@ -230,11 +243,15 @@ std::string FormatReport(const DemoReport& r) {
     }
     out << "\n";
   }
-  out << "\n Local window at the start (SPOTT's 35 x 35 cells of 0.2 m; '#' wall, '+' padding\n"
-      << " of robot radius 0.225 m + localization error 0.1 m, '.' free, 'R' robot):\n";
+  const spott_map::LocalMapParameters window;  // the parameters AsciiWindow uses
+  out << std::defaultfloat << std::setprecision(6) << "\n Local window at the start (SPOTT's "
+      << window.cells() << " x " << window.cells() << " cells of " << window.resolution_m
+      << " m; '#' wall, '+' padding\n of robot radius " << window.robot_radius_m
+      << " m + localization error " << window.max_localization_error_m
+      << " m, '.' free, 'R' robot):\n";
   for (const std::string& row : r.local_window) out << "   " << row << "\n";
-  std::snprintf(line, sizeof(line), "\n Demo finished in %.1f s.\n", r.elapsed_s);
-  out << line << rule << "\n";
+  out << "\n Demo finished in " << std::fixed << std::setprecision(1) << r.elapsed_s << " s.\n"
+      << rule << "\n";
   return out.str();
 }
 

@@ -32,6 +32,8 @@ struct DemoReport {
   std::vector<DoorExperiment> door_experiments;
   std::vector<std::string> local_window;  ///< ASCII rows, north first.
   double elapsed_s = 0.0;
+  std::vector<std::string> stack_packages_missing;  ///< Packages of the stack not in this build.
+  std::vector<std::string> stack_packages_not_run;  ///< Built, but demo.launch does not run them.
 };
 
 /// Runs the demo against a running world_server: reads its latched topics, closes each door of

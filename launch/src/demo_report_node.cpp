@@ -1,4 +1,5 @@
 // demo_report: prints the main demo's report and exits (0 when every step answered).
+#include <fstream>
 #include <iostream>
 
 #include <ros/ros.h>
@@ -18,7 +19,15 @@ int main(int argc, char** argv) {
   }
   pnh.getParam("doors_to_close", doors);
   pnh.param("timeout", timeout_s, timeout_s);
+  std::string report_file;  // optional copy of the report (./spott demo prints it after shutdown)
+  pnh.param("report_file", report_file, report_file);
   const spott_launch::DemoReport report = spott_launch::RunDemo(nh, world_file, doors, timeout_s);
-  std::cout << spott_launch::FormatReport(report) << std::flush;
+  const std::string text = spott_launch::FormatReport(report);
+  std::cout << text << std::flush;
+  if (!report_file.empty()) {
+    std::ofstream out(report_file);
+    out << text;
+    if (!out) ROS_ERROR("demo_report: cannot write ~report_file '%s'", report_file.c_str());
+  }
   return report.ok ? 0 : 1;
 }

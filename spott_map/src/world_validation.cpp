@@ -68,20 +68,68 @@ class Validator {
     }
   }
 
+  // Everything must lie within kWorldMaxCoordinate of the origin: maps of the world are rasters,
+  // and a stray "1e9" would otherwise ask world_server for an impossible grid.
+  void CheckExtent(const SourceLocation& start_where) {
+    const auto far = [](const Vec2& p) {
+      return std::abs(p.x()) > kWorldMaxCoordinate || std::abs(p.y()) > kWorldMaxCoordinate;
+    };
+    const std::string limit =
+        " lies beyond " + Metres(kWorldMaxCoordinate) + " of the origin (the supported extent)";
+    // The first vertex of `points` beyond the extent, if any, is reported for `what`.
+    const auto check_points = [&](const std::vector<Vec2>& points, const std::string& what,
+                                  const SourceLocation& where) {
+      const auto beyond = std::find_if(points.begin(), points.end(), far);
+      if (beyond != points.end()) Error(where, what + PointText(*beyond) + limit);
+    };
+    for (const Room& r : world_.rooms)
+      check_points(r.polygon, "room " + r.id + ": vertex ", r.where);
+    for (const Zone& z : world_.zones)
+      check_points(z.polygon, "zone " + z.id + ": vertex ", z.where);
+    for (const Wall& w : world_.walls) {
+      if (far(w.segment.a) || far(w.segment.b) || w.thickness > kWorldMaxCoordinate)
+        Error(w.where, "wall " + w.id + limit);
+    }
+    for (const Door& d : world_.doors) {
+      if (far(d.center) || d.width > kWorldMaxCoordinate) Error(d.where, "door " + d.id + limit);
+    }
+    for (const WorldObject& o : world_.objects) {
+      if (far(o.pose.Position()) || o.size_x > kWorldMaxCoordinate ||
+          o.size_y > kWorldMaxCoordinate || o.height > kWorldMaxCoordinate) {
+        Error(o.where, "object " + o.id + limit);
+      }
+    }
+    for (const Place& p : world_.places) {
+      if (far(p.pose.Position())) Error(p.where, "place " + p.name + limit);
+    }
+    for (const NamedPath& path : world_.paths) {
+      check_points(path.points, "path " + path.id + ": point ", path.where);
+    }
+    if (far(world_.robot_start.Position())) Error(start_where, "robot_start" + limit);
+  }
+
+  // A room or zone outline must be simple with at least `min_area_m2`; it is made
+  // counter-clockwise. Returns false (with an error) when it is not usable.
+  bool NormalizeOutline(Polygon& polygon, const std::string& what, const SourceLocation& where,
+                        double min_area_m2) {
+    if (auto crossing = FindSelfIntersection(polygon)) {
+      Error(where, what + ": polygon is self-intersecting (edge " +
+                       std::to_string(crossing->first) + " meets edge " +
+                       std::to_string(crossing->second) + ")");
+      return false;
+    }
+    const double area = SignedArea(polygon);
+    if (std::abs(area) < min_area_m2) {
+      Error(where, what + ": polygon has no area");
+      return false;
+    }
+    if (area < 0.0) std::reverse(polygon.begin(), polygon.end());
+    return true;
+  }
+
   void CheckRooms() {
     for (Room& room : world_.rooms) {
-      if (auto crossing = FindSelfIntersection(room.polygon)) {
-        Error(room.where, "room " + room.id + ": polygon is self-intersecting (edge " +
-                              std::to_string(crossing->first) + " meets edge " +
-                              std::to_string(crossing->second) + ")");
-        continue;
-      }
-      const double area = SignedArea(room.polygon);
-      if (std::abs(area) < 0.01) {
-        Error(room.where, "room " + room.id + ": polygon has no area");
-        continue;
-      }
-      if (area < 0.0) std::reverse(room.polygon.begin(), room.polygon.end());
+      NormalizeOutline(room.polygon, "room " + room.id, room.where, 0.01);
     }
     for (std::size_t i = 0; i < world_.rooms.size(); ++i) {
       for (std::size_t j = i + 1; j < world_.rooms.size(); ++j) {
@@ -163,18 +211,7 @@ class Validator {
 
   void CheckZonesAndPaths() {
     for (Zone& zone : world_.zones) {
-      if (auto crossing = FindSelfIntersection(zone.polygon)) {
-        Error(zone.where, "zone " + zone.id + ": polygon is self-intersecting (edge " +
-                              std::to_string(crossing->first) + " meets edge " +
-                              std::to_string(crossing->second) + ")");
-        continue;
-      }
-      const double area = SignedArea(zone.polygon);
-      if (std::abs(area) < 1e-4) {
-        Error(zone.where, "zone " + zone.id + ": polygon has no area");
-        continue;
-      }
-      if (area < 0.0) std::reverse(zone.polygon.begin(), zone.polygon.end());
+      NormalizeOutline(zone.polygon, "zone " + zone.id, zone.where, 1e-4);
     }
     for (const NamedPath& path : world_.paths) {
       for (std::size_t i = 0; i < path.points.size(); ++i) {
@@ -252,6 +289,8 @@ void ValidateWorld(World& world, const SourceLocation& robot_start_where, bool w
         SourceError{SourceLocation{world.source_file, 0, 0}, "a world needs at least one room"});
   }
   v.CheckIds();
+  v.CheckExtent(robot_start_where);
+  if (!v.ok()) return;
   v.CheckRooms();
   if (!v.ok()) return;  // Doors and places are placed against valid room outlines only.
   v.CheckDoors();

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "test_worlds.h"
 
 namespace spott_map {
@@ -90,6 +92,31 @@ TEST(WorldLoader, ZonesMustBeSimpleAndPathsInsideRooms) {
   const auto p = Errors(path);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_EQ(p[0], "16:5: path P: point 1 (9.00, 1.00) is outside every room");
+}
+
+// The example in README.md is what users copy: it must stay a valid world. (The test runs in
+// spott_map/test, see CMakeLists.txt.)
+TEST(WorldLoader, TheReadmeExampleLoads) {
+  std::ifstream readme("../README.md");
+  ASSERT_TRUE(readme.good());
+  std::string line, example;
+  bool inside = false;
+  while (std::getline(readme, line)) {
+    if (line == "```yaml") {
+      inside = true;
+    } else if (inside && line == "```") {
+      break;
+    } else if (inside) {
+      example += line + "\n";
+    }
+  }
+  const WorldLoadResult r = LoadWorldFromString(example, "README.md");
+  ASSERT_TRUE(r.ok()) << FormatErrors(r.errors);
+  EXPECT_EQ(r.world->rooms.size(), 2u);
+  EXPECT_EQ(r.world->doors.size(), 1u);
+  EXPECT_EQ(r.world->objects.size(), 1u);
+  EXPECT_EQ(r.world->zones.size(), 1u);
+  EXPECT_EQ(r.world->paths.size(), 1u);
 }
 
 TEST(WorldLoader, MinimalWorldIsValid) {
@@ -189,6 +216,19 @@ TEST(WorldLoader, OverlappingRooms) {
       Replace(kMinimal, "[[4, 0], [8, 0], [8, 4], [4, 4]]", "[[3, 0], [8, 0], [8, 4], [3, 4]]"));
   ASSERT_GE(e.size(), 1u);
   EXPECT_EQ(e[0], "6:5: room b overlaps room a");
+}
+
+TEST(WorldLoader, CoordinatesBeyondTheSupportedExtent) {
+  const auto e = Errors(
+      Replace(kMinimal, "[[4, 0], [8, 0], [8, 4], [4, 4]]", "[[4, 0], [8e6, 0], [8, 4], [4, 4]]"));
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0],
+            "6:5: room b: vertex (8000000.00, 0.00) lies beyond 500.00 m of the origin (the "
+            "supported extent)");
+  const auto start = Errors(Replace(kMinimal, "pose: [1, 1, 0]", "pose: [1, -501, 0]"));
+  ASSERT_EQ(start.size(), 1u);
+  EXPECT_EQ(start[0],
+            "14:3: robot_start lies beyond 500.00 m of the origin (the supported extent)");
 }
 
 TEST(WorldLoader, RobotStartOutsideEveryRoom) {

@@ -27,4 +27,8 @@ WorldLoadResult LoadWorldFromString(const std::string& text, const std::string& 
 /// how close collinear room edges must be to merge into one wall.
 constexpr double kWorldTolerance = 0.02;
 
+/// Every coordinate and size in a world file must lie within this distance of the origin (m):
+/// a 1 km square holds any indoor floor, and keeps world_server's raster map bounded.
+constexpr double kWorldMaxCoordinate = 500.0;
+
 }  // namespace spott_map

@@ -52,7 +52,18 @@ class WorldServer {
   void PublishAll() {
     const ros::Time now = ros::Time::now();
     const Box b = world_.Bounds().Inflated(0.5);
-    const double res = params_.map_resolution_m;
+    // The latched map stays below kMaxMapCells (25 M cells, 25 MB): a world too large for
+    // ~map_resolution is published coarser rather than exhausting memory.
+    constexpr double kMaxMapCells = 25e6;
+    const double area = (b.max.x() - b.min.x()) * (b.max.y() - b.min.y());
+    double res = params_.map_resolution_m;
+    if (area / (res * res) > kMaxMapCells) {
+      res = std::sqrt(area / kMaxMapCells);
+      ROS_WARN(
+          "world_server: world '%s' is too large for ~map_resolution %.3f m; publishing the "
+          "map at %.3f m",
+          world_.name.c_str(), params_.map_resolution_m, res);
+    }
     OccupancyRaster raster(
         Vec2(std::floor(b.min.x() / res) * res, std::floor(b.min.y() / res) * res),
         static_cast<int>(std::ceil((b.max.x() - b.min.x()) / res)) + 1,

@@ -2,6 +2,7 @@
 
 #include <cairo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -284,10 +285,20 @@ void DrawLegendAndScale(const Canvas& c, const World& w, double width_px, double
     c.Text(x + 20, y, text, size, false);
     x += LegendEntryWidth(text);
   }
-  // A scale bar of a round number of metres, about a fifth of the width.
+  const Box b = w.Bounds();
+  char title[256];
+  std::snprintf(title, sizeof(title), "%s  (%.1f x %.1f m, %zu rooms, %zu doors)", w.name.c_str(),
+                b.max.x() - b.min.x(), b.max.y() - b.min.y(), w.rooms.size(), w.doors.size());
+  c.Text(10, 20, title, 15, false);
+  // A scale bar of a round number of metres: about a fifth of the width, right of the title.
+  cairo_set_font_size(c.cr(), 15);
+  cairo_text_extents_t title_extents;
+  cairo_text_extents(c.cr(), title, &title_extents);
+  const double room_for_bar =
+      std::min(width_px / 5, width_px - 12 - (10 + title_extents.x_advance + 24));
   double metres = 1.0;
   for (double m : {1.0, 2.0, 5.0, 10.0, 20.0}) {
-    if (m * c.Scale() <= width_px / 5) metres = m;
+    if (m * c.Scale() <= room_for_bar) metres = m;
   }
   const double bar = metres * c.Scale();
   c.Colour(kText);
@@ -298,11 +309,6 @@ void DrawLegendAndScale(const Canvas& c, const World& w, double width_px, double
   char text[32];
   std::snprintf(text, sizeof(text), "%g m", metres);
   c.Text(width_px - 12 - bar / 2, 12, text, size, true);
-  const Box b = w.Bounds();
-  char title[256];
-  std::snprintf(title, sizeof(title), "%s  (%.1f x %.1f m, %zu rooms, %zu doors)", w.name.c_str(),
-                b.max.x() - b.min.x(), b.max.y() - b.min.y(), w.rooms.size(), w.doors.size());
-  c.Text(10, 20, title, 15, false);
 }
 
 }  // namespace

@@ -36,12 +36,19 @@ double QuaternionYaw(const geometry_msgs::Quaternion& q) {
 
 }  // namespace
 
-geometry_msgs::Point ToPoint(const Vec2& p) {
+geometry_msgs::Point ToPoint(const Vec2& p, double z) {
   geometry_msgs::Point m;
   m.x = p.x();
   m.y = p.y();
+  m.z = z;
   return m;
 }
+
+// Marker heights (m) above the map plane, so that rviz draws doors over walls over room
+// outlines over the occupancy grid instead of letting them flicker in one plane.
+constexpr double kRoomZ = 0.02;
+constexpr double kWallZ = 0.04;
+constexpr double kDoorZ = 0.06;
 
 Vec2 FromPoint(const geometry_msgs::Point& p) { return Vec2(p.x, p.y); }
 
@@ -337,8 +344,8 @@ visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::stri
   for (const MapFeature& f : db.features()) {
     auto& target = f.source == FeatureSource::kCad ? cad : sensed;
     if (f.type == FeatureType::kLineSegment) {
-      target.points.push_back(ToPoint(f.points[0]));
-      target.points.push_back(ToPoint(f.points[1]));
+      target.points.push_back(ToPoint(f.points[0], kWallZ));
+      target.points.push_back(ToPoint(f.points[1], kWallZ));
     } else if (f.type == FeatureType::kPoint) {
       auto m = make("sensed_points", object_id++, visualization_msgs::Marker::SPHERE);
       m.pose.position = ToPoint(f.points[0]);
@@ -348,8 +355,8 @@ visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::stri
     } else {
       const Polygon outline = f.Outline();
       for (std::size_t i = 0; i < outline.size(); ++i) {
-        target.points.push_back(ToPoint(outline[i]));
-        target.points.push_back(ToPoint(outline[(i + 1) % outline.size()]));
+        target.points.push_back(ToPoint(outline[i], kWallZ));
+        target.points.push_back(ToPoint(outline[(i + 1) % outline.size()], kWallZ));
       }
     }
   }
@@ -362,8 +369,8 @@ visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::stri
     outline.scale.x = 0.03;
     outline.color = room.kind == RoomKind::kHallway ? Colour(0.8f, 0.7f, 0.2f, 0.8f)
                                                     : Colour(0.3f, 0.5f, 0.8f, 0.8f);
-    for (const Vec2& p : room.polygon) outline.points.push_back(ToPoint(p));
-    outline.points.push_back(ToPoint(room.polygon.front()));
+    for (const Vec2& p : room.polygon) outline.points.push_back(ToPoint(p, kRoomZ));
+    outline.points.push_back(ToPoint(room.polygon.front(), kRoomZ));
     array.markers.push_back(outline);
     auto label = make("room_names", id++, visualization_msgs::Marker::TEXT_VIEW_FACING);
     label.pose.position = ToPoint(Centroid(room.polygon));
@@ -381,7 +388,7 @@ visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::stri
               : door.state == DoorState::kOpen   ? Colour(0.1f, 0.7f, 0.2f)
               : door.state == DoorState::kClosed ? Colour(0.9f, 0.1f, 0.1f)
                                                  : Colour(1.0f, 0.55f, 0.0f);
-    m.points = {ToPoint(door.opening.a), ToPoint(door.opening.b)};
+    m.points = {ToPoint(door.opening.a, kDoorZ), ToPoint(door.opening.b, kDoorZ)};
     array.markers.push_back(m);
   }
   return array;

@@ -24,7 +24,7 @@
 
 namespace spott_map::ros_conversions {
 
-geometry_msgs::Point ToPoint(const Vec2& p);
+geometry_msgs::Point ToPoint(const Vec2& p, double z = 0.0);  ///< z (m) above the map plane
 Vec2 FromPoint(const geometry_msgs::Point& p);
 geometry_msgs::Pose2D ToPose2D(const Pose2& p);
 Pose2 FromPose2D(const geometry_msgs::Pose2D& p);

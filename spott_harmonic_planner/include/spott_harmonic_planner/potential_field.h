@@ -1,0 +1,186 @@
+// The harmonic potential of SPOTT's local planner (III.D.1) over the padded local occupancy
+// window: obstacles (already padded by robot radius plus the largest localization error,
+// footnote 15, by spott_map::OccupancyRaster) and every window border cell hold the high
+// Dirichlet value, the goal (a point inside the window, or the projected border segment of
+// Fig. 14) the low one; the free cells satisfy the discrete Laplace equation.
+//
+// Complement storage (the long-corridor fix, see README "Long corridors"): the field stores
+// p = 1 - u, the probability that a random walk from a cell reaches the goal before an obstacle
+// (u is the paper's potential: obstacles 1, goal 0). In a corridor p decays like
+// exp(-pi d / w), so u = 1 - p rounds to exactly 1 once p < 2^-53 (about 11.7 widths in
+// double, 5 in float), and neighbours become indistinguishable (the paper's footnote 16).
+// Stored as p, the same values keep their relative precision down to 1e-308 (about 225
+// widths). Steepest descent of u is steepest ascent of p; every accessor that says
+// "potential" returns u.
+//
+// Not thread-safe. Coordinates: metres in the frame of the raster (map); cell (ix, iy) as in
+// spott_map::OccupancyRaster.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "spott_harmonic_planner/solver.h"
+#include "spott_map/geometry.h"
+#include "spott_map/occupancy_raster.h"
+
+namespace spott_harmonic_planner {
+
+using spott_map::Vec2;
+
+enum class ResidualNorm {
+  kAbsolute,  ///< max |r_i|: the usual test; fast, but far dead ends stay unresolved.
+  kRelative,  ///< max |r_i| / p_i: every cell resolved to its own magnitude (long corridors).
+};
+
+struct FieldOptions {
+  SolverOptions solver;
+  double tolerance = 1e-6;  ///< Convergence: residual norm below this, in (0, 1).
+  ResidualNorm norm = ResidualNorm::kAbsolute;
+  /// Decay per cell of the heuristic initial guess exp(-k d), d = wavefront distance (cells);
+  /// > 0. pi / 15: the decay of a harmonic function in a corridor 15 cells wide.
+  double heuristic_decay_per_cell = 0.2;
+};
+
+std::vector<std::string> ValidateFieldOptions(const FieldOptions& options);
+
+struct IterationReport {
+  int sweeps = 0;  ///< Iterations (sweeps / line passes / V-cycles) since the last cold start.
+  double residual = 0.0;   ///< In the chosen norm, after the last iteration.
+  bool converged = false;  ///< residual < tolerance.
+};
+
+/// Cell kinds of the Dirichlet problem.
+enum class FieldCell : std::uint8_t {
+  kFree = 0,         ///< An unknown of the Laplace equation, connected to the goal.
+  kObstacle = 1,     ///< Padded obstacle or window border: u = 1 (p = 0).
+  kGoal = 2,         ///< u = 0 (p = 1).
+  kUnreachable = 3,  ///< Free but cut off from the goal: the exact solution is u = 1 (p = 0).
+};
+
+class PotentialField {
+ public:
+  /// Throws std::invalid_argument on invalid options.
+  explicit PotentialField(const FieldOptions& options);
+
+  /// Loads the window: blocked cells of `raster` (obstacle or padding) and its border ring become
+  /// obstacles. Keeps the current values where the window geometry is unchanged (warm start
+  /// after a map update); otherwise the field is cold. The goal is kept when it is still valid.
+  void SetOccupancy(const spott_map::OccupancyRaster& raster);
+
+  /// Goal at the cell holding `p`. False (goal unchanged) when `p` is outside the window or in
+  /// a blocked cell.
+  bool SetGoalPoint(const Vec2& p);
+  /// Goal on the window border: every border cell within `half_width_m` of the segment (the
+  /// thick line of Fig. 14). False when no border cell qualifies.
+  bool SetGoalSegment(const spott_map::Segment& s, double half_width_m);
+  bool HasGoal() const { return goal_count_ > 0; }
+  bool goal_on_border() const { return goal_on_border_; }
+
+  /// Anytime initial guess (III.D.1): p = exp(-k d) with d the 8-connected wavefront distance
+  /// from the goal through free cells; 0 where the goal cannot be reached (which is exact).
+  /// Resets the sweep count.
+  void ColdStart();
+  /// `sweeps` more iterations (warm). Returns the state after them.
+  IterationReport Iterate(int sweeps);
+  /// Iterates until converged or `max_sweeps` more iterations were spent.
+  IterationReport Solve(int max_sweeps);
+  IterationReport report() const { return report_; }
+  double Residual() const;
+
+  // --- Geometry and values.
+  int width() const { return width_; }
+  int height() const { return height_; }
+  double resolution() const { return resolution_; }
+  const Vec2& origin() const { return origin_; }
+  FieldCell cell(int ix, int iy) const { return kind_[Index(ix, iy)]; }
+  /// p (complement storage): 1 at the goal, 0 at obstacles.
+  double GoalProbability(int ix, int iy) const { return p_[Index(ix, iy)]; }
+  /// u = 1 - p: the paper's potential (obstacles 1, goal 0), rounded as double stores it.
+  double Potential(int ix, int iy) const { return 1.0 - p_[Index(ix, iy)]; }
+  const std::vector<double>& values() const { return p_; }
+  const std::vector<FieldCell>& cells() const { return kind_; }
+  std::optional<std::pair<int, int>> CellOf(const Vec2& p) const;
+  Vec2 CellCentre(int ix, int iy) const;
+
+  /// Steepest-descent direction of u (unit vector, map frame) at a continuous position, from
+  /// the gradient of the bilinear interpolant of p between the four nearest cell centres.
+  /// nullopt outside the window, in a blocked cell, or where the field is flat (p = 0: the goal
+  /// is unreachable from there, or the field is not yet initialized).
+  std::optional<Vec2> DescentDirection(const Vec2& p) const;
+  /// Bilinear interpolation of p at a continuous position (0 outside).
+  double InterpolatedGoalProbability(const Vec2& p) const;
+
+  struct Path {
+    std::vector<Vec2> points;  ///< From the start to the goal (or to where it stopped).
+    bool reached_goal = false;
+    bool entered_obstacle = false;
+    double length_m = 0.0;
+  };
+  /// Integrates steepest descent from `start` with steps of `step_cells` cells (midpoint rule);
+  /// where the interpolated gradient vanishes it steps to the best 8-neighbour cell.
+  Path DescendPath(const Vec2& start, double step_cells = 0.5, int max_steps = 0) const;
+
+  /// The 8-neighbour with the largest p, if larger than the cell's own (no obstacles, no
+  /// diagonal step past an obstacle corner): one step of discrete steepest descent.
+  std::optional<std::pair<int, int>> BestNeighbour(int ix, int iy) const;
+
+  /// Distance (m) from `p` to the nearest obstacle cell's square (border ring included).
+  double Clearance(const Vec2& p) const;
+
+ private:
+  std::size_t Index(int ix, int iy) const {
+    return static_cast<std::size_t>(iy) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(ix);
+  }
+  void RebuildMask();
+  void ComputeClearance();
+
+  FieldOptions options_;
+  std::unique_ptr<IterativeSolver> solver_;
+  int width_ = 0;
+  int height_ = 0;
+  double resolution_ = 1.0;
+  Vec2 origin_{0.0, 0.0};
+  std::vector<std::uint8_t> blocked_;  // raster obstacles + border ring
+  std::vector<FieldCell> kind_;
+  std::vector<double> p_;
+  std::vector<float> clearance_cells_;  // distance transform (cells) to the nearest blocked cell
+  GridMask mask_;
+  bool solver_ready_ = false;
+  std::unique_ptr<IterativeSolver> polish_;  // relative norm with multigrid: ADI after V-cycles
+  bool polish_ready_ = false;
+  int goal_count_ = 0;
+  bool goal_on_border_ = false;
+  std::vector<std::size_t> goal_cells_;
+  IterationReport report_;
+};
+
+/// Free cells (reachable, p > 0) from which no 8-neighbour is strictly lower in `values`
+/// (lower = closer to the goal): the cells where descent has nowhere to go. `values` is any
+/// representation of u (or -p) over the field's grid; goal cells and obstacles are skipped.
+template <typename T>
+int CountFlatCells(const PotentialField& field, const std::vector<T>& values) {
+  int flat = 0;
+  for (int y = 1; y < field.height() - 1; ++y) {
+    for (int x = 1; x < field.width() - 1; ++x) {
+      if (field.cell(x, y) != FieldCell::kFree || field.GoalProbability(x, y) <= 0.0) continue;
+      const T v = values[static_cast<std::size_t>(y) * field.width() + x];
+      bool lower = false;
+      for (int dy = -1; dy <= 1 && !lower; ++dy) {
+        for (int dx = -1; dx <= 1 && !lower; ++dx) {
+          if (dx == 0 && dy == 0) continue;
+          if (field.cell(x + dx, y + dy) == FieldCell::kObstacle) continue;
+          lower = values[static_cast<std::size_t>(y + dy) * field.width() + x + dx] < v;
+        }
+      }
+      flat += lower ? 0 : 1;
+    }
+  }
+  return flat;
+}
+
+}  // namespace spott_harmonic_planner

@@ -1,0 +1,213 @@
+#include "spott_harmonic_planner/local_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace spott_harmonic_planner {
+
+std::vector<std::string> ValidateParameters(const PlannerParameters& p) {
+  std::vector<std::string> v;
+  for (const auto& s : spott_map::ValidateParameters(p.window)) v.push_back("window: " + s);
+  for (const auto& s : ValidateFieldOptions(p.field)) v.push_back("solver: " + s);
+  for (const auto& s : ValidateSteeringParameters(p.steering)) v.push_back("steering: " + s);
+  if (p.sweeps_per_cycle < 1 || p.sweeps_per_cycle > 10000) {
+    v.push_back("sweeps_per_cycle must be in [1, 10000] (got " +
+                std::to_string(p.sweeps_per_cycle) + ")");
+  }
+  if (!(p.goal_tolerance_m > 0.0)) {
+    std::ostringstream s;
+    s << "goal_tolerance must be > 0 m (got " << p.goal_tolerance_m << ")";
+    v.push_back(s.str());
+  }
+  if (!(p.border_goal_half_width_m > 0.0)) {
+    std::ostringstream s;
+    s << "border_goal_half_width must be > 0 m (got " << p.border_goal_half_width_m << ")";
+    v.push_back(s.str());
+  }
+  return v;
+}
+
+std::optional<spott_map::Segment> ProjectGoalOntoWindow(const Vec2& robot, const Vec2& goal,
+                                                        const spott_map::Box& w,
+                                                        double half_width_m) {
+  if (w.Contains(goal) || !w.Contains(robot)) return std::nullopt;
+  const Vec2 d = goal - robot;
+  // Smallest t in (0, 1] at which robot + t d meets a side.
+  double t = std::numeric_limits<double>::infinity();
+  int side = -1;  // 0: x = min, 1: x = max, 2: y = min, 3: y = max
+  if (d.x() < 0) {
+    const double s = (w.min.x() - robot.x()) / d.x();
+    if (s < t) {
+      t = s;
+      side = 0;
+    }
+  }
+  if (d.x() > 0) {
+    const double s = (w.max.x() - robot.x()) / d.x();
+    if (s < t) {
+      t = s;
+      side = 1;
+    }
+  }
+  if (d.y() < 0) {
+    const double s = (w.min.y() - robot.y()) / d.y();
+    if (s < t) {
+      t = s;
+      side = 2;
+    }
+  }
+  if (d.y() > 0) {
+    const double s = (w.max.y() - robot.y()) / d.y();
+    if (s < t) {
+      t = s;
+      side = 3;
+    }
+  }
+  if (side < 0) return std::nullopt;
+  const Vec2 hit = robot + t * d;
+  if (side <= 1) {
+    const double x = side == 0 ? w.min.x() : w.max.x();
+    return spott_map::Segment{Vec2(x, std::max(w.min.y(), hit.y() - half_width_m)),
+                              Vec2(x, std::min(w.max.y(), hit.y() + half_width_m))};
+  }
+  const double y = side == 2 ? w.min.y() : w.max.y();
+  return spott_map::Segment{Vec2(std::max(w.min.x(), hit.x() - half_width_m), y),
+                            Vec2(std::min(w.max.x(), hit.x() + half_width_m), y)};
+}
+
+namespace {
+PlannerParameters Checked(const PlannerParameters& p) {
+  const auto v = ValidateParameters(p);
+  if (!v.empty()) {
+    std::string text = "invalid planner parameters:";
+    for (const auto& s : v) text += " " + s + ";";
+    throw std::invalid_argument(text);
+  }
+  return p;
+}
+}  // namespace
+
+LocalPlanner::LocalPlanner(const PlannerParameters& params)
+    : params_(Checked(params)), window_(params.window), field_(params.field) {}
+
+void LocalPlanner::SetMap(const spott_map::MapDatabase& db) {
+  db_ = db;
+  map_dirty_ = true;
+}
+
+void LocalPlanner::SetGoal(const Vec2& goal) {
+  goal_ = goal;
+  border_goal_.reset();
+  goal_dirty_ = true;
+}
+
+void LocalPlanner::SetBorderGoal(const spott_map::Segment& segment) {
+  border_goal_ = segment;
+  goal_dirty_ = true;
+}
+
+void LocalPlanner::ClearGoal() {
+  goal_.reset();
+  border_goal_.reset();
+  goal_dirty_ = true;
+}
+
+void LocalPlanner::CorrectPose(const spott_map::Pose2& estimate) { pose_ = estimate; }
+
+void LocalPlanner::Odometry(const spott_map::Pose2& odom) {
+  if (last_odom_) {
+    // The increment in the previous odometry pose's own frame, applied to the estimate.
+    const double c = std::cos(last_odom_->yaw), s = std::sin(last_odom_->yaw);
+    const double dx = odom.x - last_odom_->x, dy = odom.y - last_odom_->y;
+    const double fx = c * dx + s * dy, fy = -s * dx + c * dy;
+    const double ce = std::cos(pose_.yaw), se = std::sin(pose_.yaw);
+    pose_.x += ce * fx - se * fy;
+    pose_.y += se * fx + ce * fy;
+    pose_.yaw = WrapAngle(pose_.yaw + odom.yaw - last_odom_->yaw);
+  }
+  last_odom_ = odom;
+}
+
+void LocalPlanner::PlaceGoal() {
+  status_.problem.clear();
+  status_.has_goal = false;
+  if (!goal_) return;
+  const spott_map::Box b = window_.bounds();
+  // Inside the window's inner part (the border ring holds the high value).
+  const double r = window_.raster().resolution();
+  const spott_map::Box inner{b.min + Vec2(r, r), b.max - Vec2(r, r)};
+  bool ok;
+  if (inner.Contains(*goal_)) {
+    ok = field_.SetGoalPoint(*goal_);
+    if (!ok) status_.problem = "the goal lies in a padded obstacle";
+  } else {
+    std::optional<spott_map::Segment> seg = border_goal_;
+    if (!seg)
+      seg = ProjectGoalOntoWindow(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
+    ok = seg && field_.SetGoalSegment(*seg, 0.75 * r);
+    if (!ok) status_.problem = "the projected border goal is blocked";
+  }
+  if (ok) field_.ColdStart();
+  status_.has_goal = ok;
+}
+
+PlannerStatus LocalPlanner::Cycle() {
+  status_.recentred = false;
+  if (!window_cut_ || window_.NeedsRecentre(pose_.Position())) {  // (f) then step 1, 2
+    window_.Recentre(db_, pose_.Position());
+    field_.SetOccupancy(window_.raster());
+    window_cut_ = true;
+    map_dirty_ = false;
+    status_.recentred = true;
+    goal_dirty_ = true;
+  } else if (map_dirty_) {  // (c): same window, warm start
+    window_.Refresh(db_);
+    field_.SetOccupancy(window_.raster());
+    map_dirty_ = false;
+    if (goal_ && !field_.HasGoal()) goal_dirty_ = true;
+  }
+  if (goal_dirty_) {
+    PlaceGoal();
+    goal_dirty_ = false;
+  }
+  if (field_.HasGoal() && status_.has_goal) {  // (a)
+    status_.iteration = field_.Iterate(params_.sweeps_per_cycle);
+  }
+  status_.goal_on_border = field_.goal_on_border();
+  return status_;
+}
+
+SteeringCommand LocalPlanner::Steer(SpeedMode mode, std::optional<double> bias) const {
+  if (!status_.has_goal) {
+    SteeringCommand cmd;
+    cmd.reason = goal_ ? status_.problem : "no goal";
+    return cmd;
+  }
+  return ComputeSteering(
+      field_, pose_, mode, bias,
+      field_.goal_on_border() ? std::numeric_limits<double>::infinity() : DistanceToGoal(),
+      params_.steering);
+}
+
+PotentialField::Path LocalPlanner::PredictedPath() const {
+  if (!status_.has_goal) return {};
+  return field_.DescendPath(pose_.Position());
+}
+
+double LocalPlanner::DistanceToGoal() const {
+  if (!goal_) return 0.0;
+  const auto path = PredictedPath();
+  if (!path.reached_goal) return (*goal_ - pose_.Position()).norm();
+  double d = path.length_m;
+  if (!path.points.empty()) d += (*goal_ - path.points.back()).norm();
+  return d;
+}
+
+bool LocalPlanner::GoalReached() const {
+  return goal_ && (*goal_ - pose_.Position()).norm() <= params_.goal_tolerance_m;
+}
+
+}  // namespace spott_harmonic_planner

@@ -1,0 +1,84 @@
+#include "spott_harmonic_planner/steering.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace spott_harmonic_planner {
+
+namespace {
+void Check(bool ok, const std::string& name, double value, const std::string& range,
+           std::vector<std::string>& v) {
+  if (ok) return;
+  std::ostringstream s;
+  s << name << " must be " << range << " (got " << value << ")";
+  v.push_back(s.str());
+}
+}  // namespace
+
+std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p) {
+  std::vector<std::string> v;
+  Check(p.max_linear_mps > 0.0 && p.max_linear_mps <= 5.0, "max_linear", p.max_linear_mps,
+        "in (0, 5] m/s", v);
+  Check(p.max_angular_rps > 0.0 && p.max_angular_rps <= 10.0, "max_angular", p.max_angular_rps,
+        "in (0, 10] rad/s", v);
+  for (const auto& [name, f] :
+       {std::pair<const char*, double>{"slowly_fraction", p.slowly_fraction},
+        {"normal_fraction", p.normal_fraction},
+        {"quickly_fraction", p.quickly_fraction}}) {
+    Check(f > 0.0 && f <= 1.0, name, f, "in (0, 1]", v);
+  }
+  Check(p.heading_gain > 0.0 && p.heading_gain <= 100.0, "heading_gain", p.heading_gain,
+        "in (0, 100] 1/s", v);
+  Check(p.max_bias_deviation_rad >= 0.0 && p.max_bias_deviation_rad < M_PI / 2,
+        "max_bias_deviation", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
+  Check(p.slow_clearance_m > 0.0, "slow_clearance", p.slow_clearance_m, "> 0 m", v);
+  Check(p.goal_slowdown_m > 0.0, "goal_slowdown", p.goal_slowdown_m, "> 0 m", v);
+  return v;
+}
+
+double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation) {
+  const double g = std::atan2(descent.y(), descent.x());
+  if (!bias || !std::isfinite(*bias)) return g;
+  const double off = WrapAngle(*bias - g);
+  return WrapAngle(g + std::clamp(off, -max_deviation, max_deviation));
+}
+
+SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Pose2& pose,
+                                SpeedMode mode, std::optional<double> direction_bias,
+                                double distance_to_goal_m, const SteeringParameters& params) {
+  SteeringCommand cmd;
+  const Vec2 at(pose.x, pose.y);
+  cmd.clearance = field.Clearance(at);
+  const auto descent = field.DescentDirection(at);
+  if (!descent) {
+    const auto c = field.CellOf(at);
+    if (!c) {
+      cmd.reason = "the robot is outside the planning window";
+    } else if (field.cell(c->first, c->second) == FieldCell::kObstacle) {
+      cmd.reason = "the robot is inside a padded obstacle";
+    } else {
+      cmd.reason = "the goal cannot be reached from the robot's position";
+    }
+    return cmd;
+  }
+  cmd.valid = true;
+  cmd.descent = *descent;
+  cmd.heading = BiasedHeading(*descent, direction_bias, params.max_bias_deviation_rad);
+  const double error = WrapAngle(cmd.heading - pose.yaw);
+  cmd.angular =
+      std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);
+  const double fraction = mode == SpeedMode::kSlowly   ? params.slowly_fraction
+                          : mode == SpeedMode::kNormal ? params.normal_fraction
+                                                       : params.quickly_fraction;
+  double v = fraction * params.max_linear_mps;
+  v *= std::max(0.0, std::cos(error));  // no forward motion while facing more than 90 deg off
+  v *= std::clamp(cmd.clearance / params.slow_clearance_m, 0.1, 1.0);
+  v *= std::clamp(distance_to_goal_m / params.goal_slowdown_m, 0.0, 1.0);
+  cmd.linear = std::clamp(v, 0.0, params.max_linear_mps);
+  return cmd;
+}
+
+}  // namespace spott_harmonic_planner

@@ -1,0 +1,162 @@
+#include "spott_harmonic_planner/local_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace spott_harmonic_planner {
+namespace {
+
+using spott_map::Pose2;
+
+PlannerParameters SmallWindow() {
+  PlannerParameters p;
+  p.window.window_size_m = 7.0;  // the paper's 35 x 35 at 0.2 m
+  p.window.resolution_m = 0.2;
+  p.window.recentre_margin_m = 1.0;
+  p.sweeps_per_cycle = 50;
+  return p;
+}
+
+spott_map::MapDatabase MapWithBox(double x0, double y0, double x1, double y1) {
+  spott_map::MapDatabase db;
+  spott_map::MapFeature box;
+  box.id = "box";
+  box.label = "wall";
+  box.type = spott_map::FeatureType::kRectangle;
+  box.source = spott_map::FeatureSource::kCad;
+  box.pose = Pose2{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0};
+  box.size_x = x1 - x0;
+  box.size_y = y1 - y0;
+  EXPECT_TRUE(db.AddFeature(box));
+  return db;
+}
+
+TEST(Steering, DirectionBiasIsFollowedWithinDescentAndClampedBeyond) {
+  const Vec2 descent(1.0, 0.0);
+  EXPECT_NEAR(BiasedHeading(descent, std::nullopt, 1.2), 0.0, 1e-12);
+  EXPECT_NEAR(BiasedHeading(descent, 0.5, 1.2), 0.5, 1e-12);    // allowed: still descends
+  EXPECT_NEAR(BiasedHeading(descent, -2.5, 1.2), -1.2, 1e-12);  // as close as possible to it
+  EXPECT_NEAR(BiasedHeading(descent, std::nan(""), 1.2), 0.0, 1e-12);
+}
+
+TEST(LocalPlanner, SteersStraightAtGoalInOpenSpaceWithSpeedByMode) {
+  LocalPlanner planner(SmallWindow());
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(2.0, 0.0));
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  ASSERT_TRUE(planner.status().has_goal);
+  const SteeringCommand slow = planner.Steer(SpeedMode::kSlowly, std::nullopt);
+  const SteeringCommand quick = planner.Steer(SpeedMode::kQuickly, std::nullopt);
+  ASSERT_TRUE(slow.valid);
+  EXPECT_NEAR(slow.heading, 0.0, 0.05);
+  EXPECT_NEAR(slow.angular, 0.0, 0.1);
+  // 0.3 and 1.0 of 0.6 m/s; far from walls and goal, facing the descent.
+  EXPECT_NEAR(slow.linear, 0.18, 0.01);
+  EXPECT_NEAR(quick.linear, 0.6, 0.02);
+  EXPECT_NEAR(planner.DistanceToGoal(), 2.0, 0.15);
+}
+
+TEST(LocalPlanner, PathGoesAroundObstacleBetweenRobotAndGoal) {
+  LocalPlanner planner(SmallWindow());
+  planner.SetMap(MapWithBox(0.8, -0.6, 1.2, 0.6));
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(2.4, 0.1));
+  for (int i = 0; i < 20; ++i) planner.Cycle();
+  ASSERT_TRUE(planner.status().iteration.converged);
+  const auto path = planner.PredictedPath();
+  ASSERT_TRUE(path.reached_goal);
+  double max_abs_y = 0.0;
+  for (const Vec2& p : path.points) max_abs_y = std::max(max_abs_y, std::abs(p.y()));
+  // The box reaches |y| = 0.6 and is padded by 0.325 m: the path must pass beyond 0.9 m.
+  EXPECT_GT(max_abs_y, 0.9);
+  const SteeringCommand cmd = planner.Steer(SpeedMode::kNormal, std::nullopt);
+  ASSERT_TRUE(cmd.valid);
+  EXPECT_GT(std::abs(cmd.heading), 0.3);  // not straight into the box
+}
+
+TEST(LocalPlanner, PositionCorrectionInMidRunIsTakenUp) {
+  LocalPlanner planner(SmallWindow());
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.Odometry({10.0, 5.0, M_PI / 2});  // odom frame differs from map
+  planner.SetGoal(Vec2(2.0, 0.0));
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  // Dead reckoning: 0.5 m forward in the odom pose's own frame (odom +y) is map +x.
+  planner.Odometry({10.0, 5.5, M_PI / 2});
+  EXPECT_NEAR(planner.pose().x, 0.5, 1e-9);
+  EXPECT_NEAR(planner.pose().y, 0.0, 1e-9);
+  // Within half a cell (0.1 m) of the goal's cell centre seen from 1.5 m.
+  EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.0, 0.1);
+  // Localization says the robot is really 1 m to the left: steering now points back down.
+  planner.CorrectPose({0.5, 1.0, 0.0});
+  planner.Cycle();
+  const double heading = planner.Steer(SpeedMode::kNormal, std::nullopt).heading;
+  EXPECT_NEAR(heading, std::atan2(-1.0, 1.5), 0.15);
+  // Dead reckoning continues from the corrected pose.
+  planner.Odometry({10.0, 5.7, M_PI / 2});
+  EXPECT_NEAR(planner.pose().x, 0.7, 1e-9);
+  EXPECT_NEAR(planner.pose().y, 1.0, 1e-9);
+}
+
+TEST(LocalPlanner, GoalOutsideWindowIsProjectedAndWindowRecentresNearBorder) {
+  LocalPlanner planner(SmallWindow());
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(20.0, 0.0));
+  planner.Cycle();
+  EXPECT_TRUE(planner.status().has_goal);
+  EXPECT_TRUE(planner.status().goal_on_border);
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.0, 0.1);
+  const Vec2 centre_before = planner.window().centre();
+  planner.CorrectPose({2.8, 0.0, 0.0});  // within 1 m of the border at x = 3.5
+  const PlannerStatus s = planner.Cycle();
+  EXPECT_TRUE(s.recentred);
+  EXPECT_NEAR(planner.window().centre().x(), 2.8, 0.11);
+  EXPECT_GT(planner.window().centre().x(), centre_before.x());
+  EXPECT_TRUE(s.goal_on_border);
+  planner.CorrectPose({18.0, 0.0, 0.0});
+  EXPECT_TRUE(planner.Cycle().recentred);
+  EXPECT_FALSE(planner.status().goal_on_border);  // now inside: a point goal
+}
+
+TEST(LocalPlanner, ProjectionFollowsLineFromRobotToGoal) {
+  const spott_map::Box w{Vec2(-3.5, -3.5), Vec2(3.5, 3.5)};
+  const auto s = ProjectGoalOntoWindow(Vec2(0, 0), Vec2(10, 5), w, 0.5);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->a.x(), 3.5, 1e-12);
+  EXPECT_NEAR(s->a.y(), 1.25, 1e-12);  // the line meets x = 3.5 at y = 1.75
+  EXPECT_NEAR(s->b.y(), 2.25, 1e-12);
+  EXPECT_FALSE(ProjectGoalOntoWindow(Vec2(0, 0), Vec2(1, 1), w, 0.5).has_value());
+}
+
+TEST(LocalPlanner, GoalInsideObstacleIsReportedNotPlanned) {
+  LocalPlanner planner(SmallWindow());
+  planner.SetMap(MapWithBox(1.0, -0.5, 2.0, 0.5));
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(1.5, 0.0));
+  planner.Cycle();
+  EXPECT_FALSE(planner.status().has_goal);
+  EXPECT_NE(planner.status().problem.find("obstacle"), std::string::npos);
+  const SteeringCommand cmd = planner.Steer(SpeedMode::kNormal, std::nullopt);
+  EXPECT_FALSE(cmd.valid);
+  EXPECT_EQ(cmd.linear, 0.0);
+}
+
+TEST(LocalPlanner, BadParametersAreRefusedByName) {
+  PlannerParameters p;
+  p.sweeps_per_cycle = 0;
+  p.window.resolution_m = -1.0;
+  p.field.solver.omega = 3.0;
+  p.steering.max_linear_mps = 0.0;
+  const auto v = ValidateParameters(p);
+  std::string all;
+  for (const auto& s : v) all += s + "\n";
+  EXPECT_NE(all.find("sweeps_per_cycle"), std::string::npos) << all;
+  EXPECT_NE(all.find("resolution_m"), std::string::npos) << all;
+  EXPECT_NE(all.find("omega"), std::string::npos) << all;
+  EXPECT_NE(all.find("max_linear"), std::string::npos) << all;
+  EXPECT_THROW(LocalPlanner{p}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace spott_harmonic_planner
