@@ -1,0 +1,180 @@
+#include "markov_localization/map_model.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "spott_map/local_map.h"
+#include "spott_map/map_database.h"
+#include "spott_map/occupancy_raster.h"
+
+namespace markov_localization {
+
+namespace {
+std::string Join(const std::vector<std::string>& errors) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
+  return out.str();
+}
+}  // namespace
+
+std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
+  std::vector<std::string> errors;
+  if (!(p.resolution_m > 0.0 && p.resolution_m <= 2.0))
+    errors.push_back("resolution_m must be in (0, 2] m");
+  if (!(p.state_clearance_m >= 0.0 && p.state_clearance_m <= 2.0))
+    errors.push_back("state_clearance_m must be in [0, 2] m");
+  if (!(p.door_thickness_m > 0.0 && p.door_thickness_m <= 1.0))
+    errors.push_back("door_thickness_m must be in (0, 1] m");
+  return errors;
+}
+
+MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParameters& params) {
+  const auto errors = ValidateParameters(params);
+  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  const spott_map::Box bounds = world.Bounds().Inflated(2.0 * params.resolution_m);
+  const Vec2 size = bounds.max - bounds.min;
+  if (!(size.x() > 0.0 && size.y() > 0.0))
+    throw std::invalid_argument("world '" + world.name + "' has no extent (no walls or rooms)");
+  const int width = static_cast<int>(std::ceil(size.x() / params.resolution_m));
+  const int height = static_cast<int>(std::ceil(size.y() / params.resolution_m));
+  if (static_cast<double>(width) * height > 4.0e7)
+    throw std::invalid_argument("world '" + world.name + "' is too large for resolution_m");
+  spott_map::OccupancyRaster raster(bounds.min, width, height, params.resolution_m);
+  const auto db = spott_map::MapDatabase::FromWorld(world);
+  spott_map::RasterizeDatabase(db, 0.0, params.door_thickness_m, raster);
+
+  MapModel map;
+  map.origin_ = bounds.min;
+  map.width_ = width;
+  map.height_ = height;
+  map.resolution_ = params.resolution_m;
+  map.occupied_.assign(static_cast<std::size_t>(width) * height, 0);
+  for (int iy = 0; iy < height; ++iy)
+    for (int ix = 0; ix < width; ++ix)
+      map.occupied_[map.Index(ix, iy)] = raster.at(ix, iy) == spott_map::Cell::kObstacle;
+  // Outside every room is not a state either (the space beyond the outer walls).
+  std::vector<std::uint8_t> outside(map.occupied_.size(), 0);
+  for (int iy = 0; iy < height; ++iy)
+    for (int ix = 0; ix < width; ++ix)
+      outside[map.Index(ix, iy)] = world.RoomContaining(map.CellCentre(ix, iy)) == nullptr;
+  map.ComputeStates(params.state_clearance_m, outside);
+  if (map.num_state_cells_ == 0)
+    throw std::invalid_argument("world '" + world.name + "' leaves no free cell for the robot");
+  return map;
+}
+
+MapModel MapModel::FromOccupancy(const Vec2& origin, int width, int height, double resolution_m,
+                                 const std::vector<std::int8_t>& data, int occupied_threshold,
+                                 double state_clearance_m) {
+  std::vector<std::string> errors;
+  if (width <= 0 || height <= 0) errors.push_back("width and height must be positive");
+  if (!(resolution_m > 0.0 && resolution_m <= 2.0))
+    errors.push_back("resolution_m must be in (0, 2] m");
+  if (width > 0 && height > 0 &&
+      data.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    errors.push_back("data has " + std::to_string(data.size()) + " cells, expected width*height");
+  if (occupied_threshold < 1 || occupied_threshold > 100)
+    errors.push_back("occupied_threshold must be in [1, 100]");
+  if (!(state_clearance_m >= 0.0 && state_clearance_m <= 2.0))
+    errors.push_back("state_clearance_m must be in [0, 2] m");
+  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  MapModel map;
+  map.origin_ = origin;
+  map.width_ = width;
+  map.height_ = height;
+  map.resolution_ = resolution_m;
+  map.occupied_.assign(data.size(), 0);
+  std::vector<std::uint8_t> unknown(data.size(), 0);
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if (data[i] < 0 || data[i] > 100)
+      unknown[i] = 1;
+    else
+      map.occupied_[i] = data[i] >= occupied_threshold;
+  }
+  map.ComputeStates(state_clearance_m, unknown);
+  if (map.num_state_cells_ == 0)
+    throw std::invalid_argument("occupancy grid leaves no free cell for the robot");
+  return map;
+}
+
+void MapModel::ComputeStates(double clearance_m, const std::vector<std::uint8_t>& excluded) {
+  state_.assign(occupied_.size(), 1);
+  const int r = static_cast<int>(std::ceil(clearance_m / resolution_ - 1e-9));
+  const double r2 = (clearance_m / resolution_) * (clearance_m / resolution_);
+  for (int iy = 0; iy < height_; ++iy) {
+    for (int ix = 0; ix < width_; ++ix) {
+      const std::size_t i = Index(ix, iy);
+      if (excluded[i]) state_[i] = 0;
+      if (!occupied_[i]) continue;
+      state_[i] = 0;
+      // Cells whose centre lies within the clearance of this obstacle cell's square.
+      for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+          const double ex = std::max(0.0, std::abs(dx) - 0.5);
+          const double ey = std::max(0.0, std::abs(dy) - 0.5);
+          if (ex * ex + ey * ey >= r2 && !(dx == 0 && dy == 0)) continue;
+          if (Contains(ix + dx, iy + dy)) state_[Index(ix + dx, iy + dy)] = 0;
+        }
+      }
+    }
+  }
+  // The border row never holds a state: beams and motion need a neighbour on every side.
+  for (int ix = 0; ix < width_; ++ix) state_[Index(ix, 0)] = state_[Index(ix, height_ - 1)] = 0;
+  for (int iy = 0; iy < height_; ++iy) state_[Index(0, iy)] = state_[Index(width_ - 1, iy)] = 0;
+  num_state_cells_ = 0;
+  for (auto s : state_) num_state_cells_ += s;
+}
+
+Vec2 MapModel::CellCentre(int ix, int iy) const {
+  return origin_ + Vec2((ix + 0.5) * resolution_, (iy + 0.5) * resolution_);
+}
+
+std::optional<std::pair<int, int>> MapModel::CellOf(const Vec2& p) const {
+  const double fx = (p.x() - origin_.x()) / resolution_;
+  const double fy = (p.y() - origin_.y()) / resolution_;
+  if (!(fx >= 0.0 && fy >= 0.0)) return std::nullopt;
+  const int ix = static_cast<int>(fx);
+  const int iy = static_cast<int>(fy);
+  if (!Contains(ix, iy)) return std::nullopt;
+  return std::make_pair(ix, iy);
+}
+
+bool MapModel::IsStateAt(const Vec2& p) const {
+  const auto cell = CellOf(p);
+  return cell && IsState(cell->first, cell->second);
+}
+
+double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m) const {
+  // Amanatides-Woo traversal of the cells the beam crosses.
+  const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
+  double fx = (from.x() - origin_.x()) / resolution_;
+  double fy = (from.y() - origin_.y()) / resolution_;
+  int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+  if (!Contains(ix, iy)) return max_range_m;
+  if (Occupied(ix, iy)) return 0.0;
+  const double inf = std::numeric_limits<double>::infinity();
+  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const double t_delta_x = dx != 0.0 ? std::abs(1.0 / dx) : inf;
+  const double t_delta_y = dy != 0.0 ? std::abs(1.0 / dy) : inf;
+  double t_max_x = dx > 0 ? (ix + 1 - fx) * t_delta_x : (dx < 0 ? (fx - ix) * t_delta_x : inf);
+  double t_max_y = dy > 0 ? (iy + 1 - fy) * t_delta_y : (dy < 0 ? (fy - iy) * t_delta_y : inf);
+  const double max_cells = max_range_m / resolution_;
+  while (true) {
+    double t;
+    if (t_max_x < t_max_y) {
+      t = t_max_x;
+      t_max_x += t_delta_x;
+      ix += step_x;
+    } else {
+      t = t_max_y;
+      t_max_y += t_delta_y;
+      iy += step_y;
+    }
+    if (t >= max_cells || !Contains(ix, iy)) return max_range_m;
+    if (Occupied(ix, iy)) return t * resolution_;
+  }
+}
+
+}  // namespace markov_localization
