@@ -1,5 +1,6 @@
 #include "markov_localization/map_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -27,6 +28,8 @@ std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
     errors.push_back("state_clearance_m must be in [0, 2] m");
   if (!(p.door_thickness_m > 0.0 && p.door_thickness_m <= 1.0))
     errors.push_back("door_thickness_m must be in (0, 1] m");
+  if (p.ray_cast_subdivision < 1 || p.ray_cast_subdivision > 8)
+    errors.push_back("ray_cast_subdivision must be in [1, 8]");
   return errors;
 }
 
@@ -41,7 +44,9 @@ MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParame
   const int height = static_cast<int>(std::ceil(size.y() / params.resolution_m));
   if (static_cast<double>(width) * height > 4.0e7)
     throw std::invalid_argument("world '" + world.name + "' is too large for resolution_m");
-  spott_map::OccupancyRaster raster(bounds.min, width, height, params.resolution_m);
+  const int sub = params.ray_cast_subdivision;
+  spott_map::OccupancyRaster raster(bounds.min, width * sub, height * sub,
+                                    params.resolution_m / sub);
   const auto db = spott_map::MapDatabase::FromWorld(world);
   spott_map::RasterizeDatabase(db, 0.0, params.door_thickness_m, raster);
 
@@ -50,10 +55,18 @@ MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParame
   map.width_ = width;
   map.height_ = height;
   map.resolution_ = params.resolution_m;
+  map.subdivision_ = sub;
+  map.fine_width_ = width * sub;
+  map.fine_height_ = height * sub;
+  map.fine_occupied_.assign(static_cast<std::size_t>(map.fine_width_) * map.fine_height_, 0);
   map.occupied_.assign(static_cast<std::size_t>(width) * height, 0);
-  for (int iy = 0; iy < height; ++iy)
-    for (int ix = 0; ix < width; ++ix)
-      map.occupied_[map.Index(ix, iy)] = raster.at(ix, iy) == spott_map::Cell::kObstacle;
+  for (int fy = 0; fy < map.fine_height_; ++fy) {
+    for (int fx = 0; fx < map.fine_width_; ++fx) {
+      if (raster.at(fx, fy) != spott_map::Cell::kObstacle) continue;
+      map.fine_occupied_[static_cast<std::size_t>(fy) * map.fine_width_ + fx] = 1;
+      map.occupied_[map.Index(fx / sub, fy / sub)] = 1;
+    }
+  }
   // Outside every room is not a state either (the space beyond the outer walls).
   std::vector<std::uint8_t> outside(map.occupied_.size(), 0);
   for (int iy = 0; iy < height; ++iy)
@@ -93,6 +106,10 @@ MapModel MapModel::FromOccupancy(const Vec2& origin, int width, int height, doub
     else
       map.occupied_[i] = data[i] >= occupied_threshold;
   }
+  map.subdivision_ = 1;
+  map.fine_width_ = width;
+  map.fine_height_ = height;
+  map.fine_occupied_ = map.occupied_;
   map.ComputeStates(state_clearance_m, unknown);
   if (map.num_state_cells_ == 0)
     throw std::invalid_argument("occupancy grid leaves no free cell for the robot");
@@ -101,23 +118,34 @@ MapModel MapModel::FromOccupancy(const Vec2& origin, int width, int height, doub
 
 void MapModel::ComputeStates(double clearance_m, const std::vector<std::uint8_t>& excluded) {
   state_.assign(occupied_.size(), 1);
-  const int r = static_cast<int>(std::ceil(clearance_m / resolution_ - 1e-9));
-  const double r2 = (clearance_m / resolution_) * (clearance_m / resolution_);
+  // A cell is a state when its centre is at least the clearance away from every obstacle
+  // square of the fine raster (and, with clearance 0, the centre itself is free).
+  const double fres = resolution_ / subdivision_;
+  const int r = static_cast<int>(std::ceil(clearance_m / fres)) + 1;
   for (int iy = 0; iy < height_; ++iy) {
     for (int ix = 0; ix < width_; ++ix) {
       const std::size_t i = Index(ix, iy);
-      if (excluded[i]) state_[i] = 0;
-      if (!occupied_[i]) continue;
-      state_[i] = 0;
-      // Cells whose centre lies within the clearance of this obstacle cell's square.
-      for (int dy = -r; dy <= r; ++dy) {
-        for (int dx = -r; dx <= r; ++dx) {
-          const double ex = std::max(0.0, std::abs(dx) - 0.5);
-          const double ey = std::max(0.0, std::abs(dy) - 0.5);
-          if (ex * ex + ey * ey >= r2 && !(dx == 0 && dy == 0)) continue;
-          if (Contains(ix + dx, iy + dy)) state_[Index(ix + dx, iy + dy)] = 0;
+      if (excluded[i]) {
+        state_[i] = 0;
+        continue;
+      }
+      // Centre in fine-cell units.
+      const double cx = (ix + 0.5) * subdivision_, cy = (iy + 0.5) * subdivision_;
+      const int fcx = static_cast<int>(cx), fcy = static_cast<int>(cy);
+      bool blocked = false;
+      for (int fy = fcy - r; fy <= fcy + r && !blocked; ++fy) {
+        if (fy < 0 || fy >= fine_height_) continue;
+        for (int fx = fcx - r; fx <= fcx + r; ++fx) {
+          if (fx < 0 || fx >= fine_width_ || !FineOccupied(fx, fy)) continue;
+          const double ex = std::max({0.0, fx - cx, cx - (fx + 1)}) * fres;
+          const double ey = std::max({0.0, fy - cy, cy - (fy + 1)}) * fres;
+          if (ex * ex + ey * ey < clearance_m * clearance_m || (ex == 0.0 && ey == 0.0)) {
+            blocked = true;
+            break;
+          }
         }
       }
+      if (blocked) state_[i] = 0;
     }
   }
   // The border row never holds a state: beams and motion need a neighbour on every side.
@@ -149,18 +177,22 @@ bool MapModel::IsStateAt(const Vec2& p) const {
 double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m) const {
   // Amanatides-Woo traversal of the cells the beam crosses.
   const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
-  double fx = (from.x() - origin_.x()) / resolution_;
-  double fy = (from.y() - origin_.y()) / resolution_;
+  const double fres = resolution_ / subdivision_;
+  double fx = (from.x() - origin_.x()) / fres;
+  double fy = (from.y() - origin_.y()) / fres;
   int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
-  if (!Contains(ix, iy)) return max_range_m;
-  if (Occupied(ix, iy)) return 0.0;
+  auto inside = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < fine_width_ && y < fine_height_;
+  };
+  if (!inside(ix, iy)) return max_range_m;
+  if (FineOccupied(ix, iy)) return 0.0;
   const double inf = std::numeric_limits<double>::infinity();
   const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
   const double t_delta_x = dx != 0.0 ? std::abs(1.0 / dx) : inf;
   const double t_delta_y = dy != 0.0 ? std::abs(1.0 / dy) : inf;
   double t_max_x = dx > 0 ? (ix + 1 - fx) * t_delta_x : (dx < 0 ? (fx - ix) * t_delta_x : inf);
   double t_max_y = dy > 0 ? (iy + 1 - fy) * t_delta_y : (dy < 0 ? (fy - iy) * t_delta_y : inf);
-  const double max_cells = max_range_m / resolution_;
+  const double max_cells = max_range_m / fres;
   while (true) {
     double t;
     if (t_max_x < t_max_y) {
@@ -172,8 +204,8 @@ double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m)
       t_max_y += t_delta_y;
       iy += step_y;
     }
-    if (t >= max_cells || !Contains(ix, iy)) return max_range_m;
-    if (Occupied(ix, iy)) return t * resolution_;
+    if (t >= max_cells || !inside(ix, iy)) return max_range_m;
+    if (FineOccupied(ix, iy)) return t * fres;
   }
 }
 

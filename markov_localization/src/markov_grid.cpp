@@ -19,6 +19,8 @@ std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   }
   if (!(p.threshold_fraction > 0.0 && p.threshold_fraction < 1.0))
     errors.push_back("threshold_fraction must be in (0, 1)");
+  if (!(p.floor_fraction >= 0.0 && p.floor_fraction < p.threshold_fraction))
+    errors.push_back("floor_fraction must be in [0, threshold_fraction)");
   const auto& m = p.motion;
   if (!(m.sigma_xy_per_m >= 0.0)) errors.push_back("motion.sigma_xy_per_m must be >= 0");
   if (!(m.sigma_xy_per_rad >= 0.0)) errors.push_back("motion.sigma_xy_per_rad must be >= 0");
@@ -49,8 +51,10 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
     throw std::invalid_argument(out.str());
   }
   threshold_ = params.threshold_fraction / static_cast<double>(NumStates());
+  floor_ = static_cast<float>(params.floor_fraction / static_cast<double>(NumStates()));
   belief_.assign(LayerSize() * nt_, 0.0f);
   scratch_.assign(LayerSize(), 0.0f);
+  evaluated_.assign(belief_.size(), 0);
   active_.assign(nt_, 1);
   alpha_.assign(nt_, 1.0);
   stored_sum_.assign(nt_, 0.0);
@@ -241,6 +245,20 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
   if (var_bins > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_bins / 0.5));
     const float w = static_cast<float>(var_bins / passes / 2.0);
+    // A part that would receive cells above theta from an active neighbour is no longer
+    // "all below theta": it rejoins the update (with its stored movement) before the mass
+    // arrives, so that the sensor update sees it.
+    if (params_.selective_update) {
+      std::vector<float> layer_max(nt_, 0.0f);
+      for (int j = 0; j < nt_; ++j)
+        if (active_[j]) layer_max[j] = *std::max_element(LayerData(j), LayerData(j) + LayerSize());
+      const double inflow = std::min(1.0, var_bins / 2.0);
+      for (int q = 0; q < nt_; ++q) {
+        if (active_[q]) continue;
+        const double m = std::max(layer_max[(q + nt_ - 1) % nt_], layer_max[(q + 1) % nt_]);
+        if (inflow * m > threshold_) WakeLayer(q);
+      }
+    }
     std::vector<std::vector<float>> old(nt_);
     for (int p = 0; p < passes; ++p) {
       for (int j = 0; j < nt_; ++j) {
@@ -259,6 +277,7 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
             for (std::size_t c = 0; c < LayerSize(); ++c) data[c] += w * old[q][c];
           } else {
             float* dst = LayerData(q);
+            if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
             const float scale = static_cast<float>(w / alpha_[q]);
             double added = 0.0;
             for (std::size_t c = 0; c < LayerSize(); ++c) {
@@ -292,6 +311,15 @@ void MarkovGrid::Normalize() {
   }
 }
 
+void MarkovGrid::MaterializeLayer(int j) {
+  // Stored values times alpha_pi are the probabilities; write them out (tiny ones become 0).
+  float* data = LayerData(j);
+  for (std::size_t c = 0; c < LayerSize(); ++c)
+    data[c] = static_cast<float>(static_cast<double>(data[c]) * alpha_[j]);
+  alpha_[j] = 1.0;
+  stored_sum_[j] = LayerSum(j);
+}
+
 void MarkovGrid::WakeLayer(int j) {
   float* data = LayerData(j);
   const float a = static_cast<float>(alpha_[j]);
@@ -310,54 +338,77 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
                                 " readings for a sensor model of " + std::to_string(nb) + " beams");
   SensorUpdateStats stats;
   const int bins = sensor_.num_bins();
-  // Per beam, the column of ratios P(z_b | e) / P~(z_b) for the reading's bin z_b.
+  // Per beam, the column of ratios P(z_b | e) / P~(z_b) for the reading's bin z_b, divided by
+  // its largest entry so that the product over 24 beams cannot overflow a float; the common
+  // factor `unlikely_factor` (prod_b 1 / max_e ratio) is what the cells left out by eq. (4)
+  // are multiplied by instead of 1, so the normalized result is eq. (4) exactly.
   std::vector<float> columns(static_cast<std::size_t>(nb) * bins);
+  double log_unlikely_factor = 0.0;
   for (int b = 0; b < nb; ++b) {
     const int z = sensor_.RangeBin(ranges_m[b]);
-    for (int e = 0; e < bins; ++e) columns[b * bins + e] = sensor_.Ratio(e, z);
+    float mx = 0.0f;
+    for (int e = 0; e < bins; ++e) mx = std::max(mx, sensor_.Ratio(e, z));
+    for (int e = 0; e < bins; ++e) columns[b * bins + e] = sensor_.Ratio(e, z) / mx;
+    log_unlikely_factor -= std::log(static_cast<double>(mx));
   }
+  const double unlikely_factor = std::exp(log_unlikely_factor);
   const float theta = params_.selective_update ? static_cast<float>(threshold_) : 0.0f;
   std::vector<const std::uint8_t*> rows(nb);
-  double total = 0.0;
+  double likely_total = 0.0, unlikely_total = 0.0;
   for (int j = 0; j < nt_; ++j) {
     if (!active_[j]) {
-      total += stored_sum_[j] * alpha_[j];
+      unlikely_total += stored_sum_[j] * alpha_[j];
       continue;
     }
     ++stats.active_parts;
     const int k = HeadingOfLayer(j);
     for (int b = 0; b < nb; ++b) rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
     float* data = LayerData(j);
-    double sum = 0.0;
+    std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+    double likely = 0.0, unlikely = 0.0;
     std::size_t evaluated = 0;
     for (std::size_t c = 0; c < LayerSize(); ++c) {
       const float p = data[c];
       // Eq. (4): cells at or below theta keep P(l) (their factor P~(s)/P~(s) = 1).
       if (p <= theta) {
-        sum += p;
+        unlikely += p;
+        flags[c] = 0;
         continue;
       }
+      flags[c] = 1;
       float l = 1.0f;
       for (int b = 0; b < nb; ++b) l *= columns[b * bins + rows[b][c]];
       const float v = p * l;
       data[c] = v;
-      sum += v;
+      likely += v;
       ++evaluated;
     }
     stats.states_evaluated += evaluated;
-    total += sum;
+    likely_total += likely;
+    unlikely_total += unlikely;
   }
+  // total in the scale of the normalized columns; alpha of eq. (4) is unlikely_factor / total.
+  const double total = likely_total + unlikely_factor * unlikely_total;
   if (!(total > 0.0) || !std::isfinite(total)) {
     SetUniform();
     return stats;
   }
-  const double alpha = 1.0 / total;
+  const double alpha = unlikely_factor / total;
   stats.normalizer = alpha;
-  const float a = static_cast<float>(alpha);
+  const float a_likely = static_cast<float>(1.0 / total);
+  const float a_unlikely = static_cast<float>(alpha);
+  const auto& mask = map_.state_mask();
   for (int j = 0; j < nt_; ++j) {
     if (active_[j]) {
       float* data = LayerData(j);
-      for (std::size_t c = 0; c < LayerSize(); ++c) data[c] *= a;
+      const std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+      for (std::size_t c = 0; c < LayerSize(); ++c) {
+        if (!mask[c]) continue;
+        // Which factor a cell gets depends on whether it was updated; its value before was
+        // <= theta exactly when it was left out. A floor keeps every state recoverable.
+        const bool updated = flags[c] != 0;
+        data[c] = std::max(floor_, data[c] * (updated ? a_likely : a_unlikely));
+      }
     } else {
       alpha_[j] *= alpha;
       if (alpha_[j] > 1.0) {  // the rest of the belief lost against this part: wake it.

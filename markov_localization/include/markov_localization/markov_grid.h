@@ -33,6 +33,10 @@ struct MarkovGridParameters {
   bool selective_update = true;  ///< Eq. (4) with the threshold; false: the full eq. (2).
   /// theta = threshold_fraction / |L| (footnote 1: 1% of the a priori probability), in (0, 1).
   double threshold_fraction = 0.01;
+  /// After a sensor update no state of an updated part is below floor_fraction / |L|, in
+  /// [0, threshold_fraction): a state ruled out by underflow could never come back after a
+  /// kidnap. The floor holds at most floor_fraction of the mass.
+  double floor_fraction = 1e-8;
   MotionModelParameters motion;
 };
 
@@ -111,6 +115,7 @@ class MarkovGrid {
   void ClearNonStates(float* data) const;
   double LayerSum(int j) const;
   void WakeLayer(int j);
+  void MaterializeLayer(int j);
   void Normalize();
 
   const MapModel& map_;
@@ -118,10 +123,12 @@ class MarkovGrid {
   MarkovGridParameters params_;
   int nt_ = 0;
   double threshold_ = 0.0;
+  float floor_ = 0.0f;
   int rotation_ = 0;                // Layer j holds heading bin (j + rotation_) mod nt_.
   double rotation_residual_ = 0.0;  // Turn (rad) not yet applied to the heading bins.
   std::vector<float> belief_;       // [layer][iy][ix]; inactive layers hold P / alpha_pi.
   std::vector<float> scratch_;
+  std::vector<std::uint8_t> evaluated_;  // Cells the last sensor update computed P(s|l) for.
   std::vector<std::uint8_t> active_;
   std::vector<double> alpha_;       // alpha_pi of each inactive layer.
   std::vector<double> stored_sum_;  // Sum of an inactive layer's stored values.
