@@ -1,0 +1,105 @@
+// The simulator core: robots in a SimWorld, stepped by the caller with its own dt and random
+// generator (no clock is read here). Each robot's body is a Bullet cylinder that collides with
+// the world: a step that would make it penetrate is cut at the contact and the base stops
+// (its motors stall); contacts press the bumper segments that face them. Sensor faults and
+// odometry slip last a given time of simulated time. Not thread-safe.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "robot_sim/drive.h"
+#include "robot_sim/range_sensors.h"
+#include "robot_sim/robot_spec.h"
+#include "robot_sim/sim_world.h"
+
+namespace robot_sim {
+
+enum class FaultKind { kDropout, kStuck, kNoise };
+
+struct SensorFault {
+  FaultKind kind = FaultKind::kDropout;
+  double noise_stddev = 0.0;  ///< (m) for kNoise
+  double until = 0.0;         ///< Simulated time (s) it ends; infinity = until cleared.
+};
+
+class Simulator {
+ public:
+  explicit Simulator(std::unique_ptr<SimWorld> world);
+
+  /// Adds a robot at `start` (map frame; odometry starts at the origin of odom = start).
+  /// Returns its index, or nullopt with `error` when the start pose is blocked.
+  std::optional<int> AddRobot(const RobotSpec& spec, const spott_map::Pose2& start,
+                              const OdometryErrorModel& odometry, std::string* error);
+
+  /// Sets the velocity command; a NaN, infinite or absurd command is refused (false, with a
+  /// message) and the robot is commanded to stop.
+  bool SetCommand(int robot, const Twist2& cmd, std::string* error);
+
+  /// Advances every robot by `dt` seconds (> 0).
+  void Step(double dt, Rng& rng);
+
+  /// Readings of ring `ring` of `robot` (m), faults applied (NaN for a dropped-out sensor).
+  std::vector<double> SenseRing(int robot, const RangeRingSpec& ring, Rng& rng);
+  /// Laser readings (m, +inf for no return; NaN when dropped out), empty without a laser.
+  std::vector<double> SenseLaser(int robot, Rng& rng);
+  /// Bumper segments pressed after the last step (all false when dropped out).
+  std::vector<bool> Bumper(int robot);
+
+  /// Moves the robot without the odometry seeing it. `relative`: `target` is a displacement
+  /// in the robot frame. Refused (false, message) when the target is outside the map or
+  /// inside a solid; nothing changes then.
+  bool Kidnap(int robot, const spott_map::Pose2& target, bool relative, std::string* error);
+  /// Injects a fault on "sonar", "sonar/3" (transducer 3, numbered from 1), "laser", "bumper"...
+  bool InjectFault(int robot, const std::string& sensor, const SensorFault& fault,
+                   std::string* error);
+  bool ClearFault(int robot, const std::string& sensor, std::string* error);
+  /// Odometry measures `linear_scale` / `angular_scale` of the true motion for `duration` s.
+  bool Slip(int robot, double linear_scale, double angular_scale, double duration,
+            std::string* error);
+  /// Turns the sensor turret (synchro drives) to `yaw` (rad) relative to the base.
+  void SetTurretYaw(int robot, double yaw);
+
+  const spott_map::Pose2& GroundTruth(int robot) const { return robots_.at(robot).pose; }
+  const Twist2& Velocity(int robot) const { return robots_.at(robot).twist; }
+  const Odometry& odometry(int robot) const { return robots_.at(robot).odometry; }
+  const RobotSpec& spec(int robot) const { return robots_.at(robot).spec; }
+  double turret_yaw(int robot) const { return robots_.at(robot).turret_yaw; }
+  /// True when the last step was cut short by a contact.
+  bool Stalled(int robot) const { return robots_.at(robot).stalled; }
+  int robot_count() const { return static_cast<int>(robots_.size()); }
+  double time() const { return time_; }
+  SimWorld& world() { return *world_; }
+  const SimWorld& world() const { return *world_; }
+
+ private:
+  struct Robot {
+    RobotSpec spec;
+    spott_map::Pose2 pose;
+    Twist2 twist;
+    Twist2 command;
+    Odometry odometry;
+    btCollisionObject* body = nullptr;
+    double turret_yaw = 0.0;
+    bool stalled = false;
+    std::vector<bool> bumper;
+    std::map<std::string, SensorFault> faults;
+    std::map<std::string, std::vector<double>> last;  ///< Last readings, for stuck faults.
+    double slip_until = -1.0;
+    double slip_linear = 1.0;
+    double slip_angular = 1.0;
+  };
+  bool Collides(const Robot& r, double x, double y) const;
+  const SensorFault* ActiveFault(Robot& r, const std::string& key);
+  void ApplyFaults(Robot& r, const std::string& name, std::vector<double>& values, Rng& rng);
+  bool KnownSensor(const Robot& r, const std::string& sensor) const;
+
+  std::unique_ptr<SimWorld> world_;
+  std::vector<Robot> robots_;
+  double time_ = 0.0;
+};
+
+}  // namespace robot_sim

@@ -1,0 +1,348 @@
+// robot_sim: the simulator node. Steps the ROS-free core at physics_rate_hz of simulated time,
+// publishes /clock (faster than real time when asked), odometry and tf odom->base_link, the
+// sensors, ground truth (evaluation only), and serves the fault services. Topics, services and
+// parameters are documented in robot_sim/README.md and config/robot_sim.yaml.
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <ros/callback_queue.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/JointState.h>
+#include <spott_msgs/RemoveObstacle.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "robot_sim/fault_events.h"
+#include "robot_sim/ros/conversions.h"
+#include "robot_sim/ros/parameters.h"
+#include "spott_map/world_loader.h"
+
+#include <octomap/OcTree.h>
+
+namespace robot_sim {
+namespace {
+
+namespace conv = ros_conversions;
+
+geometry_msgs::TransformStamped ToTransform(const spott_map::Pose2& p, const std::string& frame,
+                                            const std::string& child, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped t;
+  t.header.frame_id = frame;
+  t.header.stamp = stamp;
+  t.child_frame_id = child;
+  t.transform.translation.x = p.x;
+  t.transform.translation.y = p.y;
+  t.transform.rotation.z = std::sin(p.yaw / 2);
+  t.transform.rotation.w = std::cos(p.yaw / 2);
+  return t;
+}
+
+class SimNode {
+ public:
+  SimNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, SimNodeParameters params,
+          std::unique_ptr<Simulator> sim, int robot, std::vector<FaultEvent> schedule)
+      : params_(std::move(params)),
+        sim_(std::move(sim)),
+        robot_(robot),
+        schedule_(std::move(schedule)),
+        rng_(static_cast<std::uint64_t>(params_.seed)) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("clock", 10);
+    odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    truth_pub_ = nh.advertise<nav_msgs::Odometry>("sim/ground_truth", 10);
+    joints_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+    for (const RangeRingSpec& ring : spec.rings) {
+      ring_pubs_.push_back(nh.advertise<spott_msgs::RangeRing>(ring.name, 10));
+      range_pubs_.push_back(
+          nh.advertise<sensor_msgs::Range>(ring.name + "/range", ring.mounts.size() * 2));
+    }
+    if (spec.laser) scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
+    if (spec.bumper) bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
+    markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("sim/octomap_markers", 1, true);
+    cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimNode::OnCmdVel, this);
+    turret_sub_ = nh.subscribe("turret/command", 10, &SimNode::OnTurret, this);
+    ros::NodeHandle sim_nh(nh, "sim");
+    services_.push_back(sim_nh.advertiseService("kidnap", &SimNode::OnKidnap, this));
+    services_.push_back(sim_nh.advertiseService("set_door_state", &SimNode::OnDoor, this));
+    services_.push_back(sim_nh.advertiseService("add_obstacle", &SimNode::OnAddObstacle, this));
+    services_.push_back(
+        sim_nh.advertiseService("remove_obstacle", &SimNode::OnRemoveObstacle, this));
+    services_.push_back(sim_nh.advertiseService("sensor_fault", &SimNode::OnSensorFault, this));
+    services_.push_back(sim_nh.advertiseService("odometry_slip", &SimNode::OnSlip, this));
+    services_.push_back(sim_nh.advertiseService("save_octomap", &SimNode::OnSaveOctomap, this));
+    (void)pnh;
+  }
+
+  void Run() {
+    const double dt = 1.0 / params_.physics_rate_hz;
+    auto every = [&](double rate) {
+      return std::max<long>(1, std::lround(params_.physics_rate_hz / rate));
+    };
+    const long odom_every = every(params_.odom_rate_hz);
+    const long sensor_every = every(params_.sensor_rate_hz);
+    const long laser_every = every(params_.laser_rate_hz);
+    PublishClock(ros::Time(0, 0));
+    PublishOdometry(ros::Time(0, 0));
+    ros::WallTime wall_start = ros::WallTime::now();
+    long step = 0;
+    while (ros::ok()) {
+      ros::getGlobalCallbackQueue()->callAvailable();
+      const double now_s = step * dt;
+      RunSchedule(now_s);
+      if (params_.cmd_vel_timeout_s > 0 && have_command_ &&
+          now_s - last_command_s_ > params_.cmd_vel_timeout_s) {
+        sim_->SetCommand(robot_, {}, nullptr);
+        have_command_ = false;
+        ROS_WARN("robot_sim: no cmd_vel for %.2f s of simulated time: stopping",
+                 params_.cmd_vel_timeout_s);
+      }
+      sim_->Step(dt, rng_);
+      ++step;
+      const ros::Time stamp(step * dt);
+      PublishClock(stamp);
+      if (step % odom_every == 0) PublishOdometry(stamp);
+      if (step % sensor_every == 0) PublishSensors(stamp);
+      if (step % laser_every == 0) PublishLaser(stamp, laser_every * dt);
+      if (params_.publish_octomap_markers && sim_->world().revision() != markers_revision_) {
+        markers_revision_ = sim_->world().revision();
+        markers_pub_.publish(
+            conv::ToVoxelMarkers(sim_->world().OccupiedLeaves(), params_.map_frame, stamp));
+      }
+      if (params_.real_time_factor > 0) {
+        const ros::WallTime target =
+            wall_start + ros::WallDuration(step * dt / params_.real_time_factor);
+        const ros::WallTime wall_now = ros::WallTime::now();
+        if (target > wall_now) {
+          (target - wall_now).sleep();
+        } else if ((wall_now - target).toSec() > 1.0) {
+          // Far behind (a loaded machine): do not try to catch up in a burst.
+          wall_start += wall_now - target;
+        }
+      }
+    }
+  }
+
+ private:
+  ros::Time Now() const { return ros::Time(sim_->time()); }
+
+  void PublishClock(const ros::Time& stamp) {
+    rosgraph_msgs::Clock c;
+    c.clock = stamp;
+    clock_pub_.publish(c);
+  }
+
+  void PublishOdometry(const ros::Time& stamp) {
+    const Odometry& odo = sim_->odometry(robot_);
+    odom_pub_.publish(
+        conv::ToOdometry(odo.pose(), odo.twist(), params_.odom_frame, params_.base_frame, stamp));
+    tf_.sendTransform(ToTransform(odo.pose(), params_.odom_frame, params_.base_frame, stamp));
+    if (params_.publish_truth_map_to_odom) {
+      // map->odom = truth * odom^-1.
+      const spott_map::Pose2& t = sim_->GroundTruth(robot_);
+      const spott_map::Pose2& o = odo.pose();
+      const double yaw = t.yaw - o.yaw, c = std::cos(yaw), s = std::sin(yaw);
+      const spott_map::Pose2 map_odom{t.x - (c * o.x - s * o.y), t.y - (s * o.x + c * o.y), yaw};
+      tf_.sendTransform(ToTransform(map_odom, params_.map_frame, params_.odom_frame, stamp));
+    }
+    truth_pub_.publish(conv::ToOdometry(sim_->GroundTruth(robot_), sim_->Velocity(robot_),
+                                        params_.map_frame, params_.base_frame, stamp));
+    sensor_msgs::JointState js;
+    js.header.stamp = stamp;
+    for (const std::string& j : sim_->spec(robot_).movable_joints) {
+      js.name.push_back(j);
+      js.position.push_back(j == sim_->spec(robot_).turret_joint ? sim_->turret_yaw(robot_) : 0.0);
+    }
+    joints_pub_.publish(js);
+  }
+
+  void PublishSensors(const ros::Time& stamp) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    for (std::size_t r = 0; r < spec.rings.size(); ++r) {
+      const RangeRingSpec& ring = spec.rings[r];
+      const std::vector<double> ranges = sim_->SenseRing(robot_, ring, rng_);
+      ring_pubs_[r].publish(conv::ToRangeRing(ring, ranges, params_.base_frame, stamp));
+      if (range_pubs_[r].getNumSubscribers() > 0) {
+        for (std::size_t i = 0; i < ranges.size(); ++i) {
+          range_pubs_[r].publish(conv::ToRange(ring, i, ranges[i], stamp));
+        }
+      }
+    }
+    if (spec.bumper) {
+      bumper_pub_.publish(
+          conv::ToBumperRing(*spec.bumper, sim_->Bumper(robot_), params_.base_frame, stamp));
+    }
+  }
+
+  void PublishLaser(const ros::Time& stamp, double period) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    if (!spec.laser) return;
+    scan_pub_.publish(
+        conv::ToLaserScan(*spec.laser, sim_->SenseLaser(robot_, rng_), period, stamp));
+  }
+
+  void RunSchedule(double now_s) {
+    while (next_event_ < schedule_.size() && schedule_[next_event_].time <= now_s) {
+      const FaultEvent& e = schedule_[next_event_++];
+      std::string error;
+      if (ApplyFaultEvent(*sim_, robot_, e, &error)) {
+        ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) applied", e.time, e.where.line);
+      } else {
+        ROS_ERROR("robot_sim: scheduled fault at %.2f s (line %d) refused: %s", e.time,
+                  e.where.line, error.c_str());
+      }
+    }
+  }
+
+  void OnCmdVel(const geometry_msgs::Twist& msg) {
+    std::string error;
+    if (!sim_->SetCommand(robot_, conv::FromMsg(msg), &error)) {
+      ROS_WARN_THROTTLE(1.0, "robot_sim: %s", error.c_str());
+      have_command_ = false;
+      return;
+    }
+    have_command_ = true;
+    last_command_s_ = sim_->time();
+  }
+
+  void OnTurret(const std_msgs::Float64& msg) {
+    if (!std::isfinite(msg.data)) {
+      ROS_WARN_THROTTLE(1.0, "robot_sim: refused a turret angle that is not finite");
+      return;
+    }
+    if (sim_->spec(robot_).turret_joint.empty()) {
+      ROS_WARN_THROTTLE(1.0, "robot_sim: %s has no turret", sim_->spec(robot_).name.c_str());
+      return;
+    }
+    sim_->SetTurretYaw(robot_, msg.data);
+  }
+
+  template <typename Request, typename Response>
+  bool Apply(const Request& req, Response& res, const char* what) {
+    FaultEvent e;
+    std::string error;
+    res.success = conv::FromRequest(req, e, &error) && ApplyFaultEvent(*sim_, robot_, e, &error);
+    res.message = res.success ? std::string(what) + ": done" : error;
+    if (!res.success) ROS_WARN("robot_sim: %s refused: %s", what, error.c_str());
+    return true;
+  }
+
+  bool OnKidnap(spott_msgs::Kidnap::Request& req, spott_msgs::Kidnap::Response& res) {
+    return Apply(req, res, "kidnap");
+  }
+  bool OnDoor(spott_msgs::SetDoorState::Request& req, spott_msgs::SetDoorState::Response& res) {
+    return Apply(req, res, "set_door_state");
+  }
+  bool OnSensorFault(spott_msgs::SensorFault::Request& req,
+                     spott_msgs::SensorFault::Response& res) {
+    return Apply(req, res, "sensor_fault");
+  }
+  bool OnSlip(spott_msgs::OdometrySlip::Request& req, spott_msgs::OdometrySlip::Response& res) {
+    return Apply(req, res, "odometry_slip");
+  }
+  bool OnAddObstacle(spott_msgs::AddObstacle::Request& req,
+                     spott_msgs::AddObstacle::Response& res) {
+    if (req.id.empty()) req.id = "obstacle_" + std::to_string(++obstacle_counter_);
+    Apply(req, res, "add_obstacle");
+    res.id = res.success ? req.id : "";
+    return true;
+  }
+  bool OnRemoveObstacle(spott_msgs::RemoveObstacle::Request& req,
+                        spott_msgs::RemoveObstacle::Response& res) {
+    std::string error;
+    res.success = sim_->world().RemoveObstacle(req.id, &error);
+    res.message = res.success ? "removed" : error;
+    return true;
+  }
+  bool OnSaveOctomap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+    res.success = sim_->world().WriteOctomap(params_.octomap_file);
+    res.message = (res.success ? "wrote " : "cannot write ") + params_.octomap_file;
+    return true;
+  }
+
+  SimNodeParameters params_;
+  std::unique_ptr<Simulator> sim_;
+  int robot_;
+  std::vector<FaultEvent> schedule_;
+  std::size_t next_event_ = 0;
+  Rng rng_;
+  bool have_command_ = false;
+  double last_command_s_ = 0.0;
+  int markers_revision_ = -1;
+  int obstacle_counter_ = 0;
+  ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
+      markers_pub_;
+  std::vector<ros::Publisher> ring_pubs_, range_pubs_;
+  ros::Subscriber cmd_sub_, turret_sub_;
+  std::vector<ros::ServiceServer> services_;
+  tf2_ros::TransformBroadcaster tf_;
+};
+
+int Main(int argc, char** argv) {
+  ros::init(argc, argv, "robot_sim");
+  ros::NodeHandle nh, pnh("~");
+  SimNodeParameters params;
+  const std::vector<std::string> problems = ros_parameters::Read(pnh, params);
+  for (const std::string& p : problems) ROS_FATAL("robot_sim: parameter %s", p.c_str());
+  if (!problems.empty()) return 1;
+  const std::string pkg = ros::package::getPath("robot_sim");
+  if (params.robot_file.empty())
+    params.robot_file = pkg + "/config/robots/" + params.robot + ".yaml";
+  if (params.urdf_file.empty()) params.urdf_file = pkg + "/urdf/" + params.robot + ".urdf";
+
+  const auto spec = LoadRobotSpec(params.robot_file, params.urdf_file);
+  if (!spec.ok()) {
+    ROS_FATAL("robot_sim: robot '%s':\n%s", params.robot.c_str(),
+              spott_map::FormatErrors(spec.errors).c_str());
+    return 1;
+  }
+  const auto world = spott_map::LoadWorldFile(params.world_file);
+  if (!world.ok()) {
+    ROS_FATAL("robot_sim: world:\n%s", spott_map::FormatErrors(world.errors).c_str());
+    return 1;
+  }
+  const auto schedule = ParseFaultSchedule(ros_parameters::FaultScheduleYaml(pnh), "~faults");
+  if (!schedule.ok()) {
+    ROS_FATAL("robot_sim: parameter faults:\n%s", spott_map::FormatErrors(schedule.errors).c_str());
+    return 1;
+  }
+  spott_map::Pose2 start = world.world->robot_start;
+  if (!params.start_pose.empty()) {
+    std::istringstream in(params.start_pose);
+    std::string rest;
+    if (!(in >> start.x >> start.y >> start.yaw) || (in >> rest) || !std::isfinite(start.x) ||
+        !std::isfinite(start.y) || !std::isfinite(start.yaw)) {
+      ROS_FATAL("robot_sim: parameter start_pose must be 'x y yaw', got '%s'",
+                params.start_pose.c_str());
+      return 1;
+    }
+  }
+  auto sim_world = std::make_unique<SimWorld>(params.world);
+  sim_world->Build(*world.world);
+  auto sim = std::make_unique<Simulator>(std::move(sim_world));
+  std::string error;
+  const auto robot = sim->AddRobot(*spec.spec, start, params.odometry, &error);
+  if (!robot) {
+    ROS_FATAL("robot_sim: %s", error.c_str());
+    return 1;
+  }
+  ROS_INFO(
+      "robot_sim: %s in world '%s' (%zu solids, OctoMap %zu nodes at %.2f m), start (%.2f, "
+      "%.2f, %.2f), real-time factor %s",
+      spec.spec->name.c_str(), world.world->name.c_str(), sim->world().solid_count(),
+      sim->world().octree().size(), params.world.octomap_resolution_m, start.x, start.y, start.yaw,
+      params.real_time_factor > 0 ? std::to_string(params.real_time_factor).c_str()
+                                  : "as fast as possible");
+  SimNode node(nh, pnh, params, std::move(sim), *robot, schedule.events);
+  node.Run();
+  return 0;
+}
+
+}  // namespace
+}  // namespace robot_sim
+
+int main(int argc, char** argv) { return robot_sim::Main(argc, argv); }

@@ -1,0 +1,143 @@
+#include "robot_sim/range_sensors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace robot_sim {
+
+namespace {
+
+constexpr double kEps = 1e-4;  // Offset of a reflected ray's start off the surface (m).
+
+Eigen::Vector3d Heading(double yaw) { return {std::cos(yaw), std::sin(yaw), 0.0}; }
+
+// Incidence angle between a ray and a surface normal, in the horizontal plane (rad).
+double Incidence(const Eigen::Vector3d& dir, const Eigen::Vector3d& normal) {
+  Eigen::Vector3d n(normal.x(), normal.y(), 0.0);
+  if (n.norm() < 1e-9) return 0.0;
+  n.normalize();
+  return std::acos(std::clamp(-dir.dot(n), -1.0, 1.0));
+}
+
+double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+double Noisy(double range, const RangeRingSpec& ring, double unit_normal) {
+  return range + unit_normal * (ring.noise_stddev + ring.noise_per_metre * range);
+}
+
+}  // namespace
+
+TransducerPose PlaceMount(const Mount& mount, const spott_map::Pose2& robot, double turret_yaw) {
+  const double a = robot.yaw + turret_yaw;
+  const double c = std::cos(a), s = std::sin(a);
+  TransducerPose t;
+  t.origin = {robot.x + c * mount.x - s * mount.y, robot.y + s * mount.x + c * mount.y, mount.z};
+  t.yaw = WrapAngle(a + mount.yaw);
+  return t;
+}
+
+double EchoRange(const SimWorld& world, const RangeRingSpec& ring, const TransducerPose& t,
+                 const btCollisionObject* self, std::vector<ScatterPoint>* scatter) {
+  double best = ring.max_range;
+  for (int k = 0; k < ring.rays; ++k) {
+    const double offset =
+        ring.rays == 1 ? 0.0 : -ring.field_of_view / 2 + k * ring.field_of_view / (ring.rays - 1);
+    const Eigen::Vector3d dir = Heading(t.yaw + offset);
+    const auto hit = world.CastRay(t.origin, t.origin + dir * ring.max_range, self);
+    if (!hit) continue;
+    if (Incidence(dir, hit->normal) <= ring.critical_angle) {
+      best = std::min(best, hit->distance);
+      if (scatter) scatter->push_back({hit->point, hit->distance});
+      continue;
+    }
+    // Specular: follow the reflected pulse to a second surface; if that one scatters, the echo
+    // comes back the same way (a multipath reading of the whole path).
+    const double left = ring.max_range - hit->distance;
+    if (left <= 0) continue;
+    Eigen::Vector3d n(hit->normal.x(), hit->normal.y(), 0.0);
+    n.normalize();
+    const Eigen::Vector3d reflected = dir - 2 * dir.dot(n) * n;
+    const Eigen::Vector3d start = hit->point + reflected * kEps;
+    const auto second = world.CastRay(start, start + reflected * left, self);
+    if (!second || Incidence(reflected, second->normal) > ring.critical_angle) continue;
+    const double path = hit->distance + second->distance;
+    if (path <= ring.max_range) best = std::min(best, path);
+    if (scatter) scatter->push_back({second->point, path});
+  }
+  return best;
+}
+
+std::vector<double> SenseRangeRing(const SimWorld& world, const RangeRingSpec& ring,
+                                   const std::vector<TransducerPose>& poses,
+                                   const btCollisionObject* self, Rng& rng) {
+  const int n = static_cast<int>(poses.size());
+  const int groups = std::clamp(ring.fire_groups, 1, std::max(n, 1));
+  std::vector<double> clean(n, ring.max_range);
+  std::vector<std::vector<ScatterPoint>> scatter(n);
+  for (int i = 0; i < n; ++i) clean[i] = EchoRange(world, ring, poses[i], self, &scatter[i]);
+  // Crosstalk: transducer i hears j's pulse scattered at P when P lies in i's cone and i sees P.
+  std::vector<double> heard = clean;
+  if (groups < n) {
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (j == i || j % groups != i % groups) continue;
+        for (const ScatterPoint& p : scatter[j]) {
+          const Eigen::Vector3d back = p.point - poses[i].origin;
+          const double back_m = back.norm();
+          const double range = (p.path_m + back_m) / 2;
+          if (range >= heard[i]) continue;
+          const double bearing = std::atan2(back.y(), back.x());
+          if (std::abs(WrapAngle(bearing - poses[i].yaw)) > ring.field_of_view / 2) continue;
+          const auto blocked = world.CastRay(poses[i].origin, p.point - back / back_m * 0.01, self);
+          if (blocked) continue;
+          heard[i] = range;
+        }
+      }
+    }
+  }
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::vector<double> out(n);
+  for (int i = 0; i < n; ++i) {
+    const double z = unit(rng);  // drawn for every transducer: a stable random stream
+    if (heard[i] >= ring.max_range) {
+      out[i] = ring.max_range;
+    } else {
+      out[i] = std::clamp(Noisy(heard[i], ring, z), ring.min_range, ring.max_range);
+    }
+  }
+  return out;
+}
+
+std::vector<double> SenseLaser(const SimWorld& world, const LaserSpec& laser,
+                               const TransducerPose& pose, const btCollisionObject* self,
+                               Rng& rng) {
+  std::vector<double> ranges(laser.beams);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const double step = (laser.angle_max - laser.angle_min) / (laser.beams - 1);
+  for (int b = 0; b < laser.beams; ++b) {
+    const Eigen::Vector3d dir = Heading(pose.yaw + laser.angle_min + b * step);
+    const double z = noise(rng);
+    const auto hit = world.CastRay(pose.origin, pose.origin + dir * laser.max_range, self);
+    if (!hit) {
+      ranges[b] = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    ranges[b] =
+        std::clamp(hit->distance + z * laser.noise_stddev, laser.min_range, laser.max_range);
+  }
+  return ranges;
+}
+
+std::vector<bool> BumperSegments(const BumperSpec& bumper, const std::vector<double>& angles) {
+  std::vector<bool> pressed(bumper.segments, false);
+  const double width = 2 * M_PI / bumper.segments;
+  for (double a : angles) {
+    double u = std::fmod(a + width / 2, 2 * M_PI);
+    if (u < 0) u += 2 * M_PI;
+    const int s = std::min(static_cast<int>(u / width), bumper.segments - 1);
+    pressed[s] = true;
+  }
+  return pressed;
+}
+
+}  // namespace robot_sim

@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "robot_sim/ros/conversions.h"
+
+namespace robot_sim {
+namespace {
+
+namespace conv = ros_conversions;
+
+RangeRingSpec TwoSonars() {
+  RangeRingSpec ring;
+  ring.name = "sonar";
+  ring.max_range = 6.5;
+  ring.min_range = 0.43;
+  ring.mounts = {{"sonar_1", 0.2, 0.0, 0.6, 0.0}, {"sonar_2", 0.0, 0.2, 0.6, M_PI / 2}};
+  return ring;
+}
+
+TEST(ConversionsTest, RangeRingKeepsMountsFramesAndDropouts) {
+  const auto msg = conv::ToRangeRing(TwoSonars(), {1.5, NAN}, "base_link", ros::Time(3.0));
+  EXPECT_EQ(msg.header.frame_id, "base_link");
+  EXPECT_EQ(msg.radiation_type, spott_msgs::RangeRing::ULTRASOUND);
+  ASSERT_EQ(msg.ranges.size(), 2u);
+  EXPECT_FLOAT_EQ(msg.ranges[0], 1.5f);
+  EXPECT_TRUE(std::isnan(msg.ranges[1]));
+  EXPECT_EQ(msg.frame_ids[1], "sonar_2");
+  EXPECT_DOUBLE_EQ(msg.mounts[1].theta, M_PI / 2);
+}
+
+TEST(ConversionsTest, RangeWithoutEchoIsInfinityPerRep117) {
+  const auto ring = TwoSonars();
+  EXPECT_TRUE(std::isinf(conv::ToRange(ring, 0, 6.5, ros::Time(1)).range));
+  const auto r = conv::ToRange(ring, 1, 2.0, ros::Time(1));
+  EXPECT_FLOAT_EQ(r.range, 2.0f);
+  EXPECT_EQ(r.header.frame_id, "sonar_2");
+}
+
+TEST(ConversionsTest, BumperSegmentsAreCentredEvery18Degrees) {
+  BumperSpec b;
+  std::vector<bool> pressed(20, false);
+  pressed[5] = true;
+  const auto msg = conv::ToBumperRing(b, pressed, "base_link", ros::Time(1));
+  ASSERT_EQ(msg.segment_angles.size(), 20u);
+  EXPECT_NEAR(msg.segment_angles[5], M_PI / 2, 1e-6);
+  EXPECT_NEAR(msg.segment_width, M_PI / 10, 1e-6);
+  EXPECT_TRUE(msg.pressed[5]);
+}
+
+TEST(ConversionsTest, OdometryCarriesPoseAndTwist) {
+  const auto msg =
+      conv::ToOdometry({1, 2, M_PI / 2}, {0.3, 0.1}, "odom", "base_link", ros::Time(1));
+  EXPECT_DOUBLE_EQ(msg.pose.pose.position.y, 2);
+  EXPECT_NEAR(msg.pose.pose.orientation.z, std::sqrt(0.5), 1e-12);
+  EXPECT_DOUBLE_EQ(msg.twist.twist.linear.x, 0.3);
+}
+
+TEST(ConversionsTest, BadServiceRequestsAreRefused) {
+  FaultEvent e;
+  std::string error;
+  spott_msgs::SetDoorState::Request door;
+  door.door_id = "d1";
+  door.state = 0;  // UNKNOWN: the simulated building always knows
+  EXPECT_FALSE(conv::FromRequest(door, e, &error));
+  door.state = 2;
+  ASSERT_TRUE(conv::FromRequest(door, e, &error));
+  EXPECT_TRUE(e.closed);
+  spott_msgs::SensorFault::Request fault;
+  fault.fault = 9;
+  EXPECT_FALSE(conv::FromRequest(fault, e, &error));
+  spott_msgs::AddObstacle::Request add;
+  add.kind = "piano";
+  EXPECT_FALSE(conv::FromRequest(add, e, &error));
+  EXPECT_NE(error.find("piano"), std::string::npos);
+}
+
+TEST(ConversionsTest, VoxelMarkersGroupLeavesBySize) {
+  const auto m = conv::ToVoxelMarkers({{Eigen::Vector3d(0, 0, 0.1), 0.05},
+                                       {Eigen::Vector3d(1, 0, 0.1), 0.05},
+                                       {Eigen::Vector3d(2, 0, 0.2), 0.1}},
+                                      "map", ros::Time(1));
+  ASSERT_EQ(m.markers.size(), 3u);  // DELETEALL + two sizes
+  EXPECT_EQ(m.markers[1].points.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.markers[2].scale.x, 0.1);
+}
+
+}  // namespace
+}  // namespace robot_sim

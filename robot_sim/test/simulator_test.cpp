@@ -1,0 +1,253 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+#include "robot_sim/simulator.h"
+#include "test_world.h"
+
+namespace robot_sim {
+namespace {
+
+using testing::PackageFile;
+
+RobotSpec Load(const std::string& name) {
+  auto r = LoadRobotSpec(PackageFile("config/robots/" + name + ".yaml"),
+                         PackageFile("urdf/" + name + ".urdf"));
+  if (!r.ok()) throw std::runtime_error(spott_map::FormatErrors(r.errors));
+  return *r.spec;
+}
+
+std::unique_ptr<SimWorld> MakeWorld(const spott_map::World& w) {
+  SimWorldParameters p;
+  p.octomap_resolution_m = 0.1;
+  auto world = std::make_unique<SimWorld>(p);
+  world->Build(w);
+  return world;
+}
+
+class SimulatorTest : public ::testing::Test {
+ protected:
+  void Start(const std::string& robot, spott_map::Pose2 pose, OdometryErrorModel odo = {}) {
+    sim_ = std::make_unique<Simulator>(MakeWorld(testing::TestWorld()));
+    std::string error;
+    auto index = sim_->AddRobot(Load(robot), pose, odo, &error);
+    ASSERT_TRUE(index) << error;
+    id_ = *index;
+  }
+  void Run(double seconds, double dt = 0.01) {
+    const int steps = static_cast<int>(std::lround(seconds / dt));
+    for (int i = 0; i < steps; ++i) sim_->Step(dt, rng_);
+  }
+  std::unique_ptr<Simulator> sim_;
+  int id_ = 0;
+  Rng rng_{1};
+};
+
+TEST_F(SimulatorTest, DrivingIntoAWallStopsTheRobotAndPressesTheBumperFacingIt) {
+  Start("nomad200", {8.0, 4.5, 0.0});
+  ASSERT_TRUE(sim_->SetCommand(id_, {0.5, 0.0}, nullptr));
+  Run(10.0);
+  // The shell touches the wall face x = 9.95: centre at 9.95 - 0.2285.
+  EXPECT_NEAR(sim_->GroundTruth(id_).x, 9.95 - 0.2285, 0.002);
+  EXPECT_NEAR(sim_->GroundTruth(id_).y, 4.5, 1e-9);
+  EXPECT_TRUE(sim_->Stalled(id_));
+  EXPECT_EQ(sim_->Velocity(id_).v, 0.0);
+  const auto bumper = sim_->Bumper(id_);
+  ASSERT_EQ(bumper.size(), 20u);
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(bumper[i], i == 0) << "segment " << i;
+  // Backing off frees it.
+  sim_->SetCommand(id_, {-0.2, 0.0}, nullptr);
+  Run(1.0);
+  EXPECT_FALSE(sim_->Stalled(id_));
+  for (bool b : sim_->Bumper(id_)) EXPECT_FALSE(b);
+}
+
+TEST_F(SimulatorTest, BumperSegmentFollowsTheContactAngleInTheRobotFrame) {
+  // Heading 36 degrees left of the wall normal: the wall is at -36 degrees, segment 18.
+  Start("nomad200", {8.5, 0.8, 36 * M_PI / 180});  // meets the east wall near y = 1.7
+  sim_->SetCommand(id_, {0.3, 0.0}, nullptr);
+  Run(10.0);
+  const auto bumper = sim_->Bumper(id_);
+  EXPECT_TRUE(bumper[18]);
+  EXPECT_FALSE(bumper[0]);
+  EXPECT_FALSE(bumper[5]);
+}
+
+TEST_F(SimulatorTest, NanCommandIsRefusedAndTheRobotStops) {
+  Start("nomad200", {2.0, 3.0, 0.0});
+  sim_->SetCommand(id_, {0.3, 0.0}, nullptr);
+  Run(2.0);
+  EXPECT_NEAR(sim_->Velocity(id_).v, 0.3, 1e-9);
+  std::string error;
+  EXPECT_FALSE(sim_->SetCommand(id_, {NAN, 0.0}, &error));
+  EXPECT_NE(error.find("refused"), std::string::npos);
+  Run(2.0);
+  EXPECT_EQ(sim_->Velocity(id_).v, 0.0);
+  EXPECT_FALSE(sim_->SetCommand(id_, {0.0, 1e9}, &error));
+}
+
+TEST_F(SimulatorTest, KidnapMovesTheRobotWithoutTheOdometrySeeingIt) {
+  Start("b21", {3.0, 3.0, 0.0});
+  const spott_map::Pose2 odo_before = sim_->odometry(id_).pose();
+  std::string error;
+  // RHINO's experiment: turned about 70 degrees to the right.
+  ASSERT_TRUE(sim_->Kidnap(id_, {0.0, 0.0, -70 * M_PI / 180}, true, &error)) << error;
+  EXPECT_NEAR(sim_->GroundTruth(id_).yaw, -70 * M_PI / 180, 1e-12);
+  EXPECT_EQ(sim_->odometry(id_).pose().yaw, odo_before.yaw);
+  ASSERT_TRUE(sim_->Kidnap(id_, {5.0, 2.0, 1.0}, false, &error));
+  EXPECT_EQ(sim_->GroundTruth(id_).x, 5.0);
+  EXPECT_EQ(sim_->odometry(id_).pose().x, odo_before.x);
+}
+
+TEST_F(SimulatorTest, KidnapIntoAWallOrOutsideTheMapIsRefusedAndNothingChanges) {
+  Start("b21", {3.0, 3.0, 0.0});
+  std::string error;
+  EXPECT_FALSE(sim_->Kidnap(id_, {9.9, 1.0, 0.0}, false, &error));
+  EXPECT_NE(error.find("inside"), std::string::npos);
+  EXPECT_FALSE(sim_->Kidnap(id_, {7.0, 1.0, 0.0}, false, &error));  // the crate
+  EXPECT_NE(error.find("crate"), std::string::npos);
+  EXPECT_FALSE(sim_->Kidnap(id_, {-5.0, 3.0, 0.0}, false, &error));
+  EXPECT_NE(error.find("outside"), std::string::npos);
+  EXPECT_FALSE(sim_->Kidnap(id_, {NAN, 3.0, 0.0}, false, &error));
+  EXPECT_EQ(sim_->GroundTruth(id_).x, 3.0);
+  EXPECT_EQ(sim_->GroundTruth(id_).y, 3.0);
+}
+
+TEST_F(SimulatorTest, SensorDropoutLastsItsDurationAndUnknownSensorsAreErrors) {
+  Start("nomad200", {5.0, 3.0, 0.0});
+  const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");
+  std::string error;
+  ASSERT_TRUE(sim_->InjectFault(id_, "sonar/3", {FaultKind::kDropout, 0.0, 1.0}, &error)) << error;
+  auto r = sim_->SenseRing(id_, sonar, rng_);
+  EXPECT_TRUE(std::isnan(r[2]));
+  EXPECT_FALSE(std::isnan(r[1]));
+  Run(1.5);
+  r = sim_->SenseRing(id_, sonar, rng_);
+  EXPECT_FALSE(std::isnan(r[2]));
+  EXPECT_FALSE(sim_->InjectFault(id_, "sonar/17", {}, &error));
+  EXPECT_FALSE(sim_->InjectFault(id_, "lidar", {}, &error));
+  EXPECT_NE(error.find("lidar"), std::string::npos);
+}
+
+TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {
+  Start("nomad200", {5.0, 3.0, 0.0});
+  const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");
+  const double before = sim_->SenseRing(id_, sonar, rng_)[0];
+  ASSERT_TRUE(sim_->InjectFault(id_, "sonar", {FaultKind::kStuck, 0.0, 100.0}, nullptr));
+  sim_->SetCommand(id_, {0.5, 0.0}, nullptr);
+  Run(3.0);
+  EXPECT_EQ(sim_->SenseRing(id_, sonar, rng_)[0], before);
+  ASSERT_TRUE(sim_->ClearFault(id_, "sonar", nullptr));
+  EXPECT_LT(sim_->SenseRing(id_, sonar, rng_)[0], before - 0.5);
+}
+
+TEST_F(SimulatorTest, OdometrySlipShortensTheMeasuredDistance) {
+  Start("nomad200", {2.0, 3.0, 0.0});
+  ASSERT_TRUE(sim_->Slip(id_, 0.5, 1.0, 100.0, nullptr));
+  sim_->SetCommand(id_, {0.5, 0.0}, nullptr);
+  Run(4.0);
+  const double truth = sim_->GroundTruth(id_).x - 2.0;
+  EXPECT_NEAR(sim_->odometry(id_).pose().x, 0.5 * truth, 1e-9);
+  std::string error;
+  EXPECT_FALSE(sim_->Slip(id_, -1, 1, 1, &error));
+}
+
+TEST(SimulatorSquareTest, OdometryDivergesByTheConfiguredDriftOverA10mSquare) {
+  // An empty 14 x 14 m room; a B21 drives a 10 m square open loop.
+  const auto w = spott_map::LoadWorldFromString(
+      "world: {name: square}\nwalls: {from_rooms: true}\n"
+      "rooms: [{id: r, polygon: [[0, 0], [14, 0], [14, 14], [0, 14]]}]\n"
+      "robot_start: {pose: [2, 2, 0]}\n",
+      "square.yaml");
+  ASSERT_TRUE(w.ok());
+  Simulator sim(MakeWorld(*w.world));
+  OdometryErrorModel odo;
+  odo.linear_scale = 1.02;      // measures 2 % too far
+  odo.angular_scale = 1.01;     // 1 % too much rotation
+  odo.drift_rad_per_m = 0.002;  // and 2 mrad of heading per metre
+  const int id = *sim.AddRobot(Load("b21"), {2.0, 2.0, 0.0}, odo, nullptr);
+  Rng rng(3);
+  double travelled = 0, turned = 0;
+  auto step = [&] {
+    const spott_map::Pose2 before = sim.GroundTruth(id);
+    sim.Step(0.01, rng);
+    const spott_map::Pose2 after = sim.GroundTruth(id);
+    travelled += std::hypot(after.x - before.x, after.y - before.y);
+    turned += std::remainder(after.yaw - before.yaw, 2 * M_PI);
+  };
+  for (int side = 0; side < 4; ++side) {
+    sim.SetCommand(id, {0.5, 0.0}, nullptr);
+    // Stop commanded 0.16 m early: braking from 0.5 m/s at 0.8 m/s^2 takes 0.156 m.
+    while (travelled < 10.0 * (side + 1) - 0.16) step();
+    sim.SetCommand(id, {0.0, 0.0}, nullptr);
+    for (int i = 0; i < 200; ++i) step();
+    sim.SetCommand(id, {0.0, 0.5}, nullptr);
+    const double target = M_PI / 2 * (side + 1) - 0.05;
+    while (turned < target) step();
+    sim.SetCommand(id, {0.0, 0.0}, nullptr);
+    for (int i = 0; i < 200; ++i) step();
+  }
+  EXPECT_GT(travelled, 39.0);
+  // Hand-computed drift: heading error = 0.01 * rotation + 0.002 * distance.
+  const double heading_error =
+      std::remainder(sim.odometry(id).pose().yaw - (sim.GroundTruth(id).yaw), 2 * M_PI);
+  EXPECT_NEAR(heading_error, 0.01 * turned + 0.002 * travelled, 1e-6);
+  EXPECT_GT(heading_error, 0.1);
+}
+
+// A hash of every sensor reading and pose of a scripted run.
+std::size_t RunAndHash(std::uint64_t seed) {
+  SimWorldParameters p;
+  p.octomap_resolution_m = 0.1;
+  auto world = std::make_unique<SimWorld>(p);
+  world->Build(testing::TestWorld());
+  Simulator sim(std::move(world));
+  OdometryErrorModel odo;
+  odo.linear_noise = 0.01;
+  odo.angular_noise = 0.01;
+  const RobotSpec spec = Load("b21");
+  const int id = *sim.AddRobot(spec, {2.0, 3.0, 0.0}, odo, nullptr);
+  Rng rng(seed);
+  std::size_t h = 0;
+  auto mix = [&h](double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  };
+  for (int i = 0; i < 300; ++i) {
+    sim.SetCommand(id, {0.4, 0.3 * std::sin(i * 0.05)}, nullptr);
+    sim.Step(0.01, rng);
+    if (i % 10 == 0) {
+      for (double r : sim.SenseRing(id, *spec.FindRing("sonar"), rng)) mix(r);
+      for (double r : sim.SenseLaser(id, rng)) mix(r);
+      mix(sim.odometry(id).pose().x);
+      mix(sim.odometry(id).pose().yaw);
+    }
+  }
+  return h;
+}
+
+TEST(DeterminismTest, SameSeedSameStreamOtherSeedOtherStream) {
+  EXPECT_EQ(RunAndHash(5), RunAndHash(5));
+  EXPECT_NE(RunAndHash(5), RunAndHash(6));
+}
+
+TEST(MultiRobotTest, RobotsSeeAndStopAtEachOther) {
+  Simulator sim(MakeWorld(testing::TestWorld()));
+  const RobotSpec b12 = Load("b12");
+  const int a = *sim.AddRobot(b12, {2.0, 3.0, 0.0}, {}, nullptr);
+  const int b = *sim.AddRobot(b12, {4.0, 3.0, M_PI}, {}, nullptr);
+  std::string error;
+  EXPECT_FALSE(sim.AddRobot(b12, {4.1, 3.0, 0.0}, {}, &error));  // on top of b
+  Rng rng(1);
+  sim.SetCommand(a, {0.3, 0.0}, nullptr);
+  for (int i = 0; i < 1000; ++i) sim.Step(0.01, rng);
+  EXPECT_NEAR(sim.GroundTruth(a).x, 4.0 - 2 * 0.1525, 0.002);
+  EXPECT_TRUE(sim.Bumper(b).empty());  // a B-12 has no bumper ring in its robot file
+  (void)b;
+}
+
+}  // namespace
+}  // namespace robot_sim
