@@ -134,7 +134,9 @@ int SensorModel::RangeBin(double range_m) const {
   const int max_bin = num_bins_ - 1;
   if (!std::isfinite(range_m) || range_m >= params_.max_range_m) return max_bin;
   if (range_m <= 0.0) return 0;
-  return std::min(max_bin, static_cast<int>(std::lround(range_m / params_.range_bin_m)));
+  // The epsilon makes ranges a rounding error apart (a beam and its mirror image) share a bin.
+  return std::min(max_bin,
+                  static_cast<int>(std::floor(range_m / params_.range_bin_m + 0.5 + 1e-6)));
 }
 
 }  // namespace markov_localization
