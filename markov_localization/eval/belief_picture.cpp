@@ -1,7 +1,8 @@
 // Draws the belief of global localization in bonn_department after driving along the
 // symmetric corridor (the situation of Beetz et al. Fig. 3): the marginal over theta, darker =
-// more likely, walls black, the true pose red, the modes' means blue. Writes a PNG (Cairo).
-// Usage: markov_localization_belief_picture WORLD.yaml OUT.png [RESOLUTION_M HEADING_BINS]
+// more likely on a log scale (six decades), walls black, the true pose red, the modes' means blue.
+// Writes a PNG (Cairo). Usage: markov_localization_belief_picture WORLD.yaml OUT.png [RESOLUTION_M
+// HEADING_BINS]
 #include <cairo.h>
 
 #include <cmath>
@@ -83,9 +84,11 @@ int main(int argc, char** argv) {
         v = 0;
       else if (!map.IsState(ix, iy))
         v = 225;
-      else
-        v = 255 -
-            static_cast<int>(std::lround(230.0 * std::sqrt(marginal[map.Index(ix, iy)] / mx)));
+      else {  // logarithmic: six decades below the maximum fade to white
+        const double r = marginal[map.Index(ix, iy)] / mx;
+        const double shade = r > 0 ? std::max(0.0, 1.0 + std::log10(r) / 6.0) : 0.0;
+        v = 255 - static_cast<int>(std::lround(230.0 * shade));
+      }
       for (int dy = 0; dy < s; ++dy)
         for (int dx = 0; dx < s; ++dx) put(ix * s + dx, (map.height() - 1 - iy) * s + dy, v, v, v);
     }
