@@ -1,0 +1,77 @@
+// The table-driven range-sensor model of Beetz et al. section 2 ([BFH97]): P(s | l) by look-up.
+// Expected ranges are precomputed by ray casting for every state cell and every absolute beam
+// direction (the belief's heading bins); a per-beam likelihood table P(z | expected) mixes a
+// Gaussian around the expected range, an exponential term for unexpected obstacles (people,
+// unmapped furniture) that shorten readings, a max-range term and a uniform term. The a priori
+// likelihood P~(z) (the average of P(z | l) over a uniform belief) serves the selective update.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "markov_localization/map_model.h"
+
+namespace markov_localization {
+
+struct SensorModelParameters {
+  /// Beam directions relative to the robot's heading (rad, counter-clockwise); e.g. a 24-sonar
+  /// ring every 15 degrees. Each is rounded to the nearest heading bin of the belief.
+  std::vector<double> beam_angles_rad;
+  double sensor_offset_m = 0.0;     ///< Distance of the sensors from the robot's centre (m), >= 0.
+  double max_range_m = 5.0;         ///< Readings at or beyond this are "no echo" (m), > 0.
+  double range_bin_m = 0.1;         ///< Width of a range bin of the tables (m), > 0; <= 254 bins.
+  double sigma_hit_m = 0.15;        ///< Std. dev. of a reading around the expected range (m), > 0.
+  double lambda_short_per_m = 0.3;  ///< Rate of the unexpected-obstacle term (1/m), > 0.
+  double z_hit = 0.7;               ///< Mixture weights, each in [0, 1], summing to 1.
+  double z_short = 0.1;             ///< Unexpected obstacles (people, furniture not in the map).
+  double z_max = 0.1;   ///< Missed echoes (specular sonar reflections) read as max range.
+  double z_rand = 0.1;  ///< Anything else.
+};
+
+std::vector<std::string> ValidateParameters(const SensorModelParameters& params);
+
+/// A 24-beam ring, 15 degrees apart, beam 0 straight ahead (the B21's sonar ring).
+std::vector<double> SonarRingAngles(int count = 24);
+
+class SensorModel {
+ public:
+  /// Precomputes the tables for `map` and `num_headings` heading bins (bin k is heading
+  /// k * 2 pi / num_headings). Throws std::invalid_argument on invalid parameters.
+  SensorModel(const MapModel& map, int num_headings, const SensorModelParameters& params);
+
+  const SensorModelParameters& parameters() const { return params_; }
+  int num_bins() const { return num_bins_; }  ///< Range bins; the last is max range.
+  int num_headings() const { return num_headings_; }
+  int num_beams() const { return static_cast<int>(beam_offsets_.size()); }
+  /// Heading-bin offset of beam b (its angle rounded to the heading grid).
+  int beam_offset(int b) const { return beam_offsets_[b]; }
+
+  /// The range bin of a reading (m); NaN, infinite and >= max range give the max-range bin.
+  int RangeBin(double range_m) const;
+  /// Expected range bins of all map cells for absolute beam direction bin `direction`
+  /// (row-major like the map); cells that are not states hold the max-range bin.
+  const std::uint8_t* ExpectedRow(int direction) const {
+    return expected_.data() + static_cast<std::size_t>(direction) * num_cells_;
+  }
+  int ExpectedBin(int direction, std::size_t cell) const { return ExpectedRow(direction)[cell]; }
+  /// P(z | expected): probability of range bin z when the map predicts bin `expected`.
+  double Likelihood(int expected, int z) const { return table_[expected * num_bins_ + z]; }
+  /// P~(z): the likelihood of bin z averaged over a uniform belief (every state, every heading).
+  double AverageLikelihood(int z) const { return average_[z]; }
+  /// P(z | expected) / P~(z): the factor of the selective update, eq. (4).
+  float Ratio(int expected, int z) const { return ratio_[expected * num_bins_ + z]; }
+
+ private:
+  SensorModelParameters params_;
+  int num_headings_ = 0;
+  int num_bins_ = 0;
+  std::size_t num_cells_ = 0;
+  std::vector<int> beam_offsets_;
+  std::vector<std::uint8_t> expected_;  // [direction][cell]
+  std::vector<double> table_;           // [expected][z]
+  std::vector<double> average_;         // [z]
+  std::vector<float> ratio_;            // [expected][z]
+};
+
+}  // namespace markov_localization

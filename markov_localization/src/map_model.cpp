@@ -1,0 +1,217 @@
+#include "markov_localization/map_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "spott_map/local_map.h"
+#include "spott_map/map_database.h"
+#include "spott_map/occupancy_raster.h"
+
+namespace markov_localization {
+
+namespace {
+std::string Join(const std::vector<std::string>& errors) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
+  return out.str();
+}
+}  // namespace
+
+std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
+  std::vector<std::string> errors;
+  if (!(p.resolution_m > 0.0 && p.resolution_m <= 2.0))
+    errors.push_back("resolution_m must be in (0, 2] m");
+  if (!(p.state_clearance_m >= 0.0 && p.state_clearance_m <= 2.0))
+    errors.push_back("state_clearance_m must be in [0, 2] m");
+  if (!(p.door_thickness_m > 0.0 && p.door_thickness_m <= 1.0))
+    errors.push_back("door_thickness_m must be in (0, 1] m");
+  if (p.ray_cast_subdivision < 1 || p.ray_cast_subdivision > 8)
+    errors.push_back("ray_cast_subdivision must be in [1, 8]");
+  return errors;
+}
+
+MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParameters& params) {
+  const auto errors = ValidateParameters(params);
+  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  const spott_map::Box bounds = world.Bounds().Inflated(2.0 * params.resolution_m);
+  const Vec2 size = bounds.max - bounds.min;
+  if (!(size.x() > 0.0 && size.y() > 0.0))
+    throw std::invalid_argument("world '" + world.name + "' has no extent (no walls or rooms)");
+  const int width = static_cast<int>(std::ceil(size.x() / params.resolution_m - 1e-6));
+  const int height = static_cast<int>(std::ceil(size.y() / params.resolution_m - 1e-6));
+  // Centre the grid on the world's box: a building symmetric about its centre is then
+  // discretized symmetrically too. Otherwise the twins of a symmetric corridor fall on
+  // different sub-cell offsets, and the sharp 24-beam likelihood lets that artefact pick one
+  // twin with certainty (seen at 15 cm in bonn_department).
+  const Vec2 centre = 0.5 * (bounds.min + bounds.max);
+  const Vec2 origin = centre - 0.5 * params.resolution_m * Vec2(width, height);
+  if (static_cast<double>(width) * height > 4.0e7)
+    throw std::invalid_argument("world '" + world.name + "' is too large for resolution_m");
+  const int sub = params.ray_cast_subdivision;
+  spott_map::OccupancyRaster raster(origin, width * sub, height * sub, params.resolution_m / sub);
+  const auto db = spott_map::MapDatabase::FromWorld(world);
+  spott_map::RasterizeDatabase(db, 0.0, params.door_thickness_m, raster);
+
+  MapModel map;
+  map.origin_ = origin;
+  map.width_ = width;
+  map.height_ = height;
+  map.resolution_ = params.resolution_m;
+  map.subdivision_ = sub;
+  map.fine_width_ = width * sub;
+  map.fine_height_ = height * sub;
+  map.fine_occupied_.assign(static_cast<std::size_t>(map.fine_width_) * map.fine_height_, 0);
+  map.occupied_.assign(static_cast<std::size_t>(width) * height, 0);
+  for (int fy = 0; fy < map.fine_height_; ++fy) {
+    for (int fx = 0; fx < map.fine_width_; ++fx) {
+      if (raster.at(fx, fy) != spott_map::Cell::kObstacle) continue;
+      map.fine_occupied_[static_cast<std::size_t>(fy) * map.fine_width_ + fx] = 1;
+      map.occupied_[map.Index(fx / sub, fy / sub)] = 1;
+    }
+  }
+  // Outside every room is not a state either (the space beyond the outer walls).
+  std::vector<std::uint8_t> outside(map.occupied_.size(), 0);
+  for (int iy = 0; iy < height; ++iy)
+    for (int ix = 0; ix < width; ++ix)
+      outside[map.Index(ix, iy)] = world.RoomContaining(map.CellCentre(ix, iy)) == nullptr;
+  map.ComputeStates(params.state_clearance_m, outside);
+  if (map.num_state_cells_ == 0)
+    throw std::invalid_argument("world '" + world.name + "' leaves no free cell for the robot");
+  return map;
+}
+
+MapModel MapModel::FromOccupancy(const Vec2& origin, int width, int height, double resolution_m,
+                                 const std::vector<std::int8_t>& data, int occupied_threshold,
+                                 double state_clearance_m) {
+  std::vector<std::string> errors;
+  if (width <= 0 || height <= 0) errors.push_back("width and height must be positive");
+  if (!(resolution_m > 0.0 && resolution_m <= 2.0))
+    errors.push_back("resolution_m must be in (0, 2] m");
+  if (width > 0 && height > 0 &&
+      data.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    errors.push_back("data has " + std::to_string(data.size()) + " cells, expected width*height");
+  if (occupied_threshold < 1 || occupied_threshold > 100)
+    errors.push_back("occupied_threshold must be in [1, 100]");
+  if (!(state_clearance_m >= 0.0 && state_clearance_m <= 2.0))
+    errors.push_back("state_clearance_m must be in [0, 2] m");
+  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  MapModel map;
+  map.origin_ = origin;
+  map.width_ = width;
+  map.height_ = height;
+  map.resolution_ = resolution_m;
+  map.occupied_.assign(data.size(), 0);
+  std::vector<std::uint8_t> unknown(data.size(), 0);
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if (data[i] < 0 || data[i] > 100)
+      unknown[i] = 1;
+    else
+      map.occupied_[i] = data[i] >= occupied_threshold;
+  }
+  map.subdivision_ = 1;
+  map.fine_width_ = width;
+  map.fine_height_ = height;
+  map.fine_occupied_ = map.occupied_;
+  map.ComputeStates(state_clearance_m, unknown);
+  if (map.num_state_cells_ == 0)
+    throw std::invalid_argument("occupancy grid leaves no free cell for the robot");
+  return map;
+}
+
+void MapModel::ComputeStates(double clearance_m, const std::vector<std::uint8_t>& excluded) {
+  state_.assign(occupied_.size(), 1);
+  // A cell is a state when its centre is at least the clearance away from every obstacle
+  // square of the fine raster (and, with clearance 0, the centre itself is free).
+  const double fres = resolution_ / subdivision_;
+  const int r = static_cast<int>(std::ceil(clearance_m / fres)) + 1;
+  for (int iy = 0; iy < height_; ++iy) {
+    for (int ix = 0; ix < width_; ++ix) {
+      const std::size_t i = Index(ix, iy);
+      if (excluded[i]) {
+        state_[i] = 0;
+        continue;
+      }
+      // Centre in fine-cell units.
+      const double cx = (ix + 0.5) * subdivision_, cy = (iy + 0.5) * subdivision_;
+      const int fcx = static_cast<int>(cx), fcy = static_cast<int>(cy);
+      bool blocked = false;
+      for (int fy = fcy - r; fy <= fcy + r && !blocked; ++fy) {
+        if (fy < 0 || fy >= fine_height_) continue;
+        for (int fx = fcx - r; fx <= fcx + r; ++fx) {
+          if (fx < 0 || fx >= fine_width_ || !FineOccupied(fx, fy)) continue;
+          const double ex = std::max({0.0, fx - cx, cx - (fx + 1)}) * fres;
+          const double ey = std::max({0.0, fy - cy, cy - (fy + 1)}) * fres;
+          if (ex * ex + ey * ey < clearance_m * clearance_m || (ex == 0.0 && ey == 0.0)) {
+            blocked = true;
+            break;
+          }
+        }
+      }
+      if (blocked) state_[i] = 0;
+    }
+  }
+  // The border row never holds a state: beams and motion need a neighbour on every side.
+  for (int ix = 0; ix < width_; ++ix) state_[Index(ix, 0)] = state_[Index(ix, height_ - 1)] = 0;
+  for (int iy = 0; iy < height_; ++iy) state_[Index(0, iy)] = state_[Index(width_ - 1, iy)] = 0;
+  num_state_cells_ = 0;
+  for (auto s : state_) num_state_cells_ += s;
+}
+
+Vec2 MapModel::CellCentre(int ix, int iy) const {
+  return origin_ + Vec2((ix + 0.5) * resolution_, (iy + 0.5) * resolution_);
+}
+
+std::optional<std::pair<int, int>> MapModel::CellOf(const Vec2& p) const {
+  const double fx = (p.x() - origin_.x()) / resolution_;
+  const double fy = (p.y() - origin_.y()) / resolution_;
+  if (!(fx >= 0.0 && fy >= 0.0)) return std::nullopt;
+  const int ix = static_cast<int>(fx);
+  const int iy = static_cast<int>(fy);
+  if (!Contains(ix, iy)) return std::nullopt;
+  return std::make_pair(ix, iy);
+}
+
+bool MapModel::IsStateAt(const Vec2& p) const {
+  const auto cell = CellOf(p);
+  return cell && IsState(cell->first, cell->second);
+}
+
+double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m) const {
+  // Amanatides-Woo traversal of the cells the beam crosses.
+  const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
+  const double fres = resolution_ / subdivision_;
+  double fx = (from.x() - origin_.x()) / fres;
+  double fy = (from.y() - origin_.y()) / fres;
+  int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+  auto inside = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < fine_width_ && y < fine_height_;
+  };
+  if (!inside(ix, iy)) return max_range_m;
+  if (FineOccupied(ix, iy)) return 0.0;
+  const double inf = std::numeric_limits<double>::infinity();
+  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const double t_delta_x = dx != 0.0 ? std::abs(1.0 / dx) : inf;
+  const double t_delta_y = dy != 0.0 ? std::abs(1.0 / dy) : inf;
+  double t_max_x = dx > 0 ? (ix + 1 - fx) * t_delta_x : (dx < 0 ? (fx - ix) * t_delta_x : inf);
+  double t_max_y = dy > 0 ? (iy + 1 - fy) * t_delta_y : (dy < 0 ? (fy - iy) * t_delta_y : inf);
+  const double max_cells = max_range_m / fres;
+  while (true) {
+    double t;
+    if (t_max_x < t_max_y) {
+      t = t_max_x;
+      t_max_x += t_delta_x;
+      ix += step_x;
+    } else {
+      t = t_max_y;
+      t_max_y += t_delta_y;
+      iy += step_y;
+    }
+    if (t >= max_cells || !inside(ix, iy)) return max_range_m;
+    if (FineOccupied(ix, iy)) return t * fres;
+  }
+}
+
+}  // namespace markov_localization

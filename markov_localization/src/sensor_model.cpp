@@ -1,0 +1,142 @@
+#include "markov_localization/sensor_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace markov_localization {
+
+std::vector<std::string> ValidateParameters(const SensorModelParameters& p) {
+  std::vector<std::string> errors;
+  if (p.beam_angles_rad.empty()) errors.push_back("beam_angles_rad must not be empty");
+  for (double a : p.beam_angles_rad)
+    if (!std::isfinite(a)) errors.push_back("beam_angles_rad holds a non-finite angle");
+  if (!(p.sensor_offset_m >= 0.0 && p.sensor_offset_m < 2.0))
+    errors.push_back("sensor_offset_m must be in [0, 2) m");
+  if (!(p.max_range_m > 0.0 && p.max_range_m <= 100.0))
+    errors.push_back("max_range_m must be in (0, 100] m");
+  if (!(p.range_bin_m > 0.0))
+    errors.push_back("range_bin_m must be > 0 m");
+  else if (p.max_range_m / p.range_bin_m > 254.0)
+    errors.push_back("range_bin_m too small: max_range_m / range_bin_m must be <= 254");
+  if (!(p.sigma_hit_m > 0.0)) errors.push_back("sigma_hit_m must be > 0 m");
+  if (!(p.lambda_short_per_m > 0.0)) errors.push_back("lambda_short_per_m must be > 0 1/m");
+  const double w[] = {p.z_hit, p.z_short, p.z_max, p.z_rand};
+  const char* names[] = {"z_hit", "z_short", "z_max", "z_rand"};
+  for (int i = 0; i < 4; ++i)
+    if (!(w[i] >= 0.0 && w[i] <= 1.0))
+      errors.push_back(std::string(names[i]) + " must be in [0, 1]");
+  if (std::abs(w[0] + w[1] + w[2] + w[3] - 1.0) > 1e-6)
+    errors.push_back("z_hit + z_short + z_max + z_rand must be 1");
+  if (!(p.z_rand > 0.0 || p.z_max > 0.0))
+    errors.push_back("z_rand must be > 0 (or z_max > 0) so that no reading has likelihood 0");
+  return errors;
+}
+
+std::vector<double> SonarRingAngles(int count) {
+  std::vector<double> angles;
+  for (int i = 0; i < count; ++i) angles.push_back(2.0 * M_PI * i / count);
+  return angles;
+}
+
+SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorModelParameters& params)
+    : params_(params), num_headings_(num_headings) {
+  auto errors = ValidateParameters(params);
+  if (num_headings < 4 || num_headings > 3600)
+    errors.push_back("num_headings must be in [4, 3600]");
+  if (!errors.empty()) {
+    std::ostringstream out;
+    for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
+    throw std::invalid_argument(out.str());
+  }
+  const double heading_res = 2.0 * M_PI / num_headings;
+  for (double a : params.beam_angles_rad) {
+    int off = static_cast<int>(std::lround(a / heading_res)) % num_headings;
+    if (off < 0) off += num_headings;
+    beam_offsets_.push_back(off);
+  }
+  const int max_bin = static_cast<int>(std::ceil(params.max_range_m / params.range_bin_m - 1e-9));
+  num_bins_ = max_bin + 1;
+
+  // Expected ranges by ray casting from each state cell's centre, for each heading bin.
+  num_cells_ = map.NumCells();
+  expected_.assign(num_cells_ * num_headings, static_cast<std::uint8_t>(max_bin));
+  std::vector<double> histogram(num_bins_, 0.0);
+  for (int d = 0; d < num_headings; ++d) {
+    const double angle = d * heading_res;
+    const Vec2 offset(params.sensor_offset_m * std::cos(angle),
+                      params.sensor_offset_m * std::sin(angle));
+    std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+    for (int iy = 0; iy < map.height(); ++iy) {
+      for (int ix = 0; ix < map.width(); ++ix) {
+        if (!map.IsState(ix, iy)) continue;
+        const double range =
+            map.RayCast(map.CellCentre(ix, iy) + offset, angle, params.max_range_m);
+        const int bin = RangeBin(range);
+        row[map.Index(ix, iy)] = static_cast<std::uint8_t>(bin);
+        histogram[bin] += 1.0;
+      }
+    }
+  }
+
+  // P(z | e): the mixture, integrated over each bin and normalized over the bins.
+  table_.assign(static_cast<std::size_t>(num_bins_) * num_bins_, 0.0);
+  const double bw = params.range_bin_m;
+  for (int e = 0; e < num_bins_; ++e) {
+    const double expected_m = e * bw;
+    double* row = &table_[static_cast<std::size_t>(e) * num_bins_];
+    double hit_sum = 0.0, short_sum = 0.0;
+    std::vector<double> hit(num_bins_), shrt(num_bins_);
+    for (int z = 0; z < num_bins_; ++z) {
+      const double lo = z == 0 ? -1e9 : (z - 0.5) * bw;
+      const double hi = z == max_bin ? 1e9 : (z + 0.5) * bw;
+      auto cdf = [&](double x) {
+        return 0.5 * std::erfc(-(x - expected_m) / (params.sigma_hit_m * std::sqrt(2.0)));
+      };
+      hit[z] = cdf(hi) - cdf(lo);
+      hit_sum += hit[z];
+      // Unexpected obstacles end the beam before the expected range.
+      if (z < e) {
+        const double a = std::max(0.0, lo), b = std::min(hi, expected_m);
+        shrt[z] =
+            std::exp(-params.lambda_short_per_m * a) - std::exp(-params.lambda_short_per_m * b);
+        short_sum += shrt[z];
+      }
+    }
+    for (int z = 0; z < num_bins_; ++z) {
+      double p = params.z_hit * (hit_sum > 0 ? hit[z] / hit_sum : 0.0);
+      if (short_sum > 0)
+        p += params.z_short * shrt[z] / short_sum;
+      else if (z == e)
+        p += params.z_short;  // nothing can be shorter than 0: mass to the hit
+      if (z == max_bin) p += params.z_max;
+      p += params.z_rand / num_bins_;
+      row[z] = p;
+    }
+  }
+
+  // P~(z) = (1/|L|) sum_l P(z | l): every beam sees the same average under a uniform belief,
+  // since its absolute direction is uniform over the heading bins.
+  double total = 0.0;
+  for (double h : histogram) total += h;
+  average_.assign(num_bins_, 0.0);
+  for (int e = 0; e < num_bins_; ++e)
+    for (int z = 0; z < num_bins_; ++z)
+      average_[z] += histogram[e] / std::max(total, 1.0) * Likelihood(e, z);
+  ratio_.assign(table_.size(), 0.0f);
+  for (int e = 0; e < num_bins_; ++e)
+    for (int z = 0; z < num_bins_; ++z)
+      ratio_[e * num_bins_ + z] = static_cast<float>(Likelihood(e, z) / average_[z]);
+}
+
+int SensorModel::RangeBin(double range_m) const {
+  const int max_bin = num_bins_ - 1;
+  if (!std::isfinite(range_m) || range_m >= params_.max_range_m) return max_bin;
+  if (range_m <= 0.0) return 0;
+  // The epsilon makes ranges a rounding error apart (a beam and its mirror image) share a bin.
+  return std::min(max_bin,
+                  static_cast<int>(std::floor(range_m / params_.range_bin_m + 0.5 + 1e-6)));
+}
+
+}  // namespace markov_localization
