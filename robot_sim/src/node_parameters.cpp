@@ -20,6 +20,7 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
   rate(p.sensor_rate_hz, "sensor_rate_hz");
   rate(p.laser_rate_hz, "laser_rate_hz");
   rate(p.odom_rate_hz, "odom_rate_hz");
+  rate(p.profile_rate_hz, "profile_rate_hz");
   if (!(p.real_time_factor >= 0 && p.real_time_factor <= 1e4)) {
     e.push_back("real_time_factor must be in [0, 10000] (0 = as fast as possible)");
   }

@@ -128,6 +128,35 @@ std::vector<double> SenseLaser(const SimWorld& world, const LaserSpec& laser,
   return ranges;
 }
 
+std::vector<double> SenseProfile(const SimWorld& world, const ProfilerSpec& profiler,
+                                 const TransducerPose& head, double tilt, bool horizontal,
+                                 const btCollisionObject* self, Rng& rng,
+                                 std::vector<double>* angles) {
+  std::vector<double> ranges(profiler.samples);
+  if (angles) angles->resize(profiler.samples);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const double step = profiler.field_of_view / (profiler.samples - 1);
+  for (int k = 0; k < profiler.samples; ++k) {
+    const double a = -profiler.field_of_view / 2 + k * step;
+    if (angles) (*angles)[k] = a;
+    // Direction in the head frame, then pitched by the tilt and turned by the heading.
+    const double yaw = head.yaw + (horizontal ? a : 0.0);
+    const double pitch = tilt + (horizontal ? 0.0 : a);
+    const Eigen::Vector3d dir(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw),
+                              -std::sin(pitch));
+    const double z = noise(rng);
+    double range = profiler.max_range;
+    if (const auto hit = world.CastRay(head.origin, head.origin + dir * profiler.max_range, self)) {
+      range = hit->distance;
+    }
+    if (dir.z() < -1e-12) range = std::min(range, -head.origin.z() / dir.z());  // the floor
+    ranges[k] = range >= profiler.max_range ? profiler.max_range
+                                            : std::clamp(range + z * profiler.noise_stddev,
+                                                         profiler.min_range, profiler.max_range);
+  }
+  return ranges;
+}
+
 std::vector<bool> BumperSegments(const BumperSpec& bumper, const std::vector<double>& angles) {
   std::vector<bool> pressed(bumper.segments, false);
   const double width = 2 * M_PI / bumper.segments;

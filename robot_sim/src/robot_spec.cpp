@@ -65,7 +65,7 @@ SourceError UrdfError(const std::string& urdf_name, const std::string& message) 
 void ReadDrive(YamlReader& in, const YAML::Node& node, DriveSpec& drive) {
   if (!in.ExpectMap(node, "drive",
                     {"kind", "max_linear_mps", "max_angular_rps", "max_linear_accel",
-                     "max_angular_accel", "wheel_separation_m"})) {
+                     "max_angular_accel", "wheel_separation_m", "max_turret_rps"})) {
     return;
   }
   const std::string kind = in.String(node, "kind", "drive", true).value_or("synchro");
@@ -86,6 +86,8 @@ void ReadDrive(YamlReader& in, const YAML::Node& node, DriveSpec& drive) {
   drive.wheel_separation_m = in.Number(node, "wheel_separation_m", "drive",
                                        drive.kind == DriveKind::kDifferential, positive)
                                  .value_or(0.0);
+  drive.max_turret_rps =
+      in.Number(node, "max_turret_rps", "drive", false, NumberRule::kNonNegative).value_or(0.0);
 }
 
 void ReadRing(YamlReader& in, const YAML::Node& node, const std::string& what,
@@ -151,6 +153,33 @@ void ReadLaser(YamlReader& in, const YAML::Node& node, LaserSpec& laser) {
   }
   if (laser.max_range <= laser.min_range) {
     in.Error(node["max_range"], "laser: max_range must exceed min_range");
+  }
+}
+
+void ReadProfiler(YamlReader& in, const YAML::Node& node, const std::string& what,
+                  ProfilerSpec& p) {
+  if (!in.ExpectMap(node, what,
+                    {"name", "link", "pan_joint", "tilt_joint", "samples", "field_of_view",
+                     "min_range", "max_range", "noise_stddev"})) {
+    return;
+  }
+  p.name = in.String(node, "name", what, true).value_or("");
+  p.link = in.String(node, "link", what, true).value_or("");
+  p.pan_joint = in.String(node, "pan_joint", what, true).value_or("");
+  p.tilt_joint = in.String(node, "tilt_joint", what, true).value_or("");
+  p.samples =
+      static_cast<int>(in.Number(node, "samples", what, true, NumberRule::kPositive).value_or(2));
+  p.field_of_view =
+      in.Number(node, "field_of_view", what, true, NumberRule::kPositive).value_or(0.7);
+  p.min_range = in.Number(node, "min_range", what, true, NumberRule::kNonNegative).value_or(0.0);
+  p.max_range = in.Number(node, "max_range", what, true, NumberRule::kPositive).value_or(1.0);
+  p.noise_stddev =
+      in.Number(node, "noise_stddev", what, true, NumberRule::kNonNegative).value_or(0.0);
+  if (p.samples < 2 || p.samples > 10000)
+    in.Error(node["samples"], what + ": samples must be in [2, 10000]");
+  if (p.field_of_view >= M_PI) in.Error(node["field_of_view"], what + ": field_of_view >= pi");
+  if (p.max_range <= p.min_range) {
+    in.Error(node["max_range"], what + ": max_range must exceed min_range");
   }
 }
 
@@ -220,6 +249,21 @@ void ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name, RobotSp
       ring.fire_groups = static_cast<int>(ring.mounts.size());
     }
   }
+  for (ProfilerSpec& p : spec.profilers) {
+    auto mount = MountOf(*model, p.link, spec.base_frame);
+    if (!mount) {
+      errors.push_back(UrdfError(
+          urdf_name,
+          "profiler link '" + p.link + "' missing or not below '" + spec.base_frame + "'"));
+      continue;
+    }
+    p.mount = *mount;
+    for (const std::string& j : {p.pan_joint, p.tilt_joint}) {
+      if (!model->getJoint(j)) {
+        errors.push_back(UrdfError(urdf_name, "profiler '" + p.name + "': no joint '" + j + "'"));
+      }
+    }
+  }
   if (spec.laser) {
     auto mount = MountOf(*model, spec.laser->link, spec.base_frame);
     if (!mount) {
@@ -241,7 +285,8 @@ RobotSpecResult LoadRobotSpecFromStrings(const std::string& robot_yaml,
   YamlReader in(yaml_name);
   const YAML::Node root = in.Parse(robot_yaml);
   RobotSpec spec;
-  if (root && in.ExpectMap(root, "robot file", {"name", "drive", "rings", "laser", "bumper"})) {
+  if (root && in.ExpectMap(root, "robot file",
+                           {"name", "drive", "rings", "laser", "bumper", "range_profilers"})) {
     spec.name = in.String(root, "name", "robot file", true).value_or("");
     if (in.Require(root, "drive", "robot file")) ReadDrive(in, root["drive"], spec.drive);
     if (root["rings"] && in.ExpectSequence(root["rings"], "rings")) {
@@ -253,6 +298,14 @@ RobotSpecResult LoadRobotSpecFromStrings(const std::string& robot_yaml,
           in.Error(root["rings"][i], what + ": duplicate ring name '" + ring.name + "'");
         }
         spec.rings.push_back(ring);
+      }
+    }
+    if (root["range_profilers"] && in.ExpectSequence(root["range_profilers"], "range_profilers")) {
+      for (std::size_t i = 0; i < root["range_profilers"].size(); ++i) {
+        ProfilerSpec p;
+        ReadProfiler(in, root["range_profilers"][i], "range_profilers[" + std::to_string(i) + "]",
+                     p);
+        spec.profilers.push_back(p);
       }
     }
     if (root["laser"]) {

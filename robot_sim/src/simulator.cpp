@@ -1,5 +1,6 @@
 #include "robot_sim/simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,12 +27,16 @@ std::optional<int> Simulator::AddRobot(const RobotSpec& spec, const spott_map::P
                ") is inside '" + solid + "'";
     return std::nullopt;
   }
-  Robot r{spec, start, {}, {}, Odometry(odometry), nullptr, 0.0, false, {}, {}, {}, -1.0, 1.0, 1.0};
+  Robot r;
+  r.spec = spec;
+  r.pose = start;
+  r.odometry = Odometry(odometry);
   r.body = world_->AddRobotBody(spec.name + "_" + std::to_string(robots_.size()), spec.radius_m,
                                 spec.height_m);
   world_->MoveRobotBody(r.body, start.x, start.y, start.yaw);
   r.odometry.Reset({0.0, 0.0, 0.0});
   if (spec.bumper) r.bumper.assign(spec.bumper->segments, false);
+  r.heads.assign(spec.profilers.size(), {0.0, 0.0});
   robots_.push_back(std::move(r));
   return static_cast<int>(robots_.size()) - 1;
 }
@@ -57,6 +62,9 @@ bool Simulator::Collides(const Robot& r, double x, double y) const {
 
 void Simulator::Step(double dt, Rng& rng) {
   for (Robot& r : robots_) {
+    const double turret_step = r.spec.drive.max_turret_rps * dt;
+    r.turret_yaw = WrapAngle(r.turret_yaw + std::clamp(WrapAngle(r.turret_target - r.turret_yaw),
+                                                       -turret_step, turret_step));
     r.twist = LimitVelocity(r.twist, r.command, r.spec.drive, dt);
     spott_map::Pose2 next = Integrate(r.pose, r.twist, dt);
     r.stalled = false;
@@ -153,6 +161,29 @@ std::vector<double> Simulator::SenseLaser(int robot, Rng& rng) {
   return ranges;
 }
 
+std::vector<double> Simulator::SenseProfile(int robot, int index, bool horizontal, Rng& rng,
+                                            std::vector<double>* angles) {
+  Robot& r = robots_.at(robot);
+  const ProfilerSpec& p = r.spec.profilers.at(index);
+  // The heads ride on the turret; pan turns the head about its own vertical axis.
+  TransducerPose head = PlaceMount(p.mount, r.pose, r.turret_yaw);
+  head.yaw = WrapAngle(head.yaw + r.heads[index].first);
+  std::vector<double> ranges = robot_sim::SenseProfile(*world_, p, head, r.heads[index].second,
+                                                       horizontal, r.body, rng, angles);
+  ApplyFaults(r, p.name, ranges, rng);
+  return ranges;
+}
+
+bool Simulator::PointHead(int robot, int index, double pan, double tilt) {
+  Robot& r = robots_.at(robot);
+  if (index < 0 || index >= static_cast<int>(r.heads.size()) || !std::isfinite(pan) ||
+      !std::isfinite(tilt) || std::abs(tilt) > M_PI / 2) {
+    return false;
+  }
+  r.heads[index] = {WrapAngle(pan), tilt};
+  return true;
+}
+
 std::vector<bool> Simulator::Bumper(int robot) {
   Robot& r = robots_.at(robot);
   std::vector<bool> pressed = r.bumper;
@@ -204,6 +235,10 @@ bool Simulator::KnownSensor(const Robot& r, const std::string& sensor) const {
     count = static_cast<std::size_t>(r.spec.laser->beams);
   } else if (r.spec.bumper && name == "bumper") {
     count = static_cast<std::size_t>(r.spec.bumper->segments);
+  } else if (auto it = std::find_if(r.spec.profilers.begin(), r.spec.profilers.end(),
+                                    [&](const ProfilerSpec& p) { return p.name == name; });
+             it != r.spec.profilers.end()) {
+    count = static_cast<std::size_t>(it->samples);
   } else {
     return false;
   }
@@ -263,8 +298,29 @@ bool Simulator::Slip(int robot, double linear_scale, double angular_scale, doubl
   return true;
 }
 
+bool Simulator::ReplaceWorld(const spott_map::World& world, std::string* error) {
+  // Check on a scratch copy first, so that a refusal leaves the old building untouched.
+  SimWorld scratch(world_->params());
+  scratch.Build(world);
+  for (const Robot& r : robots_) {
+    const std::string solid =
+        scratch.SolidAt(r.pose.x, r.pose.y, r.spec.radius_m, r.spec.height_m, nullptr);
+    if (!solid.empty() || !scratch.InsideMap(r.pose.x, r.pose.y)) {
+      if (error) {
+        *error = "robot " + r.spec.name + " at (" + std::to_string(r.pose.x) + ", " +
+                 std::to_string(r.pose.y) + ") would be " +
+                 (solid.empty() ? "outside every room" : "inside '" + solid + "'") + " of world '" +
+                 world.name + "'";
+      }
+      return false;
+    }
+  }
+  world_->Build(world);
+  return true;
+}
+
 void Simulator::SetTurretYaw(int robot, double yaw) {
-  if (std::isfinite(yaw)) robots_.at(robot).turret_yaw = WrapAngle(yaw);
+  if (std::isfinite(yaw)) robots_.at(robot).turret_target = WrapAngle(yaw);
 }
 
 }  // namespace robot_sim

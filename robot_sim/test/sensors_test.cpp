@@ -144,6 +144,36 @@ TEST_F(SensorTest, LaserBeamsMeasureHandComputedRanges) {
   EXPECT_TRUE(std::isinf(SenseLaser(world_, laser, At(5, 3, 0.0), nullptr, rng_)[1]));
 }
 
+TEST_F(SensorTest, HorizontalRangeProfileOfAWall) {
+  ProfilerSpec p;
+  p.samples = 5;
+  p.field_of_view = 0.4;
+  p.max_range = 4.0;
+  p.noise_stddev = 0.0;
+  std::vector<double> angles;
+  const auto r = SenseProfile(world_, p, At(8.95, 4.5, 0.0), 0.0, true, nullptr, rng_, &angles);
+  ASSERT_EQ(r.size(), 5u);
+  EXPECT_NEAR(angles[0], -0.2, 1e-12);
+  EXPECT_NEAR(r[2], 1.0, 1e-9);  // the east wall face, 1 m ahead
+  EXPECT_NEAR(r[0], 1.0 / std::cos(0.2), 1e-9);
+  EXPECT_NEAR(r[4], 1.0 / std::cos(0.2), 1e-9);
+}
+
+TEST_F(SensorTest, VerticalRangeProfileTiltedDownSeesTheFloor) {
+  ProfilerSpec p;
+  p.samples = 5;
+  p.field_of_view = 0.4;
+  p.max_range = 4.0;
+  p.noise_stddev = 0.0;
+  // Head 0.7 m up looking east, tilted 0.5 rad down: samples at 0.3 to 0.7 rad below the
+  // horizon meet the floor at 0.7 / sin(pitch) m.
+  std::vector<double> angles;
+  const auto r = SenseProfile(world_, p, At(5.0, 3.0, 0.0), 0.5, false, nullptr, rng_, &angles);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_NEAR(r[k], 0.7 / std::sin(0.5 + angles[k]), 1e-9) << "sample " << k;
+  }
+}
+
 TEST(BumperTest, ContactAnglesPressTheSegmentsFacingThem) {
   BumperSpec bumper;  // 20 segments of 18 degrees, segment 0 centred on +x
   const double deg = M_PI / 180;

@@ -1,8 +1,10 @@
+#include <btBulletCollisionCommon.h>
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include "robot_sim/sim_world.h"
 #include "test_world.h"
@@ -133,6 +135,61 @@ TEST_F(SimWorldTest, OctomapIsWrittenAsBt) {
   EXPECT_EQ(loaded.size(), world_.octree().size());
   std::remove(path.c_str());
   EXPECT_FALSE(world_.OccupiedLeaves().empty());
+}
+
+TEST_F(SimWorldTest, ClosedFormRaysAgreeWithBulletsOwnRayTest) {
+  // A cylinder and a turned box besides the walls, door leaf and crate.
+  Solid drum;
+  drum.id = "drum";
+  drum.cylinder = true;
+  drum.pose = {4, 2, 0};
+  drum.size_x = drum.size_y = 0.6;
+  drum.height = 0.9;
+  ASSERT_TRUE(world_.AddObstacle(drum, nullptr));
+  Solid board;
+  board.id = "board";
+  board.pose = {6, 4.5, 0.7};
+  board.size_x = 1.2;
+  board.size_y = 0.1;
+  board.height = 1.5;
+  ASSERT_TRUE(world_.AddObstacle(board, nullptr));
+  // Bullet's GJK ray cast stops up to ~2 cm short and grazes corners and its cylinder up to
+  // ~1 cm beyond the true surface (checked by hand in the debugging of this test); the closed
+  // form is exact (hand-computed cases below). So: agreement within 2.5 cm on 98 % of rays.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> ux(0.3, 13.7), uy(0.3, 5.7), uz(0.1, 0.95),
+      ua(-M_PI, M_PI);
+  int hits = 0, rays = 0, disagree = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vector3d o(ux(rng), uy(rng), uz(rng));
+    if (!world_.SolidAt(o.x(), o.y(), 0.01, 1.0, nullptr).empty()) continue;
+    const double a = ua(rng);
+    // Horizontal rays, as every sensor here casts.
+    const Vector3d to = o + 8.0 * Vector3d(std::cos(a), std::sin(a), 0.0);
+    const auto ours = world_.CastRay(o, to);
+    const auto bullet = world_.CastRayBullet(o, to);
+    ++rays;
+    hits += ours.has_value();
+    const bool agree = ours.has_value() == bullet.has_value() &&
+                       (!ours || (std::abs(ours->distance - bullet->distance) < 0.025 &&
+                                  ours->normal.dot(bullet->normal) > 0.95));
+    disagree += !agree;
+  }
+  EXPECT_LT(disagree, rays / 50) << disagree << " of " << rays;
+  EXPECT_GT(hits, 1000);
+  // Hand-computed: from (2, 2) east to the drum of radius 0.3 at (4, 2): 1.7 m, normal -x.
+  const auto ours = world_.CastRay(Vector3d(2, 2, 0.5), Vector3d(9, 2, 0.5));
+  ASSERT_TRUE(ours);
+  EXPECT_NEAR(ours->distance, 1.7, 1e-9);
+  EXPECT_NEAR(ours->normal.x(), -1.0, 1e-9);
+  // 45 degrees up-right from (3, 1): the circle at t = 1.4142 - 0.3 (through the centre).
+  const auto diag = world_.CastRay(Vector3d(3, 1, 0.5), Vector3d(6, 4, 0.5));
+  ASSERT_TRUE(diag);
+  EXPECT_NEAR(diag->distance, std::sqrt(2.0) - 0.3, 1e-9);
+  const auto bullet = world_.CastRayBullet(Vector3d(3, 1, 0.5), Vector3d(6, 4, 0.5));
+  ASSERT_TRUE(bullet);
+  std::printf("drum, 45 degrees: closed form %.4f m, Bullet GJK %.4f m\n", diag->distance,
+              bullet->distance);
 }
 
 TEST(SimWorldParametersTest, EveryViolationIsNamed) {

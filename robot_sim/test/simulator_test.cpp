@@ -4,6 +4,7 @@
 #include <cstring>
 #include <functional>
 
+#include "robot_sim/node_parameters.h"
 #include "robot_sim/simulator.h"
 #include "test_world.h"
 
@@ -129,6 +130,83 @@ TEST_F(SimulatorTest, SensorDropoutLastsItsDurationAndUnknownSensorsAreErrors) {
   EXPECT_FALSE(sim_->InjectFault(id_, "sonar/17", {}, &error));
   EXPECT_FALSE(sim_->InjectFault(id_, "lidar", {}, &error));
   EXPECT_NE(error.find("lidar"), std::string::npos);
+}
+
+TEST_F(SimulatorTest, QuadrisHeadsPointAndProfile) {
+  // Nomad at (8.95 - 0.05 - 1, 4.5) facing east: quadris_1 is 0.05 m ahead of the centre, so its
+  // horizontal profile meets the east wall face (x = 9.95) 1 m ahead in its middle.
+  Start("nomad200", {9.95 - 1.0 - 0.05, 4.5, 0.0});
+  ASSERT_EQ(sim_->spec(id_).profilers.size(), 2u);
+  std::vector<double> angles;
+  auto r = sim_->SenseProfile(id_, 0, true, rng_, &angles);
+  ASSERT_EQ(r.size(), 64u);
+  EXPECT_NEAR(r[31], 1.0 / std::cos(angles[31]), 0.03);
+  // Panned 90 degrees left it looks up the room: the north wall face y = 5.95 is 1.35 m away.
+  ASSERT_TRUE(sim_->PointHead(id_, 0, M_PI / 2, 0.0));
+  r = sim_->SenseProfile(id_, 0, true, rng_, &angles);
+  EXPECT_NEAR(r[31], (5.95 - 4.6) / std::cos(angles[31]), 0.03);
+  EXPECT_FALSE(sim_->PointHead(id_, 2, 0.0, 0.0));
+  EXPECT_FALSE(sim_->PointHead(id_, 0, NAN, 0.0));
+  ASSERT_TRUE(sim_->InjectFault(id_, "quadris_1", {FaultKind::kDropout, 0.0, 10.0}, nullptr));
+  EXPECT_TRUE(std::isnan(sim_->SenseProfile(id_, 0, false, rng_, nullptr)[0]));
+}
+
+TEST_F(SimulatorTest, ReplacingTheWorldKeepsTheRobotOrRefusesAndKeepsEverything) {
+  Start("b21", {3.0, 3.0, 0.0});
+  const auto open_world = spott_map::LoadWorldFromString(
+      "world: {name: hall}\nwalls: {from_rooms: true}\n"
+      "rooms: [{id: r, polygon: [[0, 0], [20, 0], [20, 6], [0, 6]]}]\n"
+      "robot_start: {pose: [2, 2, 0]}\n",
+      "hall.yaml");
+  ASSERT_TRUE(open_world.ok());
+  std::string error;
+  ASSERT_TRUE(sim_->ReplaceWorld(*open_world.world, &error)) << error;
+  Rng rng(1);
+  // No wall at x = 10 any more: the laser straight ahead reaches x = 19.95.
+  auto scan = sim_->SenseLaser(id_, rng);
+  EXPECT_NEAR(scan[90], 19.95 - 3.0 - 0.15, 0.05);
+  const auto blocked = spott_map::LoadWorldFromString(
+      "world: {name: blocked}\nwalls: {from_rooms: true}\n"
+      "rooms: [{id: r, polygon: [[0, 0], [20, 0], [20, 6], [0, 6]]}]\n"
+      "objects: [{id: pillar, kind: cylinder, pose: [3, 3, 0], size: [0.5, 0.5], height: 2}]\n"
+      "robot_start: {pose: [2, 2, 0]}\n",
+      "blocked.yaml");
+  ASSERT_TRUE(blocked.ok());
+  EXPECT_FALSE(sim_->ReplaceWorld(*blocked.world, &error));
+  EXPECT_NE(error.find("pillar"), std::string::npos);
+  scan = sim_->SenseLaser(id_, rng);
+  EXPECT_NEAR(scan[90], 19.95 - 3.0 - 0.15, 0.05);  // still the hall
+}
+
+TEST(NodeParametersTest, EveryViolationIsNamed) {
+  SimNodeParameters p;
+  EXPECT_EQ(ValidateParameters(p).size(), 1u);  // world_file is required
+  p.world_file = "w.yaml";
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.robot = "../etc";
+  p.sensor_rate_hz = 0;
+  p.real_time_factor = -1;
+  p.odometry.linear_scale = 2;
+  const auto e = ValidateParameters(p);
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_NE(e[0].find("robot"), std::string::npos);
+  EXPECT_NE(e[1].find("sensor_rate_hz"), std::string::npos);
+  EXPECT_NE(e[2].find("real_time_factor"), std::string::npos);
+  EXPECT_NE(e[3].find("odometry/linear_scale"), std::string::npos);
+}
+
+TEST_F(SimulatorTest, TurretSlewsAtItsRateAndCarriesTheSonarRing) {
+  // SPOTT's dense scan turns the turret in 2.5 degree steps; the turret turns at 0.79 rad/s.
+  Start("nomad200", {5.0, 3.0, 0.0});
+  sim_->SetTurretYaw(id_, M_PI / 2);
+  Run(1.0);
+  EXPECT_NEAR(sim_->turret_yaw(id_), 0.79, 1e-9);
+  Run(2.0);
+  EXPECT_NEAR(sim_->turret_yaw(id_), M_PI / 2, 1e-9);
+  EXPECT_EQ(sim_->GroundTruth(id_).yaw, 0.0);  // the base did not turn
+  // sonar_1 now faces north: the north wall face (y = 5.95) is 2.95 - 0.2285 m away.
+  const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");
+  EXPECT_NEAR(sim_->SenseRing(id_, sonar, rng_)[0], 2.95 - 0.2285, 0.1);
 }
 
 TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {

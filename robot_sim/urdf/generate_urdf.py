@@ -70,7 +70,8 @@ def nomad200():
   - 16 infrared proximity sensors at the same angles, lower turret, height 0.40 m (assumed).
   - 20 tactile bumper segments around the base (SPOTT section V), height 0.10 m (assumed).
   - Two BIRIS range sensors on pan-tilt heads (QUADRIS), height 0.85 m (assumed), 0.1 m either
-    side of the centre. Their range profiles are not simulated yet (robot_sim README)."""
+    side of the centre; joints quadris_N_pan_joint (about z) and quadris_N_tilt_joint (about y,
+    positive looks down)."""
     b = cylinder_link("base_link", r, h, h / 2, "body", comment="the body: collision cylinder")
     b += '  <link name="turret_link"/>\n'
     b += ('  <joint name="turret_joint" type="continuous"><parent link="base_link"/>'
@@ -80,8 +81,14 @@ def nomad200():
     b += box_link("bumper_link", "0.01 0.01 0.01", "dark")
     b += fixed("bumper_joint", "base_link", "bumper_link", 0, 0, 0.10)
     for i, y in ((1, 0.1), (2, -0.1)):
+        # Pan about z, then tilt about y (positive tilt looks down), then the BIRIS sensor.
+        b += f'  <link name="quadris_{i}_pan"/>\n'
+        b += (f'  <joint name="quadris_{i}_pan_joint" type="continuous"><parent link="turret_link"/>'
+              f'<child link="quadris_{i}_pan"/><origin xyz="0.05 {y:.4f} 0.85"/><axis xyz="0 0 1"/></joint>\n')
         b += box_link(f"quadris_{i}", "0.08 0.06 0.06", "dark")
-        b += fixed(f"quadris_{i}_joint", "turret_link", f"quadris_{i}", 0.05, y, 0.85)
+        b += (f'  <joint name="quadris_{i}_tilt_joint" type="revolute"><parent link="quadris_{i}_pan"/>'
+              f'<child link="quadris_{i}"/><origin xyz="0 0 0"/><axis xyz="0 1 0"/>'
+              f'<limit lower="-0.8" upper="1.2" effort="1" velocity="1"/></joint>\n')
     return robot("nomad200", notes, b)
 
 

@@ -138,12 +138,6 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
   const auto h = [&](int room) {
     return astar ? (graph_.RoomCentre(room) - goal_centre).norm() : 0.0;
   };
-  const auto room_of = [&](int state) {
-    if (state == start_state) return start_room;
-    const auto [a, b] = graph_.DoorRooms(state >> 1);
-    return (state & 1) ? b : a;
-  };
-
   heap_.clear();
   state_seen_[start_state] = stamp_;
   state_g_[start_state] = 0.0;
@@ -152,23 +146,26 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
     room_seen_[start_room] = stamp_;
     room_g_[start_room] = 0.0;
   }
-  heap_.push_back(QueueEntry{h(start_room), 0.0, start_state});
+  heap_.push_back(QueueEntry{h(start_room), 0.0, start_state, start_room});
 
   std::size_t expanded = 0;
   int found = -1;
+  double found_g = 0.0;
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), std::greater<QueueEntry>());
     const QueueEntry top = heap_.back();
     heap_.pop_back();
     const int s = top.state;
-    const int room = room_of(s);
+    const int room = top.room;
     const bool blocks = graph_.HasBlockedPassages(room);
     // A node without blocked passages is left the same way whatever door it was entered by:
-    // settle the node once. A node with blocked passages is settled once per entry door.
-    if (state_closed_[s] == stamp_ || top.g > state_g_[s]) continue;
+    // it is settled once, and its best cost is kept per node. A node with blocked passages is
+    // settled once per entry door, its costs kept per search state.
     if (!blocks) {
-      if (room_closed_[room] == stamp_) continue;
+      if (room_closed_[room] == stamp_ || top.g > room_g_[room]) continue;
       room_closed_[room] = stamp_;
+    } else if (state_closed_[s] == stamp_ || top.g > state_g_[s]) {
+      continue;
     }
     state_closed_[s] = stamp_;
     ++expanded;
@@ -181,31 +178,29 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
                                : (!sides.goal_entries || Contains(*sides.goal_entries, entry_door));
       if (reaches) {
         found = s;
+        found_g = top.g;
         break;
       }
     }
     for (const auto* arc = graph_.ArcsBegin(room); arc != graph_.ArcsEnd(room); ++arc) {
-      if (!graph_.DoorPassable(arc->door)) continue;
-      if (s == start_state && sides.start_exits && !Contains(*sides.start_exits, arc->door)) {
-        continue;
-      }
-      if (blocks && entry_door >= 0 && graph_.PassageBlocked(room, entry_door, arc->door)) {
-        continue;
-      }
+      const int door = arc->door();
+      if (!graph_.DoorPassable(door)) continue;
+      if (s == start_state && sides.start_exits && !Contains(*sides.start_exits, door)) continue;
+      if (blocks && entry_door >= 0 && graph_.PassageBlocked(room, entry_door, door)) continue;
       const int to = arc->to_room;
-      const auto [a, b] = graph_.DoorRooms(arc->door);
-      const int next = 2 * arc->door + (to == b && to != a ? 1 : 0);
+      const int next = arc->to_state;
       const double g = top.g + arc->cost;
       if (!graph_.HasBlockedPassages(to)) {
         if (room_seen_[to] == stamp_ && room_g_[to] <= g) continue;
         room_seen_[to] = stamp_;
         room_g_[to] = g;
+      } else {
+        if (state_seen_[next] == stamp_ && state_g_[next] <= g) continue;
+        state_seen_[next] = stamp_;
+        state_g_[next] = g;
       }
-      if (state_seen_[next] == stamp_ && state_g_[next] <= g) continue;
-      state_seen_[next] = stamp_;
-      state_g_[next] = g;
       state_parent_[next] = s;
-      heap_.push_back(QueueEntry{g + h(to), g, next});
+      heap_.push_back(QueueEntry{g + h(to), g, next, to});
       std::push_heap(heap_.begin(), heap_.end(), std::greater<QueueEntry>());
     }
   }
@@ -216,7 +211,7 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
     return result;
   }
   GlobalPath path;
-  path.cost = state_g_[found];
+  path.cost = found_g;
   path.expanded = expanded;
   for (int s = found; s != start_state; s = state_parent_[s]) path.door_indices.push_back(s >> 1);
   std::reverse(path.door_indices.begin(), path.door_indices.end());
@@ -284,19 +279,19 @@ void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& s
   };
   if (sides.start_exits) {
     for (const auto* arc = graph_.ArcsBegin(start_room); arc != graph_.ArcsEnd(start_room); ++arc) {
-      if (graph_.DoorPassable(arc->door) && !Contains(*sides.start_exits, arc->door) &&
-          !reached[far_of(arc->door, start_room)]) {
+      if (graph_.DoorPassable(arc->door()) && !Contains(*sides.start_exits, arc->door()) &&
+          !reached[far_of(arc->door(), start_room)]) {
         result.blocked_passages.push_back(
-            BlockedPassage{graph_.room(start_room).id, kRobot, graph_.door(arc->door).id});
+            BlockedPassage{graph_.room(start_room).id, kRobot, graph_.door(arc->door()).id});
       }
     }
   }
   if (sides.goal_entries) {
     for (const auto* arc = graph_.ArcsBegin(goal_room); arc != graph_.ArcsEnd(goal_room); ++arc) {
-      if (graph_.DoorPassable(arc->door) && !Contains(*sides.goal_entries, arc->door) &&
-          reached[far_of(arc->door, goal_room)]) {
+      if (graph_.DoorPassable(arc->door()) && !Contains(*sides.goal_entries, arc->door()) &&
+          reached[far_of(arc->door(), goal_room)]) {
         result.blocked_passages.push_back(
-            BlockedPassage{graph_.room(goal_room).id, graph_.door(arc->door).id, kGoal});
+            BlockedPassage{graph_.room(goal_room).id, graph_.door(arc->door()).id, kGoal});
       }
     }
   }

@@ -173,7 +173,9 @@ ProjectedGoal ProjectGoalOntoWindow(const PlanningGraph& graph, const GlobalPath
     out.side = p.side;
   };
 
-  if (n_g == n_r) {
+  // Cases 1 and 2 are for a goal reached inside the robot's node. A path that leaves the node
+  // and comes back (an obstacle inside it separates robot and goal) is the general case.
+  if (n_g == n_r && path.door_indices.empty()) {
     if (goal_in_window) {
       out.projection_case = ProjectionCase::kSameNodeInWindow;
       return out;

@@ -39,10 +39,12 @@ PlanningGraph::PlanningGraph(RoomDoorGraph graph) : graph_(std::move(graph)) {
     const auto [a, b] = door_rooms_[i];
     const Vec2& d = doors[i].center;
     const double cost = (room_centre_[a] - d).norm() + (d - room_centre_[b]).norm();
-    arcs_[fill[a]++] = Arc{static_cast<int>(i), b, cost};
-    arcs_[fill[b]++] = Arc{static_cast<int>(i), a, cost};
+    const int state = 2 * static_cast<int>(i);
+    arcs_[fill[a]++] = Arc{state + 1, b, cost};  // into room_b
+    arcs_[fill[b]++] = Arc{state, a, cost};      // into room_a
   }
   blocked_of_room_.assign(rooms.size(), {});
+  room_blocks_.assign(rooms.size(), 0);
   BuildLocator();
 }
 
@@ -165,6 +167,7 @@ void PlanningGraph::SetBlockedPassages(int room, const std::vector<std::pair<int
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  room_blocks_[room] = keys.empty() ? 0 : 1;
   blocked_of_room_[room] = std::move(keys);
 }
 

@@ -118,7 +118,10 @@ SessionUpdate PlanningSession::Update(const Vec2& robot, const spott_map::Box* w
       out.state = SessionState::kPlanned;
       const int n_r = result.path->room_indices.front();
       tracker_.Update(robot, &planner_.graph().room(n_r).polygon);
-      const spott_map::Box& b = window ? *window : tracker_.window();
+      // A window that no longer holds the robot is stale (the local planner has not moved it
+      // yet): the modelled one is used until it catches up.
+      const bool usable = window && window->Contains(robot);
+      const spott_map::Box& b = usable ? *window : tracker_.window();
       out.projection = ProjectGoalOntoWindow(planner_.graph(), *result.path, robot, *goal_, b);
       out.path = std::move(result.path);
     } else {

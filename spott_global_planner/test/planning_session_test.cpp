@@ -216,6 +216,12 @@ TEST_F(Session, GoalBehindAnObstacleInTheRobotsOwnNodeIsReachedAroundIt) {
   ASSERT_EQ(u.state, SessionState::kPlanned) << u.failure.message;
   EXPECT_EQ(u.path->doors, (Ids{"dAH", "dAB", "dBH"}));
   EXPECT_NEAR(u.path->cost, 9.0 + test::kSqrt17, 1e-9);
+  // Not case 2 (the straight line to the goal crosses the obstacle) but case 3: in the tracked
+  // window [1,4]x[3.5,6.5] dAH is inside, dAB (y in [1.5,2.5]) is not: e_k = dAB, n_k = A.
+  ASSERT_TRUE(u.projection);
+  EXPECT_EQ(u.projection->projection_case, ProjectionCase::kGeneral);
+  EXPECT_EQ(u.projection->edge_id, "dAB");
+  EXPECT_EQ(u.projection->node_id, "A");
   // On the goal's side the robot goes straight there.
   EXPECT_TRUE(session_.Update(Vec2(9, 5)).path->doors.empty());
 }
@@ -236,6 +242,40 @@ TEST_F(Session, UnknownDoorIsRefusedWithoutChangingAnything) {
   EXPECT_FALSE(session_.SetDoorState("nope", spott_map::DoorState::kClosed));
   session_.SetGoal(Vec2(11, 1));
   EXPECT_EQ(session_.Update(Vec2(2, 2), &window_).path->doors, (Ids{"dAB", "dBC"}));
+}
+
+TEST(SessionFitNode, WindowHoldingTheRobotsNodeTurnsCase2IntoCase1) {
+  // The paper's remedy: with fit_node the window grows to hold the robot's node H = [0,12]x[4,6]
+  // around the robot (3,5), so a goal (10,5) in H is inside the window: case 1, not case 2.
+  GlobalPlannerParameters params;
+  params.window.window_size_m = 4.0;
+  params.window.resolution_m = 0.2;
+  params.window.recentre_margin_m = 0.5;
+  params.window.max_window_size_m = 30.0;
+  PlanningSession plain(params);
+  params.window.fit_node = true;
+  PlanningSession fitted(params);
+  for (PlanningSession* s : {&plain, &fitted}) {
+    s->SetGraph(test::MakeTestBuilding());
+    s->SetGoal(Vec2(10, 5));
+  }
+  EXPECT_EQ(plain.Update(Vec2(3, 5)).projection->projection_case,
+            ProjectionCase::kSameNodeOutsideWindow);
+  const SessionUpdate u = fitted.Update(Vec2(3, 5));
+  EXPECT_EQ(u.projection->projection_case, ProjectionCase::kSameNodeInWindow);
+  EXPECT_TRUE(u.projection->window.Contains(Vec2(0, 4)) &&
+              u.projection->window.Contains(Vec2(12, 6)));
+}
+
+TEST_F(Session, StaleLocalWindowThatNoLongerHoldsTheRobotIsNotUsed) {
+  session_.SetGoal(Vec2(11, 1));
+  // window_ is [0.5,3.5]^2; the robot at (6,2) in B has left it: the modelled 3 m window on the
+  // 0.5 m lattice around (6,2), [4.5,7.5]x[0.5,3.5], is used instead.
+  const SessionUpdate u = session_.Update(Vec2(6, 2), &window_);
+  ASSERT_TRUE(u.projection);
+  EXPECT_TRUE(u.projection->window.min.isApprox(Vec2(4.5, 0.5)));
+  EXPECT_TRUE(u.projection->window.max.isApprox(Vec2(7.5, 3.5)));
+  EXPECT_EQ(u.projection->edge_id, "dBC");
 }
 
 TEST_F(Session, TrackedWindowIsUsedWhenTheLocalPlannerGivesNone) {

@@ -53,7 +53,7 @@ std::vector<std::string> ValidateParameters(const OdometryErrorModel& m);
 /// Dead reckoning in the odom frame.
 class Odometry {
  public:
-  explicit Odometry(const OdometryErrorModel& model) : model_(model) {}
+  explicit Odometry(const OdometryErrorModel& model = {}) : model_(model) {}
   /// Accounts for the base moving by `distance` (m, signed) and `rotation` (rad, signed) in one
   /// step; `slip_linear` and `slip_angular` multiply what the encoders measure (slip faults).
   void Update(double distance, double rotation, Rng& rng, double slip_linear = 1.0,

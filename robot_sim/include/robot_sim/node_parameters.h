@@ -19,6 +19,7 @@ struct SimNodeParameters {
   double physics_rate_hz = 100.0;  ///< [10, 10000]
   double sensor_rate_hz = 10.0;    ///< Sonar, infrared, bumper; (0, physics_rate_hz]
   double laser_rate_hz = 10.0;     ///< (0, physics_rate_hz]
+  double profile_rate_hz = 1.0;    ///< QUADRIS profiles (horizontal and vertical); (0, physics]
   double odom_rate_hz = 50.0;      ///< /odom, tf, ground truth, joint states; (0, physics]
   double real_time_factor = 1.0;   ///< Simulated s per wall s; 0 = as fast as possible; [0, 1e4]
   double cmd_vel_timeout_s = 1.0;  ///< Stop without a command for this long (sim s); 0 = never
@@ -28,6 +29,9 @@ struct SimNodeParameters {
   SimWorldParameters world;
   OdometryErrorModel odometry;
   bool publish_octomap_markers = true;
+  /// Publish map->odom from the ground truth (demos and screenshots without localization only:
+  /// off whenever a localization node publishes map->odom).
+  bool publish_truth_map_to_odom = false;
   std::string octomap_file = "/tmp/robot_sim.bt";  ///< Where ~save_octomap writes.
 };
 

@@ -48,6 +48,15 @@ std::vector<double> SenseRangeRing(const SimWorld& world, const RangeRingSpec& r
 std::vector<double> SenseLaser(const SimWorld& world, const LaserSpec& laser,
                                const TransducerPose& pose, const btCollisionObject* self, Rng& rng);
 
+/// One profile of a pan-tilt head (QUADRIS). `horizontal`: samples across the head's horizontal
+/// plane at angles a (about the head's z); otherwise across its vertical plane (a added to the
+/// tilt, positive down). The floor (z = 0) is seen too. Returns one range per sample (m;
+/// max_range for no return); `angles` receives the sample angles (rad).
+std::vector<double> SenseProfile(const SimWorld& world, const ProfilerSpec& profiler,
+                                 const TransducerPose& head, double tilt, bool horizontal,
+                                 const btCollisionObject* self, Rng& rng,
+                                 std::vector<double>* angles);
+
 /// Which bumper segments are pressed, given contact directions in base_link (rad).
 std::vector<bool> BumperSegments(const BumperSpec& bumper, const std::vector<double>& angles);
 

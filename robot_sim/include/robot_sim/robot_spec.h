@@ -32,6 +32,7 @@ struct DriveSpec {
   double max_linear_accel = 0.5;   ///< (m/s^2) > 0
   double max_angular_accel = 2.0;  ///< (rad/s^2) > 0
   double wheel_separation_m = 0;   ///< differential only: distance between the wheels (m) > 0
+  double max_turret_rps = 0;       ///< turret slew rate (rad/s); 0 = no turret
 };
 
 enum class RangeKind { kUltrasound, kInfrared };
@@ -70,6 +71,23 @@ struct LaserSpec {
   Mount mount;                 ///< From the URDF.
 };
 
+/// A pan-tilt range sensor (the Nomad 200's BIRIS heads, QUADRIS: Zelek and Levine, section V):
+/// a line of `samples` range samples across `field_of_view`, in the head's horizontal plane
+/// (horizontal profile) or its vertical plane (vertical profile). Pan turns the head about +z,
+/// tilt about its +y (positive tilt looks down, REP-103).
+struct ProfilerSpec {
+  std::string name;       ///< Topic frame and fault name: "quadris_1".
+  std::string link;       ///< The sensor link (below its pan and tilt joints).
+  std::string pan_joint;  ///< URDF joint names, published on joint_states.
+  std::string tilt_joint;
+  int samples = 64;             ///< >= 2
+  double field_of_view = 0.7;   ///< (rad), (0, pi)
+  double min_range = 0.1;       ///< (m)
+  double max_range = 4.0;       ///< (m) > min_range
+  double noise_stddev = 0.005;  ///< (m)
+  Mount mount;                  ///< From the URDF, at zero pan and tilt.
+};
+
 /// Tactile bumper ring: `segments` equal arcs, segment 0 centred on +x, counter-clockwise.
 struct BumperSpec {
   int segments = 20;
@@ -85,6 +103,7 @@ struct RobotSpec {
   std::vector<RangeRingSpec> rings;
   std::optional<LaserSpec> laser;
   std::optional<BumperSpec> bumper;
+  std::vector<ProfilerSpec> profilers;
   /// Every non-fixed joint of the URDF (published on joint_states for robot_state_publisher).
   std::vector<std::string> movable_joints;
   /// The joint that turns the sensor turret ("turret_joint"), "" when the robot has none.

@@ -51,7 +51,8 @@ struct Solid {
   double height = 0.0;
 };
 
-/// The result of a ray cast.
+/// The result of a ray cast. Rays are cast against Bullet's broadphase (a dynamic AABB tree
+/// over the solids) with a closed-form narrow phase for the upright boxes and cylinders.
 struct RayHit {
   double distance = 0.0;   ///< From the ray's origin (m).
   Eigen::Vector3d point;   ///< Map frame (m).
@@ -88,6 +89,9 @@ class SimWorld {
   /// Nearest hit along the segment from `from` to `to` (map frame), ignoring `ignore`.
   std::optional<RayHit> CastRay(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                                 const btCollisionObject* ignore = nullptr) const;
+  /// The same question through Bullet's own ray test (GJK convex cast; for the benchmark).
+  std::optional<RayHit> CastRayBullet(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                      const btCollisionObject* ignore = nullptr) const;
   /// The same question asked of the OctoMap (for the benchmark: which is faster here).
   std::optional<double> CastRayOctomap(const Eigen::Vector3d& from, const Eigen::Vector3d& dir,
                                        double max_range) const;
@@ -127,6 +131,14 @@ class SimWorld {
     std::unique_ptr<btCollisionShape> shape;
     std::unique_ptr<btCollisionObject> object;
   };
+  struct FootprintHit {
+    std::string id;
+    double gap;               ///< Distance from the circle to the footprint (< 0: overlap).
+    Eigen::Vector2d closest;  ///< Closest point of the footprint (map frame).
+  };
+  /// Solids whose footprint comes within `reach` of the circle (broadphase + closed form).
+  std::vector<FootprintHit> QueryFootprint(double x, double y, double radius, double reach,
+                                           const btCollisionObject* ignore) const;
   Entry* Insert(const Solid& solid);
   void Erase(const std::string& id);
   void Voxelize(const Solid& solid, bool occupied);

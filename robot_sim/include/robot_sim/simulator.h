@@ -46,6 +46,16 @@ class Simulator {
   std::vector<double> SenseRing(int robot, const RangeRingSpec& ring, Rng& rng);
   /// Laser readings (m, +inf for no return; NaN when dropped out), empty without a laser.
   std::vector<double> SenseLaser(int robot, Rng& rng);
+  /// A profile of pan-tilt head `index` (robot's range_profilers order), faults applied.
+  std::vector<double> SenseProfile(int robot, int index, bool horizontal, Rng& rng,
+                                   std::vector<double>* angles);
+  /// Points head `index` (pan about z, tilt positive down, rad); false for a bad index or a
+  /// value that is not finite.
+  bool PointHead(int robot, int index, double pan, double tilt);
+  /// Current pan and tilt of head `index` (rad).
+  std::pair<double, double> Head(int robot, int index) const {
+    return robots_.at(robot).heads.at(index);
+  }
   /// Bumper segments pressed after the last step (all false when dropped out).
   std::vector<bool> Bumper(int robot);
 
@@ -60,7 +70,12 @@ class Simulator {
   /// Odometry measures `linear_scale` / `angular_scale` of the true motion for `duration` s.
   bool Slip(int robot, double linear_scale, double angular_scale, double duration,
             std::string* error);
-  /// Turns the sensor turret (synchro drives) to `yaw` (rad) relative to the base.
+  /// Replaces the building by `world`, keeping the robots, their odometry and faults. Refused
+  /// (false, message; nothing changes) when a robot would stand inside a solid or outside
+  /// every room of the new world.
+  bool ReplaceWorld(const spott_map::World& world, std::string* error);
+  /// Turns the sensor turret (synchro drives) towards `yaw` (rad) relative to the base, at the
+  /// robot's max_turret_rps (the shorter way round).
   void SetTurretYaw(int robot, double yaw);
 
   const spott_map::Pose2& GroundTruth(int robot) const { return robots_.at(robot).pose; }
@@ -84,8 +99,10 @@ class Simulator {
     Odometry odometry;
     btCollisionObject* body = nullptr;
     double turret_yaw = 0.0;
+    double turret_target = 0.0;
     bool stalled = false;
     std::vector<bool> bumper;
+    std::vector<std::pair<double, double>> heads;  ///< Pan and tilt of each range profiler.
     std::map<std::string, SensorFault> faults;
     std::map<std::string, std::vector<double>> last;  ///< Last readings, for stuck faults.
     double slip_until = -1.0;

@@ -12,6 +12,7 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
+#include <spott_msgs/LoadWorld.h>
 #include <spott_msgs/RemoveObstacle.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Trigger.h>
@@ -63,6 +64,10 @@ class SimNode {
     }
     if (spec.laser) scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
     if (spec.bumper) bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
+    if (!spec.profilers.empty()) {
+      profile_pub_ = nh.advertise<spott_msgs::RangeProfile>("range_profile", 10);
+      head_sub_ = nh.subscribe("range_profile/point_head", 10, &SimNode::OnPointHead, this);
+    }
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("sim/octomap_markers", 1, true);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimNode::OnCmdVel, this);
     turret_sub_ = nh.subscribe("turret/command", 10, &SimNode::OnTurret, this);
@@ -75,6 +80,7 @@ class SimNode {
     services_.push_back(sim_nh.advertiseService("sensor_fault", &SimNode::OnSensorFault, this));
     services_.push_back(sim_nh.advertiseService("odometry_slip", &SimNode::OnSlip, this));
     services_.push_back(sim_nh.advertiseService("save_octomap", &SimNode::OnSaveOctomap, this));
+    services_.push_back(sim_nh.advertiseService("load_world", &SimNode::OnLoadWorld, this));
     (void)pnh;
   }
 
@@ -86,6 +92,7 @@ class SimNode {
     const long odom_every = every(params_.odom_rate_hz);
     const long sensor_every = every(params_.sensor_rate_hz);
     const long laser_every = every(params_.laser_rate_hz);
+    const long profile_every = every(params_.profile_rate_hz);
     PublishClock(ros::Time(0, 0));
     PublishOdometry(ros::Time(0, 0));
     ros::WallTime wall_start = ros::WallTime::now();
@@ -108,6 +115,7 @@ class SimNode {
       if (step % odom_every == 0) PublishOdometry(stamp);
       if (step % sensor_every == 0) PublishSensors(stamp);
       if (step % laser_every == 0) PublishLaser(stamp, laser_every * dt);
+      if (step % profile_every == 0) PublishProfiles(stamp);
       if (params_.publish_octomap_markers && sim_->world().revision() != markers_revision_) {
         markers_revision_ = sim_->world().revision();
         markers_pub_.publish(
@@ -141,13 +149,28 @@ class SimNode {
     odom_pub_.publish(
         conv::ToOdometry(odo.pose(), odo.twist(), params_.odom_frame, params_.base_frame, stamp));
     tf_.sendTransform(ToTransform(odo.pose(), params_.odom_frame, params_.base_frame, stamp));
+    if (params_.publish_truth_map_to_odom) {
+      // map->odom = truth * odom^-1.
+      const spott_map::Pose2& t = sim_->GroundTruth(robot_);
+      const spott_map::Pose2& o = odo.pose();
+      const double yaw = t.yaw - o.yaw, c = std::cos(yaw), s = std::sin(yaw);
+      const spott_map::Pose2 map_odom{t.x - (c * o.x - s * o.y), t.y - (s * o.x + c * o.y), yaw};
+      tf_.sendTransform(ToTransform(map_odom, params_.map_frame, params_.odom_frame, stamp));
+    }
     truth_pub_.publish(conv::ToOdometry(sim_->GroundTruth(robot_), sim_->Velocity(robot_),
                                         params_.map_frame, params_.base_frame, stamp));
     sensor_msgs::JointState js;
     js.header.stamp = stamp;
-    for (const std::string& j : sim_->spec(robot_).movable_joints) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    for (const std::string& j : spec.movable_joints) {
+      double position = j == spec.turret_joint ? sim_->turret_yaw(robot_) : 0.0;
+      for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+        const auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+        if (j == spec.profilers[i].pan_joint) position = pan;
+        if (j == spec.profilers[i].tilt_joint) position = tilt;
+      }
       js.name.push_back(j);
-      js.position.push_back(j == sim_->spec(robot_).turret_joint ? sim_->turret_yaw(robot_) : 0.0);
+      js.position.push_back(position);
     }
     joints_pub_.publish(js);
   }
@@ -175,6 +198,54 @@ class SimNode {
     if (!spec.laser) return;
     scan_pub_.publish(
         conv::ToLaserScan(*spec.laser, sim_->SenseLaser(robot_, rng_), period, stamp));
+  }
+
+  void PublishProfiles(const ros::Time& stamp) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+      const auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+      for (const bool horizontal : {true, false}) {
+        std::vector<double> angles;
+        const std::vector<double> ranges =
+            sim_->SenseProfile(robot_, static_cast<int>(i), horizontal, rng_, &angles);
+        profile_pub_.publish(
+            conv::ToRangeProfile(spec.profilers[i], horizontal, pan, tilt, angles, ranges, stamp));
+      }
+    }
+  }
+
+  // Joint positions for the heads' pan and tilt joints (names from the URDF).
+  void OnPointHead(const sensor_msgs::JointState& msg) {
+    const RobotSpec& spec = sim_->spec(robot_);
+    if (msg.position.size() != msg.name.size()) {
+      ROS_WARN_THROTTLE(1.0, "robot_sim: point_head: %zu names but %zu positions", msg.name.size(),
+                        msg.position.size());
+      return;
+    }
+    for (std::size_t k = 0; k < msg.name.size(); ++k) {
+      bool known = false;
+      for (std::size_t i = 0; i < spec.profilers.size(); ++i) {
+        auto [pan, tilt] = sim_->Head(robot_, static_cast<int>(i));
+        if (msg.name[k] == spec.profilers[i].pan_joint) {
+          pan = msg.position[k];
+        } else if (msg.name[k] == spec.profilers[i].tilt_joint) {
+          tilt = msg.position[k];
+        } else {
+          continue;
+        }
+        known = true;
+        if (!sim_->PointHead(robot_, static_cast<int>(i), pan, tilt)) {
+          ROS_WARN_THROTTLE(1.0,
+                            "robot_sim: point_head: refused %s = %f (not finite, or tilt "
+                            "beyond +-pi/2)",
+                            msg.name[k].c_str(), msg.position[k]);
+        }
+      }
+      if (!known) {
+        ROS_WARN_THROTTLE(1.0, "robot_sim: point_head: no pan or tilt joint '%s'",
+                          msg.name[k].c_str());
+      }
+    }
   }
 
   void RunSchedule(double now_s) {
@@ -250,6 +321,22 @@ class SimNode {
     res.message = res.success ? "removed" : error;
     return true;
   }
+  // A new world file; on any error (file, line, column) the old world and the robot stay.
+  bool OnLoadWorld(spott_msgs::LoadWorld::Request& req, spott_msgs::LoadWorld::Response& res) {
+    const auto loaded = spott_map::LoadWorldFile(req.path);
+    for (const auto& e : loaded.errors) res.errors.push_back(e.ToString());
+    std::string error;
+    res.success = loaded.ok() && sim_->ReplaceWorld(*loaded.world, &error);
+    if (!error.empty()) res.errors.push_back(req.path + ": " + error);
+    if (res.success) {
+      ROS_INFO("robot_sim: loaded world '%s' from %s", loaded.world->name.c_str(),
+               req.path.c_str());
+    } else {
+      ROS_WARN("robot_sim: load_world %s refused; keeping the current world", req.path.c_str());
+    }
+    return true;
+  }
+
   bool OnSaveOctomap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
     res.success = sim_->world().WriteOctomap(params_.octomap_file);
     res.message = (res.success ? "wrote " : "cannot write ") + params_.octomap_file;
@@ -267,9 +354,9 @@ class SimNode {
   int markers_revision_ = -1;
   int obstacle_counter_ = 0;
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
-      markers_pub_;
+      markers_pub_, profile_pub_;
   std::vector<ros::Publisher> ring_pubs_, range_pubs_;
-  ros::Subscriber cmd_sub_, turret_sub_;
+  ros::Subscriber cmd_sub_, turret_sub_, head_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
 };

@@ -75,6 +75,34 @@ sensor_msgs::LaserScan ToLaserScan(const LaserSpec& laser, const std::vector<dou
   return msg;
 }
 
+spott_msgs::RangeProfile ToRangeProfile(const ProfilerSpec& profiler, bool horizontal, double pan,
+                                        double tilt, const std::vector<double>& angles,
+                                        const std::vector<double>& ranges, const ros::Time& stamp) {
+  spott_msgs::RangeProfile msg;
+  msg.header.frame_id = profiler.mount.frame_id;
+  msg.header.stamp = stamp;
+  msg.orientation =
+      horizontal ? spott_msgs::RangeProfile::HORIZONTAL : spott_msgs::RangeProfile::VERTICAL;
+  msg.pan = pan;
+  msg.tilt = tilt;
+  msg.max_range = profiler.max_range;
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    const double a = angles.at(k), r = ranges[k];
+    msg.angles.push_back(a);
+    msg.ranges.push_back(r);
+    geometry_msgs::Point32 p;
+    if (std::isfinite(r)) {
+      p.x = r * std::cos(a);
+      p.y = horizontal ? r * std::sin(a) : 0.0;
+      p.z = horizontal ? 0.0 : -r * std::sin(a);  // positive angles look down
+    } else {
+      p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
+    }
+    msg.points.push_back(p);
+  }
+  return msg;
+}
+
 spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<bool>& pressed,
                                     const std::string& base_frame, const ros::Time& stamp) {
   spott_msgs::BumperRing msg;

@@ -98,6 +98,7 @@ std::vector<std::string> Read(const ros::NodeHandle& pnh, SimNodeParameters& p) 
   GetDouble(pnh, "sensor_rate_hz", p.sensor_rate_hz, errors, known);
   GetDouble(pnh, "laser_rate_hz", p.laser_rate_hz, errors, known);
   GetDouble(pnh, "odom_rate_hz", p.odom_rate_hz, errors, known);
+  GetDouble(pnh, "profile_rate_hz", p.profile_rate_hz, errors, known);
   GetDouble(pnh, "real_time_factor", p.real_time_factor, errors, known);
   GetDouble(pnh, "cmd_vel_timeout_s", p.cmd_vel_timeout_s, errors, known);
   Get(pnh, "map_frame", p.map_frame, errors, known);
@@ -115,6 +116,7 @@ std::vector<std::string> Read(const ros::NodeHandle& pnh, SimNodeParameters& p) 
   GetDouble(pnh, "odometry/angular_noise_per_m", p.odometry.angular_noise_per_m, errors, known);
   Get(pnh, "publish_octomap_markers", p.publish_octomap_markers, errors, known);
   Get(pnh, "octomap_file", p.octomap_file, errors, known);
+  Get(pnh, "publish_truth_map_to_odom", p.publish_truth_map_to_odom, errors, known);
   // Unknown names under the node's namespace: most likely typos.
   std::vector<std::string> names;
   ros::param::getParamNames(names);

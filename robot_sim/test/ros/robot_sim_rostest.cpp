@@ -11,10 +11,13 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/JointState.h>
 #include <spott_msgs/AddObstacle.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/Door.h>
 #include <spott_msgs/Kidnap.h>
+#include <spott_msgs/LoadWorld.h>
+#include <spott_msgs/RangeProfile.h>
 #include <spott_msgs/RangeRing.h>
 #include <spott_msgs/SensorFault.h>
 #include <spott_msgs/SetDoorState.h>
@@ -35,6 +38,8 @@ class SimFixture : public ::testing::Test {
     subs_.push_back(nh_.subscribe("bumper", 10, &SimFixture::OnBumper, this));
     subs_.push_back(nh_.subscribe("odom", 50, &SimFixture::OnOdom, this));
     subs_.push_back(nh_.subscribe("sim/ground_truth", 50, &SimFixture::OnTruth, this));
+    subs_.push_back(nh_.subscribe("range_profile", 10, &SimFixture::OnProfile, this));
+    head_ = nh_.advertise<sensor_msgs::JointState>("range_profile/point_head", 10);
     ASSERT_TRUE(ros::service::waitForService("sim/kidnap", ros::Duration(30)));
     ASSERT_TRUE(WaitFor([&] { return have_truth_ && have_sonar_; }, 30.0));
   }
@@ -45,6 +50,11 @@ class SimFixture : public ::testing::Test {
     ++sonar_count_;
   }
   void OnBumper(const spott_msgs::BumperRing& m) { bumper_ = m; }
+  void OnProfile(const spott_msgs::RangeProfile& m) {
+    if (m.header.frame_id == "quadris_1" && m.orientation == spott_msgs::RangeProfile::HORIZONTAL) {
+      profile_ = m;
+    }
+  }
   void OnOdom(const nav_msgs::Odometry& m) { odom_ = m; }
   void OnTruth(const nav_msgs::Odometry& m) {
     if (have_truth_) {
@@ -103,7 +113,8 @@ class SimFixture : public ::testing::Test {
   }
 
   ros::NodeHandle nh_;
-  ros::Publisher cmd_;
+  ros::Publisher cmd_, head_;
+  spott_msgs::RangeProfile profile_;
   std::vector<ros::Subscriber> subs_;
   spott_msgs::RangeRing sonar_;
   spott_msgs::BumperRing bumper_;
@@ -146,6 +157,25 @@ TEST_F(SimFixture, DoorServiceClosesTheDoorForTheSonar) {
   ASSERT_TRUE(ros::service::call("sim/set_door_state", door));
   EXPECT_FALSE(door.response.success);
   EXPECT_NE(door.response.message.find("no_such_door"), std::string::npos);
+}
+
+TEST_F(SimFixture, QuadrisProfilesFollowTheHead) {
+  // Facing the corridor's north end as above: quadris_1 sits 0.05 m ahead of and 0.1 m left of
+  // the centre, i.e. at (9.15, 7.7465), 1.1785 m from the end wall and 1.075 m from the west
+  // wall (x = 8.075).
+  ASSERT_TRUE(Kidnap(9.25, 8.925 - 1.0 - kRadius, M_PI / 2, false));
+  const ros::Time after = ros::Time::now();
+  ASSERT_TRUE(WaitFor([&] { return profile_.header.stamp > after; }, 30.0));
+  EXPECT_NEAR(profile_.ranges[31], 1.1785, 0.02);
+  sensor_msgs::JointState point;
+  point.name = {"quadris_1_pan_joint"};
+  point.position = {M_PI / 2};
+  head_.publish(point);
+  ASSERT_TRUE(WaitFor([&] { return std::abs(profile_.pan - M_PI / 2) < 1e-6; }, 30.0));
+  EXPECT_NEAR(profile_.ranges[31], 1.075, 0.02);
+  point.position = {0.0};
+  head_.publish(point);
+  ASSERT_TRUE(WaitFor([&] { return std::abs(profile_.pan) < 1e-6; }, 30.0));
 }
 
 TEST_F(SimFixture, DrivingIntoAWallStopsTheRobotAndFiresTheBumperFacingIt) {
@@ -199,6 +229,17 @@ TEST_F(SimFixture, DropoutServiceBlanksTheSensorForItsDuration) {
   add.request.kind = "piano";
   ASSERT_TRUE(ros::service::call("sim/add_obstacle", add));
   EXPECT_FALSE(add.response.success);
+}
+
+TEST_F(SimFixture, BadWorldFileIsRefusedAndTheOldWorldStays) {
+  ASSERT_TRUE(Kidnap(9.25, 8.925 - 1.0 - kRadius, M_PI / 2, false));
+  spott_msgs::LoadWorld load;
+  load.request.path = "/nonexistent/world.yaml";
+  ASSERT_TRUE(ros::service::call("sim/load_world", load));
+  EXPECT_FALSE(load.response.success);
+  ASSERT_FALSE(load.response.errors.empty());
+  EXPECT_NE(load.response.errors[0].find("/nonexistent/world.yaml"), std::string::npos);
+  EXPECT_NEAR(FreshSonar().ranges[0], 1.0, 0.07);  // the corridor's end wall is still there
 }
 
 TEST_F(SimFixture, NanVelocityIsRefusedAndTheRobotStops) {

@@ -128,6 +128,7 @@ class GlobalPlanner {
     double f;
     double g;
     int state;
+    int room;  // the node the state is in
     // Min-heap on f; among equal f the deeper entry (larger g), then the lower state, first.
     bool operator>(const QueueEntry& o) const {
       if (f != o.f) return f > o.f;

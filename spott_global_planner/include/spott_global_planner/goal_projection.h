@@ -9,7 +9,9 @@
 //      the centre of e_k and the centre of n_k; the goal is the portion of the side of b_pf
 //      through p_k that lies in n_k and holds p_k.
 // When p_g is within b_pf in another node and every edge of the path is within b_pf, the goal
-// itself is used (case 4 of spott_msgs/ProjectedGoal).
+// itself is used (case 4 of spott_msgs/ProjectedGoal). "n_g = n_r" means a path without doors: a
+// path that leaves n_r and comes back into it (an obstacle inside n_r separates robot and goal)
+// is the general case.
 //
 // The paper leaves some geometry open; the rules used there are reported in `rule`:
 //   - "the line" is the infinite line through centre(n_k) and centre(e_k); of its two

@@ -39,9 +39,12 @@ class PlanningGraph {
   /// One way out of a room: through `door` into `to_room`. `cost` (m) is the length of the
   /// polyline from this room's centre to the door's centre to the other room's centre.
   struct Arc {
-    int door;
+    /// The search state "in to_room, entered through this door": 2 door + (1 when to_room is
+    /// the door's room_b, else 0).
+    int to_state;
     int to_room;
     double cost;
+    int door() const { return to_state >> 1; }
   };
 
   PlanningGraph() = default;
@@ -80,7 +83,7 @@ class PlanningGraph {
 
   /// Replaces the blocked passages of `room`: each pair names two of its doors (indices).
   void SetBlockedPassages(int room, const std::vector<std::pair<int, int>>& pairs);
-  bool HasBlockedPassages(int room) const { return !blocked_of_room_[room].empty(); }
+  bool HasBlockedPassages(int room) const { return room_blocks_[room] != 0; }
   bool PassageBlocked(int room, int door_a, int door_b) const;
   /// Every blocked passage, rooms in graph order, pairs sorted.
   std::vector<BlockedPassage> BlockedPassages() const;
@@ -100,6 +103,7 @@ class PlanningGraph {
   std::vector<std::uint8_t> passable_;
   // Per room: sorted keys of its blocked door pairs (empty for most rooms).
   std::vector<std::vector<std::uint64_t>> blocked_of_room_;
+  std::vector<std::uint8_t> room_blocks_;  // 1 where blocked_of_room_ is not empty (hot path)
 
   // Point location: a uniform grid over the rooms' bounding boxes; each cell lists the rooms
   // whose box meets it (room order kept, so the first listed room wins).

@@ -60,8 +60,8 @@ class PlanningSession {
   void ClearGoal();
   const std::optional<Vec2>& goal() const { return goal_; }
 
-  /// Plans from `robot` to the goal and projects it onto `window` (the local planner's, or the
-  /// tracked one when null).
+  /// Plans from `robot` to the goal and projects it onto `window` (the local planner's), or onto
+  /// the tracked one when `window` is null or no longer holds the robot.
   SessionUpdate Update(const Vec2& robot, const spott_map::Box* window = nullptr);
 
   /// A one-off plan that leaves the session's goal alone (the node's service).

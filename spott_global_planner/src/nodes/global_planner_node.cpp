@@ -42,8 +42,9 @@ std::string Structure(const spott_msgs::RoomDoorGraph& g) {
     s += ')';
   }
   for (const auto& d : g.doors) {
-    s += d.id + ':' + d.room_a + '-' + d.room_b + '@' + std::to_string(d.centre.x) + ',' +
-         std::to_string(d.centre.y) + ';';
+    s += d.id + ':' + d.room_a + '-' + d.room_b + '/' + std::to_string(d.kind) + '@' +
+         std::to_string(d.centre.x) + ',' + std::to_string(d.centre.y) + 'w' +
+         std::to_string(d.width) + ';';
   }
   return s;
 }
@@ -69,6 +70,11 @@ class GlobalPlannerNode {
 
  private:
   void OnGraph(const spott_msgs::RoomDoorGraph& msg) {
+    if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.frame_id) {
+      ROS_ERROR("global_planner: refusing room_door_graph in frame '%s' (expected '%s')",
+                msg.header.frame_id.c_str(), params_.frame_id.c_str());
+      return;
+    }
     std::string error;
     std::optional<spott_map::RoomDoorGraph> graph = map_conv::FromMsg(msg, &error);
     if (!graph) {

@@ -2,9 +2,11 @@
 // of the unit tests (test/data/three_rooms_hallway.yaml), the robot fixed at (1.1,1.1) in room A
 // by a static transform this test broadcasts. Doors are closed through the world server (as the
 // map's owner does when the robot finds one closed) and the node must replan; an obstacle sent
-// as a map update blocks a passage through the hallway; bad requests are refused and the node
-// keeps its goal.
+// as a map update blocks a passage through the hallway; bad requests (and a malformed graph) are
+// refused and the node keeps its goal and graph; the window the local planner publishes on
+// local_window is the one the goal is projected onto.
 #include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PolygonStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <spott_msgs/Door.h>
@@ -13,6 +15,7 @@
 #include <spott_msgs/MapUpdate.h>
 #include <spott_msgs/PlanGlobalPath.h>
 #include <spott_msgs/ProjectedGoal.h>
+#include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/SetDoorState.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
@@ -188,6 +191,51 @@ TEST_F(GlobalPlannerTest, BadRequestsAreRefusedWithTheReasonAndTheGoalIsKept) {
   // Still planning to (11,1): the path of the first test stands.
   ASSERT_TRUE(path.WaitFor([](const auto& p) { return !p.waypoints.empty(); }));
   EXPECT_TRUE(Near(path.msg()->waypoints.back(), 11.0, 1.0));
+
+  // A malformed graph (a door naming a room that does not exist) is refused; the node keeps its
+  // graph and still plans.
+  ros::Publisher graph_pub = nh_.advertise<spott_msgs::RoomDoorGraph>("room_door_graph", 1);
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (graph_pub.getNumSubscribers() == 0 && ros::WallTime::now() < end) {
+    ros::WallDuration(0.05).sleep();
+  }
+  spott_msgs::RoomDoorGraph bad;
+  bad.world = "broken";
+  bad.doors.resize(1);
+  bad.doors[0].id = "dX";
+  bad.doors[0].room_a = "A";
+  bad.doors[0].room_b = "Z";
+  graph_pub.publish(bad);
+  ros::WallDuration(1.0).sleep();
+  ASSERT_TRUE(ros::service::call("/global_planner/plan_global_path", srv));
+  EXPECT_TRUE(srv.response.success) << srv.response.message;
+}
+
+TEST_F(GlobalPlannerTest, FollowsTheWindowTheLocalPlannerPublishes) {
+  // After the first test dBC is open again: A-dAB-B-dBC-C. A local window [-1,3]^2 leaves dAB
+  // (x = 4) outside: e_k = dAB, n_k = A, the line y = 2 from A's centre (2,2) leaves the window
+  // at (3,2); A holds y in [0,3] of the right side x = 3.
+  ros::Publisher window_pub = nh_.advertise<geometry_msgs::PolygonStamped>("local_window", 1, true);
+  geometry_msgs::PolygonStamped w;
+  w.header.frame_id = "map";
+  for (const auto& [x, y] : {std::pair<float, float>{-1, -1}, {3, -1}, {3, 3}, {-1, 3}}) {
+    geometry_msgs::Point32 p;
+    p.x = x;
+    p.y = y;
+    w.polygon.points.push_back(p);
+  }
+  window_pub.publish(w);
+  Latest<spott_msgs::ProjectedGoal> projected(nh_, "projected_goal");
+  ASSERT_TRUE(projected.WaitFor([](const auto& g) { return g.edge_id == "dAB"; }))
+      << (projected.msg() ? projected.msg()->edge_id : "no projected goal");
+  const auto& g = *projected.msg();
+  EXPECT_EQ(g.node_id, "A");
+  EXPECT_TRUE(Near(g.projected_point, 3.0, 2.0));
+  EXPECT_TRUE((Near(g.border_start, 3.0, 0.0) && Near(g.border_end, 3.0, 3.0)) ||
+              (Near(g.border_start, 3.0, 3.0) && Near(g.border_end, 3.0, 0.0)));
+  ASSERT_EQ(g.window.points.size(), 4u);
+  EXPECT_FLOAT_EQ(g.window.points[0].x, -1.0f);
+  EXPECT_FLOAT_EQ(g.window.points[2].y, 3.0f);
 }
 
 }  // namespace

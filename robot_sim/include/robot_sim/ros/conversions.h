@@ -12,6 +12,7 @@
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/Kidnap.h>
 #include <spott_msgs/OdometrySlip.h>
+#include <spott_msgs/RangeProfile.h>
 #include <spott_msgs/RangeRing.h>
 #include <spott_msgs/SensorFault.h>
 #include <spott_msgs/SetDoorState.h>
@@ -33,6 +34,10 @@ sensor_msgs::Range ToRange(const RangeRingSpec& ring, std::size_t index, double 
                            const ros::Time& stamp);
 sensor_msgs::LaserScan ToLaserScan(const LaserSpec& laser, const std::vector<double>& ranges,
                                    double scan_period, const ros::Time& stamp);
+/// A QUADRIS profile in the head's frame (the URDF link below its pan and tilt joints).
+spott_msgs::RangeProfile ToRangeProfile(const ProfilerSpec& profiler, bool horizontal, double pan,
+                                        double tilt, const std::vector<double>& angles,
+                                        const std::vector<double>& ranges, const ros::Time& stamp);
 spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<bool>& pressed,
                                     const std::string& base_frame, const ros::Time& stamp);
 nav_msgs::Odometry ToOdometry(const spott_map::Pose2& pose, const Twist2& twist,
