@@ -78,14 +78,19 @@ std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spo
 
 }  // namespace
 
-DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
-                   const std::vector<std::string>& doors_to_close, double timeout_s) {
+DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options) {
+  const std::string& world_file = options.world_file;
+  const std::vector<std::string>& doors_to_close = options.doors_to_close;
+  const double timeout_s = options.timeout_s;
   DemoReport report;
   // The report says which parts of the designed stack this build lacks, rather than a list
   // written by hand that goes stale.
   for (const char* package : {"robot_sim", "markov_localization", "spott_global_planner",
                               "spott_harmonic_planner", "spott_tr_plus", "rpl_executive"}) {
+    const bool runs =
+        std::find(options.running.begin(), options.running.end(), package) != options.running.end();
     (ros::package::getPath(package).empty() ? report.stack_packages_missing
+     : runs                                 ? report.stack_packages_running
                                             : report.stack_packages_not_run)
         .push_back(package);
   }
@@ -195,6 +200,10 @@ DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
     srv.request.state = state;
     set_door.call(srv);
   }
+  if (!options.goals.empty()) {
+    report.navigation =
+        RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s, timeout_s);
+  }
   report.ok = true;
   report.elapsed_s = (ros::WallTime::now() - start).toSec();
   return report;
@@ -204,7 +213,9 @@ std::string FormatReport(const DemoReport& r) {
   std::ostringstream out;
   const std::string rule(72, '=');
   out << "\n" << rule << "\n SPOTT-ROS demo report: world " << r.world << "\n" << rule << "\n";
-  out << " Running: world_server (spott_map: the map database of SPOTT section III.A).\n";
+  out << " Running: world_server (spott_map: the map database of SPOTT section III.A)";
+  for (const std::string& p : r.stack_packages_running) out << ", " << p;
+  out << "\n";
   const auto list = [&out](const char* title, const std::vector<std::string>& packages) {
     if (packages.empty()) return;
     out << title;
@@ -250,6 +261,7 @@ std::string FormatReport(const DemoReport& r) {
       << " m + localization error " << window.max_localization_error_m
       << " m, '.' free, 'R' robot):\n";
   for (const std::string& row : r.local_window) out << "   " << row << "\n";
+  out << FormatNavigation(r.navigation);
   out << "\n Demo finished in " << std::fixed << std::setprecision(1) << r.elapsed_s << " s.\n"
       << rule << "\n";
   return out.str();

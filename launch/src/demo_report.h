@@ -7,6 +7,8 @@
 
 #include <ros/ros.h>
 
+#include "demo_navigation.h"
+
 namespace spott_launch {
 
 struct DemoReport {
@@ -32,15 +34,25 @@ struct DemoReport {
   std::vector<DoorExperiment> door_experiments;
   std::vector<std::string> local_window;  ///< ASCII rows, north first.
   double elapsed_s = 0.0;
+  std::vector<std::string> stack_packages_running;  ///< Run by demo.launch.
   std::vector<std::string> stack_packages_missing;  ///< Packages of the stack not in this build.
   std::vector<std::string> stack_packages_not_run;  ///< Built, but demo.launch does not run them.
+  NavigationReport navigation;
 };
 
-/// Runs the demo against a running world_server: reads its latched topics, closes each door of
-/// `doors_to_close` in turn through its service and reports reachability, then reopens them.
-/// `world_file` supplies what a scenario knows but the stack does not (start pose, objects).
-DemoReport RunDemo(ros::NodeHandle& nh, const std::string& world_file,
-                   const std::vector<std::string>& doors_to_close, double timeout_s);
+struct DemoOptions {
+  std::string world_file;  ///< What a scenario knows but the stack does not (start, objects).
+  std::vector<std::string> doors_to_close;
+  double timeout_s = 30.0;           ///< For each answer of the running nodes (s).
+  std::vector<std::string> running;  ///< Stack packages demo.launch runs (for the report).
+  std::vector<std::string> goals;    ///< Places to drive to, in order; empty: no navigation.
+  double leg_timeout_s = 300.0;      ///< Simulated time allowed per leg (s).
+};
+
+/// Runs the demo against the running stack: reads the world server's latched topics, closes
+/// each door of `doors_to_close` in turn through its service and reports reachability, then
+/// reopens them; then drives the robot to each of `goals` (see RunNavigation).
+DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options);
 
 /// The report as a user reads it.
 std::string FormatReport(const DemoReport& report);

@@ -10,18 +10,23 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "demo_report");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
-  std::string world_file;
-  std::vector<std::string> doors;
-  double timeout_s = 30.0;
-  if (!pnh.getParam("world_file", world_file)) {
+  spott_launch::DemoOptions options;
+  if (!pnh.getParam("world_file", options.world_file)) {
     ROS_FATAL("demo_report: ~world_file is required");
     return 1;
   }
-  pnh.getParam("doors_to_close", doors);
-  pnh.param("timeout", timeout_s, timeout_s);
+  pnh.getParam("doors_to_close", options.doors_to_close);
+  pnh.getParam("running", options.running);
+  pnh.getParam("goals", options.goals);
+  pnh.param("timeout", options.timeout_s, options.timeout_s);
+  pnh.param("leg_timeout", options.leg_timeout_s, options.leg_timeout_s);
+  if (!(options.timeout_s > 0.0) || !(options.leg_timeout_s > 0.0)) {
+    ROS_FATAL("demo_report: ~timeout and ~leg_timeout must be > 0 s");
+    return 1;
+  }
   std::string report_file;  // optional copy of the report (./spott demo prints it after shutdown)
   pnh.param("report_file", report_file, report_file);
-  const spott_launch::DemoReport report = spott_launch::RunDemo(nh, world_file, doors, timeout_s);
+  const spott_launch::DemoReport report = spott_launch::RunDemo(nh, options);
   const std::string text = spott_launch::FormatReport(report);
   std::cout << text << std::flush;
   if (!report_file.empty()) {

@@ -18,7 +18,10 @@ TEST(Demo, ReportsTheCimOfficeWorldAndDoorClosures) {
   ros::NodeHandle pnh("~");
   std::string world_file;
   ASSERT_TRUE(pnh.getParam("world_file", world_file));
-  const auto r = spott_launch::RunDemo(nh, world_file, {"d_lab_w", "d_lab_e", "hall_join"}, 30.0);
+  spott_launch::DemoOptions options;
+  options.world_file = world_file;
+  options.doors_to_close = {"d_lab_w", "d_lab_e", "hall_join"};
+  const auto r = spott_launch::RunDemo(nh, options);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_EQ(r.world, "cim_office");
   EXPECT_EQ(r.rooms, 12);

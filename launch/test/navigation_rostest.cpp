@@ -1,0 +1,44 @@
+// End to end on hilare_room: the global planner, the harmonic planner and the simulator together
+// bring the robot to two places without touching anything, judged on the ground truth.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include "demo_navigation.h"
+#include "spott_map/world_loader.h"
+
+namespace {
+
+TEST(Navigation, TheStackDrivesTheRobotToPlacesWithoutContact) {
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  std::string world_file;
+  ASSERT_TRUE(pnh.getParam("world_file", world_file));
+  const spott_map::WorldLoadResult world = spott_map::LoadWorldFile(world_file);
+  ASSERT_TRUE(world.ok()) << spott_map::FormatErrors(world.errors);
+  const spott_launch::NavigationReport report = spott_launch::RunNavigation(
+      nh, *world.world, {"wall_follow_start", "zone_exit"}, /*leg_timeout_s=*/120.0,
+      /*connect_timeout_s=*/30.0);
+  ASSERT_TRUE(report.ran) << report.skipped;
+  ASSERT_EQ(report.legs.size(), 2u);
+  // From the start (0.8, 5.2) to wall_follow_start (6.0, 2.5): 5.9 m as the crow flies.
+  const double straight[2] = {5.86, 2.40};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const spott_launch::NavigationLeg& leg = report.legs[i];
+    SCOPED_TRACE(leg.goal);
+    EXPECT_TRUE(leg.reached) << leg.outcome;
+    EXPECT_LT(leg.final_error_m, 0.3);  // goal_tolerance 0.2 m plus the odometry's drift
+    EXPECT_EQ(leg.bumper_hits, 0);
+    EXPECT_GT(leg.min_wall_distance_m, 0.225);  // the Nomad 200's radius: no contact
+    EXPECT_GT(leg.path_length_m, straight[i] - 0.3);
+    EXPECT_LT(leg.path_length_m, 1.5 * straight[i]);
+  }
+  EXPECT_EQ(report.legs[0].global_path, "room");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "navigation_rostest");
+  return RUN_ALL_TESTS();
+}
