@@ -109,6 +109,12 @@ void LocalPlanner::SetBorderGoal(const spott_map::Segment& segment) {
   goal_dirty_ = true;
 }
 
+void LocalPlanner::ClearBorderGoal() {
+  if (!border_goal_) return;
+  border_goal_.reset();
+  goal_dirty_ = true;
+}
+
 void LocalPlanner::ClearGoal() {
   goal_.reset();
   border_goal_.reset();
@@ -140,7 +146,7 @@ void LocalPlanner::PlaceGoal() {
   const double r = window_.raster().resolution();
   const spott_map::Box inner{b.min + Vec2(r, r), b.max - Vec2(r, r)};
   bool ok;
-  if (inner.Contains(*goal_)) {
+  if (inner.Contains(*goal_) && !border_goal_) {
     ok = field_.SetGoalPoint(*goal_);
     if (!ok) status_.problem = "the goal lies in a padded obstacle";
   } else {

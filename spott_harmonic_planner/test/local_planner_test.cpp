@@ -134,6 +134,24 @@ TEST(LocalPlanner, GoalOutsideWindowIsProjectedAndWindowRecentresNearBorder) {
   EXPECT_FALSE(planner.status().goal_on_border);  // now inside: a point goal
 }
 
+// The target lies in the window, but the global planner says the way leaves it (a wall between,
+// the door outside the window): its border goal wins until it withdraws it.
+TEST(LocalPlanner, GlobalBorderGoalWinsOverATargetInsideTheWindowUntilCleared) {
+  LocalPlanner planner(SmallWindow());
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(2.0, 0.0));
+  // The west border of the window centred on the robot: x = -3.5.
+  planner.SetBorderGoal({Vec2(-3.5, -0.6), Vec2(-3.5, 0.6)});
+  for (int i = 0; i < 10; ++i) planner.Cycle();
+  ASSERT_TRUE(planner.status().has_goal);
+  EXPECT_TRUE(planner.status().goal_on_border);
+  EXPECT_NEAR(std::abs(planner.Steer(SpeedMode::kNormal, std::nullopt).heading), M_PI, 0.1);
+  planner.ClearBorderGoal();
+  for (int i = 0; i < 10; ++i) planner.Cycle();
+  EXPECT_FALSE(planner.status().goal_on_border);
+  EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.0, 0.1);
+}
+
 TEST(LocalPlanner, ProjectionFollowsLineFromRobotToGoal) {
   const spott_map::Box w{Vec2(-3.5, -3.5), Vec2(3.5, 3.5)};
   const auto s = ProjectGoalOntoWindow(Vec2(0, 0), Vec2(10, 5), w, 0.5);

@@ -61,8 +61,13 @@ class LocalPlanner {
   void SetMap(const spott_map::MapDatabase& db);
   /// The target (map frame). Projected onto the window border while outside it.
   void SetGoal(const Vec2& goal);
-  /// A border goal projected by the global planner (Fig. 14), used while the target is outside.
+  /// A border goal projected by the global planner (Fig. 14). While one is set it is used even
+  /// when the target lies inside the window: the global path says the way to the target leaves
+  /// the window (e.g. the target is behind a wall, reached through a door outside the window).
   void SetBorderGoal(const spott_map::Segment& segment);
+  /// The global planner's projection ended (the way to the target is inside the window): descend
+  /// to the target itself again (or to the planner's own projection when it is outside).
+  void ClearBorderGoal();
   void ClearGoal();
   /// (b) A position estimate from localization: replaces the dead-reckoned pose.
   void CorrectPose(const spott_map::Pose2& estimate);

@@ -9,6 +9,7 @@
 // (spott_msgs/PotentialFieldStatus), ~steering (spott_msgs/SteeringStatus), ~potential
 // (nav_msgs/OccupancyGrid, latched), ~contours (visualization_msgs/Marker), ~path (nav_msgs/Path).
 #include <actionlib/server/simple_action_server.h>
+#include <geometry_msgs/PolygonStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -36,6 +37,7 @@ class HarmonicPlannerNode {
       : params_(p), planner_(p.planner), server_(pnh, "navigate", false), listener_(tf_) {
     cmd_pub_ = pnh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     status_pub_ = pnh.advertise<spott_msgs::PotentialFieldStatus>("status", 1);
+    window_pub_ = nh.advertise<geometry_msgs::PolygonStamped>("local_window", 1, true);
     steering_pub_ = pnh.advertise<spott_msgs::SteeringStatus>("steering", 1);
     potential_pub_ = pnh.advertise<nav_msgs::OccupancyGrid>("potential", 1, true);
     contours_pub_ = pnh.advertise<visualization_msgs::Marker>("contours", 1, true);
@@ -81,7 +83,11 @@ class HarmonicPlannerNode {
   }
 
   void OnProjected(const spott_msgs::ProjectedGoal& msg) {
-    if (!server_.isActive() || !msg.on_border) return;
+    if (!server_.isActive()) return;
+    if (!msg.on_border) {  // the way to the target lies inside the window
+      planner_.ClearBorderGoal();
+      return;
+    }
     planner_.SetBorderGoal(
         {Vec2(msg.border_start.x, msg.border_start.y), Vec2(msg.border_end.x, msg.border_end.y)});
   }
@@ -140,6 +146,21 @@ class HarmonicPlannerNode {
     cmd_pub_.publish(geometry_msgs::Twist());
   }
 
+  // The window b_pf, so that the global planner projects onto this very window (SPOTT III.D.2).
+  void PublishWindow(const ros::Time& now) {
+    const spott_map::Box b = planner_.window().bounds();
+    geometry_msgs::PolygonStamped w;
+    w.header.frame_id = params_.frame_id;
+    w.header.stamp = now;
+    for (const Vec2& c : {b.min, Vec2(b.max.x(), b.min.y()), b.max, Vec2(b.min.x(), b.max.y())}) {
+      geometry_msgs::Point32 p;
+      p.x = static_cast<float>(c.x());
+      p.y = static_cast<float>(c.y());
+      w.polygon.points.push_back(p);
+    }
+    window_pub_.publish(w);
+  }
+
   void Cycle(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     try {  // (b) the localization estimate, map -> base_link
@@ -153,6 +174,7 @@ class HarmonicPlannerNode {
     planner_.Cycle();
     solve_time_ += (ros::WallTime::now() - t0).toSec();
     status_pub_.publish(conv::ToStatus(planner_, solve_time_, params_.frame_id, now));
+    if (planner_.status().recentred) PublishWindow(now);
     if (++cycle_ % params_.visualization_every == 0 && planner_.status().has_goal) {
       potential_pub_.publish(conv::ToPotentialImage(planner_.field(), params_.frame_id, now));
       contours_pub_.publish(conv::ToContours(planner_.field(), params_.frame_id, now));
@@ -210,6 +232,7 @@ class HarmonicPlannerNode {
   actionlib::SimpleActionServer<spott_msgs::NavigateAction> server_;
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
+  ros::Publisher window_pub_;
   ros::Publisher cmd_pub_, status_pub_, steering_pub_, potential_pub_, contours_pub_, path_pub_;
   ros::Subscriber features_sub_, graph_sub_, projected_sub_, odom_sub_;
   ros::Timer timer_;
