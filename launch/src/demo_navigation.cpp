@@ -31,6 +31,7 @@ struct LegWatcher {
   double min_wall_distance_m = std::numeric_limits<double>::infinity();
   int bumper_hits = 0;
   std::string global_path;  ///< The first plan made for the current goal.
+  std::string last_path;    ///< The latest plan (latched: unchanged plans are not re-sent).
   ros::Time goal_time;
 
   void Reset(const ros::Time& now) {
@@ -61,9 +62,8 @@ struct LegWatcher {
       if (i < path.doors.size()) text += " -> " + path.doors[i];
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (global_path.empty() && path.header.stamp >= goal_time) {
-      global_path = text.empty() ? "(no path)" : text;
-    }
+    last_path = text.empty() ? "(no path)" : text;
+    if (global_path.empty() && path.header.stamp >= goal_time) global_path = last_path;
   }
 };
 
@@ -186,7 +186,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
       leg.outcome = text;
     }
     std::lock_guard<std::mutex> lock(watcher.mutex);
-    leg.global_path = watcher.global_path;
+    leg.global_path = watcher.global_path.empty() ? watcher.last_path : watcher.global_path;
     leg.path_length_m = watcher.path_length_m;
     leg.final_error_m = (watcher.position - place->pose.Position()).norm();
     leg.final_position = watcher.position;
