@@ -2,40 +2,21 @@
 
 #include <cmath>
 
+#include "spott_map/ros/conversions.h"
+
 namespace spott_global_planner::ros_conversions {
 
 namespace {
 
 geometry_msgs::Point P(const Vec2& v, double z = 0.0) {
-  geometry_msgs::Point p;
-  p.x = v.x();
-  p.y = v.y();
-  p.z = z;
-  return p;
+  return spott_map::ros_conversions::ToPoint(v, z);
 }
 
-std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1.0f) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
+using spott_map::ros_conversions::Colour;
 
 visualization_msgs::Marker Base(const std::string& ns, int id, int type,
                                 const std::string& frame_id, const ros::Time& stamp) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame_id;
-  m.header.stamp = stamp;
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.scale.x = m.scale.y = m.scale.z = 0.1;
-  m.color = Colour(1, 1, 1);
-  return m;
+  return spott_map::ros_conversions::MakeMarker(ns, id, type, frame_id, stamp);
 }
 
 visualization_msgs::Marker Delete(const std::string& ns, int id, const std::string& frame_id,

@@ -10,15 +10,6 @@ namespace {
 
 bool Finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
-std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1.0f) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
-
 geometry_msgs::Quaternion YawQuaternion(double yaw) {
   tf2::Quaternion q;
   q.setRPY(0, 0, yaw);
@@ -314,19 +305,36 @@ std::optional<OccupancyRaster> FromOccupancyGrid(const nav_msgs::OccupancyGrid& 
   return raster;
 }
 
+std_msgs::ColorRGBA Colour(float r, float g, float b, float a) {
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+visualization_msgs::Marker MakeMarker(const std::string& ns, int id, int type,
+                                      const std::string& frame_id, const ros::Time& stamp) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame_id;
+  m.header.stamp = stamp;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = m.scale.z = 0.1;
+  m.color = Colour(1.0f, 1.0f, 1.0f);
+  return m;
+}
+
 visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::string& frame_id,
                                           const ros::Time& stamp) {
   visualization_msgs::MarkerArray array;
   const auto make = [&](const std::string& ns, int id, int type) {
-    visualization_msgs::Marker m;
-    m.header.frame_id = frame_id;
-    m.header.stamp = stamp;
-    m.ns = ns;
-    m.id = id;
-    m.type = type;
-    m.action = visualization_msgs::Marker::ADD;
-    m.pose.orientation.w = 1.0;
-    m.scale.x = 0.05;
+    visualization_msgs::Marker m = MakeMarker(ns, id, type, frame_id, stamp);
+    m.scale.x = 0.05;  // line width
     return m;
   };
   // Clear markers of an earlier, larger world first.

@@ -25,6 +25,11 @@
 namespace spott_map::ros_conversions {
 
 geometry_msgs::Point ToPoint(const Vec2& p, double z = 0.0);  ///< z (m) above the map plane
+/// A marker colour; components in [0, 1].
+std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1.0f);
+/// A marker to fill in: action ADD, identity orientation, scale 0.1 m, white.
+visualization_msgs::Marker MakeMarker(const std::string& ns, int id, int type,
+                                      const std::string& frame_id, const ros::Time& stamp);
 Vec2 FromPoint(const geometry_msgs::Point& p);
 geometry_msgs::Pose2D ToPose2D(const Pose2& p);
 Pose2 FromPose2D(const geometry_msgs::Pose2D& p);
