@@ -222,9 +222,11 @@ std::optional<TargetGeometry> GeometryFromAttributes(const Target& t,
   return std::nullopt;
 }
 
-TaskInterpretResult InterpretTask(const TaskCommand& c, double rx, double ry, double ryaw,
-                                  const TaskInterpretationParameters& params,
-                                  const PlaceResolver& resolve, const std::string& source) {
+TaskInterpretResult InterpretTask(
+    const TaskCommand& c, double rx, double ry,
+    double /*ryaw: relative directions are resolved later, DirectionBias::At*/,
+    const TaskInterpretationParameters& params, const PlaceResolver& resolve,
+    const std::string& source) {
   TaskInterpretResult result;
   auto error = [&](Location where, const std::string& message) {
     result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::kError, source, where, message});
