@@ -3,21 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spott_map/ros/conversions.h"
+
 namespace spott_harmonic_planner::ros_conversions {
+
+namespace conv = spott_map::ros_conversions;
 
 nav_msgs::OccupancyGrid ToPotentialImage(const PotentialField& field, const std::string& frame_id,
                                          const ros::Time& stamp) {
-  nav_msgs::OccupancyGrid g;
-  g.header.frame_id = frame_id;
-  g.header.stamp = stamp;
-  g.info.map_load_time = stamp;
-  g.info.resolution = static_cast<float>(field.resolution());
-  g.info.width = static_cast<std::uint32_t>(field.width());
-  g.info.height = static_cast<std::uint32_t>(field.height());
-  g.info.origin.position.x = field.origin().x();
-  g.info.origin.position.y = field.origin().y();
-  g.info.origin.orientation.w = 1.0;
-  g.data.resize(static_cast<std::size_t>(field.width()) * field.height());
+  nav_msgs::OccupancyGrid g = conv::MakeGrid(field.origin(), field.width(), field.height(),
+                                             field.resolution(), frame_id, stamp);
   for (int y = 0; y < field.height(); ++y) {
     for (int x = 0; x < field.width(); ++x) {
       std::int8_t v;
@@ -39,19 +34,10 @@ nav_msgs::OccupancyGrid ToPotentialImage(const PotentialField& field, const std:
 
 visualization_msgs::Marker ToContours(const PotentialField& field, const std::string& frame_id,
                                       const ros::Time& stamp) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame_id;
-  m.header.stamp = stamp;
-  m.ns = "equipotentials";
-  m.id = 0;
-  m.type = visualization_msgs::Marker::LINE_LIST;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.scale.x = 0.02;
-  m.color.r = 0.9f;
-  m.color.g = 0.6f;
-  m.color.b = 0.1f;
-  m.color.a = 1.0f;
+  visualization_msgs::Marker m =
+      conv::MakeMarker("equipotentials", 0, visualization_msgs::Marker::LINE_LIST, frame_id, stamp);
+  m.scale.x = 0.02;  // line width
+  m.color = conv::Colour(0.9f, 0.6f, 0.1f);
   // Contours of log10(p) (the same curves as u = 1 - 10^-k), at the cell centres.
   const auto level_value = [&](int x, int y) {
     const double p = field.GoalProbability(x, y);

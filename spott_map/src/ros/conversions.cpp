@@ -246,19 +246,26 @@ spott_msgs::NamedPlace ToMsg(const Place& place) {
   return m;
 }
 
-nav_msgs::OccupancyGrid ToOccupancyGrid(const OccupancyRaster& raster, const std::string& frame_id,
-                                        const ros::Time& stamp) {
+nav_msgs::OccupancyGrid MakeGrid(const Vec2& origin, int width, int height, double resolution_m,
+                                 const std::string& frame_id, const ros::Time& stamp) {
   nav_msgs::OccupancyGrid g;
   g.header.frame_id = frame_id;
   g.header.stamp = stamp;
   g.info.map_load_time = stamp;
-  g.info.resolution = static_cast<float>(raster.resolution());
-  g.info.width = static_cast<std::uint32_t>(raster.width());
-  g.info.height = static_cast<std::uint32_t>(raster.height());
-  g.info.origin.position.x = raster.origin().x();
-  g.info.origin.position.y = raster.origin().y();
+  g.info.resolution = static_cast<float>(resolution_m);
+  g.info.width = static_cast<std::uint32_t>(width);
+  g.info.height = static_cast<std::uint32_t>(height);
+  g.info.origin.position.x = origin.x();
+  g.info.origin.position.y = origin.y();
   g.info.origin.orientation.w = 1.0;
-  g.data.resize(raster.cells().size());
+  g.data.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), -1);
+  return g;
+}
+
+nav_msgs::OccupancyGrid ToOccupancyGrid(const OccupancyRaster& raster, const std::string& frame_id,
+                                        const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid g = MakeGrid(raster.origin(), raster.width(), raster.height(),
+                                       raster.resolution(), frame_id, stamp);
   for (std::size_t i = 0; i < raster.cells().size(); ++i) {
     switch (raster.cells()[i]) {
       case Cell::kFree:

@@ -25,6 +25,10 @@
 namespace spott_map::ros_conversions {
 
 geometry_msgs::Point ToPoint(const Vec2& p, double z = 0.0);  ///< z (m) above the map plane
+/// An occupancy grid with header and info filled and `width` x `height` cells of -1 (unknown);
+/// origin (m) is the corner of cell (0, 0) in `frame_id`.
+nav_msgs::OccupancyGrid MakeGrid(const Vec2& origin, int width, int height, double resolution_m,
+                                 const std::string& frame_id, const ros::Time& stamp);
 /// A marker colour; components in [0, 1].
 std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1.0f);
 /// A marker to fill in: action ADD, identity orientation, scale 0.1 m, white.
