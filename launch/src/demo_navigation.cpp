@@ -155,17 +155,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
       ros::WallDuration(0.05).sleep();
     }
 
-    spott_msgs::NavigateGoal goal;
-    goal.target.header.frame_id = "map";
-    goal.target.header.stamp = started;
-    goal.target.pose.position.x = place->pose.x;
-    goal.target.pose.position.y = place->pose.y;
-    goal.target.pose.orientation.z = std::sin(place->pose.yaw / 2.0);
-    goal.target.pose.orientation.w = std::cos(place->pose.yaw / 2.0);
-    goal.speed_mode = spott_msgs::NavigateGoal::NORMAL;
-    goal.direction_bias = std::numeric_limits<double>::quiet_NaN();
-    goal.ignore_heading = false;
-    client.sendGoal(goal);
+    client.sendGoal(NavigateGoalTo(place->pose, /*ignore_heading=*/false));
     bool done = false;
     while (ros::ok() && (ros::Time::now() - started).toSec() < leg_timeout_s) {
       if (client.getState().isDone()) {
@@ -195,6 +185,20 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     report.legs.push_back(leg);
   }
   return report;
+}
+
+spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ignore_heading) {
+  spott_msgs::NavigateGoal goal;
+  goal.target.header.frame_id = "map";
+  goal.target.header.stamp = ros::Time::now();
+  goal.target.pose.position.x = target.x;
+  goal.target.pose.position.y = target.y;
+  goal.target.pose.orientation.z = std::sin(target.yaw / 2.0);
+  goal.target.pose.orientation.w = std::cos(target.yaw / 2.0);
+  goal.speed_mode = spott_msgs::NavigateGoal::NORMAL;
+  goal.direction_bias = std::numeric_limits<double>::quiet_NaN();
+  goal.ignore_heading = ignore_heading;
+  return goal;
 }
 
 std::string FormatNavigation(const NavigationReport& report) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <ros/ros.h>
+#include <spott_msgs/NavigateGoal.h>
 
 #include "spott_map/world.h"
 
@@ -39,6 +40,10 @@ struct NavigationReport {
 NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& world,
                                const std::vector<std::string>& goals, double leg_timeout_s,
                                double connect_timeout_s);
+
+/// A Navigate goal to `target` (map frame) at NORMAL speed, without direction bias, with the
+/// planner's default tolerances.
+spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ignore_heading);
 
 /// The navigation section of the report ("" when no leg was asked for).
 std::string FormatNavigation(const NavigationReport& report);

@@ -15,8 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <mutex>
+
+#include "demo_navigation.h"
 
 namespace {
 
@@ -63,15 +64,8 @@ TEST(Replan, ClosedDoorOnTheWayIsAvoidedThroughAnotherDoor) {
   }
   ASSERT_TRUE(path_has("d_lab_w"));
 
-  spott_msgs::NavigateGoal goal;
-  goal.target.header.frame_id = "map";
-  goal.target.pose.position.x = 26.0;
-  goal.target.pose.position.y = 16.5;
-  goal.target.pose.orientation.w = 1.0;
-  goal.speed_mode = spott_msgs::NavigateGoal::NORMAL;
-  goal.direction_bias = std::numeric_limits<double>::quiet_NaN();
-  goal.ignore_heading = true;
-  client.sendGoal(goal);
+  client.sendGoal(
+      spott_launch::NavigateGoalTo(spott_map::Pose2{26.0, 16.5, 0.0}, /*ignore_heading=*/true));
   ros::Duration(8.0).sleep();  // simulated: the robot is driving east along the hallway
   {
     std::lock_guard<std::mutex> lock(mutex);
