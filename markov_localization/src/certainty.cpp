@@ -22,6 +22,60 @@ Pose2 BeliefSnapshot::PoseOf(int ix, int iy, int k) const {
                spott_map::NormalizeAngle(k * angular_resolution())};
 }
 
+SparseBelief SparseBelief::Of(const MarkovGrid& grid, float min_probability) {
+  SparseBelief s;
+  s.nx = grid.nx();
+  s.ny = grid.ny();
+  s.nt = grid.nt();
+  s.origin = grid.map().origin();
+  s.resolution = grid.map().resolution();
+  s.num_states = grid.NumStates();
+  s.min_probability = min_probability;
+  const std::size_t layer = static_cast<std::size_t>(s.nx) * s.ny;
+  for (int k = 0; k < s.nt; ++k) {
+    if (!grid.PartActive(k)) continue;
+    const float* data = grid.PartData(k);
+    for (std::size_t c = 0; c < layer; ++c) {
+      if (data[c] <= min_probability) continue;
+      s.index.push_back(static_cast<std::uint32_t>(k * layer + c));
+      s.p.push_back(data[c]);
+    }
+  }
+  return s;
+}
+
+Pose2 SparseBelief::PoseOf(int ix, int iy, int k) const {
+  return Pose2{origin.x() + (ix + 0.5) * resolution, origin.y() + (iy + 0.5) * resolution,
+               spott_map::NormalizeAngle(k * angular_resolution())};
+}
+
+namespace {
+
+// Both belief layouts seen through one interface, so that certainty and modes are one
+// algorithm: Size() entries, each with a dense index and a value; Find(dense index) gives the
+// entry or -1.
+struct DenseView {
+  const BeliefSnapshot& b;
+  std::size_t Size() const { return b.p.size(); }
+  std::size_t DenseIndex(std::size_t e) const { return e; }
+  double Value(std::size_t e) const { return b.p[e]; }
+  long Find(std::size_t dense) const { return static_cast<long>(dense); }
+};
+
+struct SparseView {
+  const SparseBelief& b;
+  std::size_t Size() const { return b.p.size(); }
+  std::size_t DenseIndex(std::size_t e) const { return b.index[e]; }
+  double Value(std::size_t e) const { return b.p[e]; }
+  long Find(std::size_t dense) const {
+    auto it = std::lower_bound(b.index.begin(), b.index.end(), dense);
+    if (it == b.index.end() || *it != dense) return -1;
+    return static_cast<long>(it - b.index.begin());
+  }
+};
+
+}  // namespace
+
 double Entropy(const BeliefSnapshot& belief) {
   double h = 0.0;
   for (float v : belief.p)
@@ -38,11 +92,17 @@ std::vector<std::string> ValidateParameters(const CertaintyParameters& p) {
   return errors;
 }
 
-PositionCertainty PosCertainty(const BeliefSnapshot& b, const CertaintyParameters& params) {
+namespace {
+
+template <typename Belief, typename View>
+PositionCertainty PosCertaintyOf(const Belief& b, const View& view,
+                                 const CertaintyParameters& params) {
   PositionCertainty out;
-  if (b.p.empty()) return out;
-  const std::size_t imax =
-      static_cast<std::size_t>(std::max_element(b.p.begin(), b.p.end()) - b.p.begin());
+  if (view.Size() == 0) return out;
+  std::size_t emax = 0;
+  for (std::size_t e = 1; e < view.Size(); ++e)
+    if (view.Value(e) > view.Value(emax)) emax = e;
+  const std::size_t imax = view.DenseIndex(emax);
   const int mx = static_cast<int>(imax % b.nx);
   const int my = static_cast<int>((imax / b.nx) % b.ny);
   const int mk = static_cast<int>(imax / (static_cast<std::size_t>(b.nx) * b.ny));
@@ -55,7 +115,9 @@ PositionCertainty PosCertainty(const BeliefSnapshot& b, const CertaintyParameter
     const int k = ((mk + dk) % b.nt + b.nt) % b.nt;
     for (int iy = std::max(0, my - rxy); iy <= std::min(b.ny - 1, my + rxy); ++iy) {
       for (int ix = std::max(0, mx - rxy); ix <= std::min(b.nx - 1, mx + rxy); ++ix) {
-        const double v = b.p[b.Index(ix, iy, k)];
+        const long e = view.Find((static_cast<std::size_t>(k) * b.ny + iy) * b.nx + ix);
+        if (e < 0) continue;
+        const double v = view.Value(e);
         if (v <= 0.0) continue;
         const Pose2 pose = b.PoseOf(ix, iy, k);
         mass += v;
@@ -71,24 +133,27 @@ PositionCertainty PosCertainty(const BeliefSnapshot& b, const CertaintyParameter
   return out;
 }
 
-std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& params) {
+template <typename Belief, typename View>
+std::vector<Mode> ExtractModesOf(const Belief& b, const View& view, const ModeParameters& params) {
   std::vector<Mode> modes;
-  if (b.p.empty() || b.num_states == 0) return modes;
-  const float pmax = *std::max_element(b.p.begin(), b.p.end());
+  if (view.Size() == 0 || b.num_states == 0) return modes;
+  double pmax = 0.0;
+  for (std::size_t e = 0; e < view.Size(); ++e) pmax = std::max(pmax, view.Value(e));
   const double threshold = std::max(params.uniform_factor / static_cast<double>(b.num_states),
                                     params.max_fraction * pmax);
-  std::vector<std::uint8_t> seen(b.p.size(), 0);
+  std::vector<std::uint8_t> seen(view.Size(), 0);
   std::vector<std::size_t> stack;
-  for (std::size_t start = 0; start < b.p.size(); ++start) {
-    if (seen[start] || b.p[start] <= threshold) continue;
+  for (std::size_t start = 0; start < view.Size(); ++start) {
+    if (seen[start] || view.Value(start) <= threshold) continue;
     // Flood fill over the 26-neighbourhood; heading wraps.
     std::vector<std::size_t> members;
     stack.assign(1, start);
     seen[start] = 1;
     while (!stack.empty()) {
-      const std::size_t i = stack.back();
+      const std::size_t e = stack.back();
       stack.pop_back();
-      members.push_back(i);
+      members.push_back(e);
+      const std::size_t i = view.DenseIndex(e);
       const int ix = static_cast<int>(i % b.nx);
       const int iy = static_cast<int>((i / b.nx) % b.ny);
       const int k = static_cast<int>(i / (static_cast<std::size_t>(b.nx) * b.ny));
@@ -98,8 +163,8 @@ std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& pa
           for (int dx = -1; dx <= 1; ++dx) {
             const int x = ix + dx, y = iy + dy;
             if (x < 0 || y < 0 || x >= b.nx || y >= b.ny) continue;
-            const std::size_t n = b.Index(x, y, kk);
-            if (seen[n] || b.p[n] <= threshold) continue;
+            const long n = view.Find((static_cast<std::size_t>(kk) * b.ny + y) * b.nx + x);
+            if (n < 0 || seen[n] || view.Value(n) <= threshold) continue;
             seen[n] = 1;
             stack.push_back(n);
           }
@@ -108,8 +173,9 @@ std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& pa
     }
     Mode mode;
     double sx = 0.0, sy = 0.0, ss = 0.0, sc = 0.0;
-    for (std::size_t i : members) {
-      const double v = b.p[i];
+    for (std::size_t e : members) {
+      const double v = view.Value(e);
+      const std::size_t i = view.DenseIndex(e);
       const Pose2 pose = b.PoseOf(static_cast<int>(i % b.nx), static_cast<int>((i / b.nx) % b.ny),
                                   static_cast<int>(i / (static_cast<std::size_t>(b.nx) * b.ny)));
       mode.mass += v;
@@ -120,8 +186,9 @@ std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& pa
     }
     mode.cells = members.size();
     mode.mean = Pose2{sx / mode.mass, sy / mode.mass, std::atan2(ss, sc)};
-    for (std::size_t i : members) {
-      const double v = b.p[i] / mode.mass;
+    for (std::size_t e : members) {
+      const double v = view.Value(e) / mode.mass;
+      const std::size_t i = view.DenseIndex(e);
       const Pose2 pose = b.PoseOf(static_cast<int>(i % b.nx), static_cast<int>((i / b.nx) % b.ny),
                                   static_cast<int>(i / (static_cast<std::size_t>(b.nx) * b.ny)));
       const Eigen::Vector3d d(pose.x - mode.mean.x, pose.y - mode.mean.y,
@@ -134,6 +201,48 @@ std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& pa
             [](const Mode& a, const Mode& c) { return a.mass > c.mass; });
   if (static_cast<int>(modes.size()) > params.max_modes) modes.resize(params.max_modes);
   return modes;
+}
+
+}  // namespace
+
+PositionCertainty PosCertainty(const BeliefSnapshot& b, const CertaintyParameters& params) {
+  return PosCertaintyOf(b, DenseView{b}, params);
+}
+
+PositionCertainty PosCertainty(const SparseBelief& b, const CertaintyParameters& params) {
+  return PosCertaintyOf(b, SparseView{b}, params);
+}
+
+std::vector<Mode> ExtractModes(const BeliefSnapshot& b, const ModeParameters& params) {
+  return ExtractModesOf(b, DenseView{b}, params);
+}
+
+std::vector<Mode> ExtractModes(const SparseBelief& b, const ModeParameters& params) {
+  return ExtractModesOf(b, SparseView{b}, params);
+}
+
+BeliefSummary Summarize(const MarkovGrid& grid, const CertaintyParameters& certainty,
+                        const ModeParameters& modes, bool with_entropy) {
+  BeliefSummary out;
+  // Sparse only pays while few states are above theta (a sorted index of millions of states
+  // and its binary searches cost more than the dense pass).
+  if (grid.ActiveParts() * 4 <= grid.nt()) {
+    SparseBelief sparse = SparseBelief::Of(grid, static_cast<float>(grid.threshold()));
+    if (sparse.p.size() * 50 < grid.NumStates()) {
+      out.sparse = true;
+      out.certainty = PosCertainty(sparse, certainty);
+      out.modes = ExtractModes(sparse, modes);
+    }
+  }
+  if (!out.sparse || with_entropy) {
+    const BeliefSnapshot dense = BeliefSnapshot::Of(grid);
+    if (!out.sparse) {
+      out.certainty = PosCertainty(dense, certainty);
+      out.modes = ExtractModes(dense, modes);
+    }
+    if (with_entropy) out.entropy = Entropy(dense);
+  }
+  return out;
 }
 
 }  // namespace markov_localization

@@ -135,6 +135,52 @@ TEST(SelectiveUpdate, KidnapWakesTheDeactivatedParts) {
       << c.estimate.x << " " << c.estimate.y;
 }
 
+TEST(Certainty, SparseBeliefGivesTheDenseCertaintyAndModes) {
+  Bonn bonn;
+  MarkovGrid grid(bonn.map, *bonn.sensor, bonn.GridParams(true));
+  std::mt19937 rng(3);
+  // Two modes in the corridor (the half-turn twins), then tracking in room B.
+  for (const bool in_room : {false, true}) {
+    if (!in_room) {
+      testing::Drive(grid, bonn.sp, Pose2{19.0, 10.0, 0.0}, {Vec2(25.0, 10.0)}, 0.25, rng);
+    } else {
+      grid.SetGaussian(Pose2{17.5, 5.0, -M_PI / 2}, 0.2, 0.05);
+      for (int i = 0; i < 5; ++i)
+        grid.SensorUpdate(
+            testing::SimulateScan(bonn.map, bonn.sp, Pose2{17.5, 5.0, -M_PI / 2}, 0.05, rng));
+    }
+    const auto dense = BeliefSnapshot::Of(grid);
+    const auto sparse = SparseBelief::Of(grid, static_cast<float>(grid.threshold()));
+    EXPECT_LT(sparse.p.size(), dense.p.size() / 20);
+    const auto cd = PosCertainty(dense, CertaintyParameters{});
+    const auto cs = PosCertainty(sparse, CertaintyParameters{});
+    EXPECT_NEAR(cs.certainty, cd.certainty, 1e-4);
+    EXPECT_NEAR(cs.estimate.x, cd.estimate.x, 1e-3);
+    EXPECT_NEAR(cs.estimate.y, cd.estimate.y, 1e-3);
+    EXPECT_NEAR(cs.estimate.yaw, cd.estimate.yaw, 1e-3);
+    const auto md = ExtractModes(dense, ModeParameters{});
+    const auto ms = ExtractModes(sparse, ModeParameters{});
+    ASSERT_EQ(ms.size(), md.size()) << "in room: " << in_room;
+    EXPECT_GE(md.size(), in_room ? 1u : 2u);
+    for (std::size_t m = 0; m < md.size(); ++m) {
+      EXPECT_NEAR(ms[m].mass, md[m].mass, 1e-6);
+      EXPECT_EQ(ms[m].cells, md[m].cells);
+      EXPECT_NEAR(ms[m].mean.x, md[m].mean.x, 1e-6);
+    }
+    // Summarize takes the sparse path here, and the dense one for a uniform belief.
+    const auto summary = Summarize(grid, CertaintyParameters{}, ModeParameters{}, true);
+    EXPECT_TRUE(summary.sparse);
+    EXPECT_NEAR(summary.certainty.certainty, cd.certainty, 1e-4);
+    EXPECT_EQ(summary.modes.size(), md.size());
+    EXPECT_NEAR(summary.entropy, Entropy(dense), 1e-9);
+  }
+  grid.SetUniform();
+  const auto uniform = Summarize(grid, CertaintyParameters{}, ModeParameters{}, false);
+  EXPECT_FALSE(uniform.sparse);
+  EXPECT_TRUE(std::isnan(uniform.entropy));
+  EXPECT_LT(uniform.certainty.certainty, 0.01);
+}
+
 TEST(LostDetector, AKidnapIsDetectedAndTheRobotRelocalized) {
   Bonn bonn;
   MarkovGrid grid(bonn.map, *bonn.sensor, bonn.GridParams(true));

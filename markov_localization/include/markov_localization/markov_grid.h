@@ -111,6 +111,8 @@ class MarkovGrid {
   std::vector<float> Dense() const;
   /// Whether orientation part (heading bin) k is updated.
   bool PartActive(int k) const { return active_[Layer(k)] != 0; }
+  /// P of heading bin k's states, index iy * nx + ix; normalized only while PartActive(k).
+  const float* PartData(int k) const { return LayerData(Layer(k)); }
   int ActiveParts() const;
   /// Centre of heading bin k (rad).
   double Heading(int k) const { return k * angular_resolution(); }

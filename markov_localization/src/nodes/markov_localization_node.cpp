@@ -63,8 +63,7 @@ std::vector<std::string> Read(ros::NodeHandle& pnh, NodeParameters& p) {
   pnh.param("sensor/range_bin_m", p.sensor.range_bin_m, p.sensor.range_bin_m);
   // Sonar physics: the cone comes from the ring message unless set; specular reflection.
   p.sensor.critical_angle_rad = 0.35;
-  pnh.param("sensor/critical_angle_rad", p.sensor.critical_angle_rad,
-            p.sensor.critical_angle_rad);
+  pnh.param("sensor/critical_angle_rad", p.sensor.critical_angle_rad, p.sensor.critical_angle_rad);
   p.sensor.beam_width_rad = -1.0;
   pnh.param("sensor/beam_width_rad", p.sensor.beam_width_rad, p.sensor.beam_width_rad);
   pnh.param("certainty/threshold", p.certainty.threshold, p.certainty.threshold);
@@ -188,9 +187,12 @@ class LocalizationNode {
   }
 
   void Publish(const ros::Time& stamp, const ml::SensorUpdateStats& stats, double compute_s) {
-    const ml::BeliefSnapshot b = ml::BeliefSnapshot::Of(*grid_);
-    const auto c = ml::PosCertainty(b, params_.certainty);
-    const auto modes = ml::ExtractModes(b, params_.modes);
+    // The entropy needs a pass over every state: once a second at the ring rate of robot_sim.
+    const bool with_entropy = rings_++ % 10 == 0;
+    const auto summary = ml::Summarize(*grid_, params_.certainty, params_.modes, with_entropy);
+    if (!std::isnan(summary.entropy)) entropy_ = summary.entropy;
+    const auto& c = summary.certainty;
+    const auto& modes = summary.modes;
     if (c.certainty > params_.certainty.threshold) global_ = false;
     // map->odom = (map->base) * (odom->base)^-1
     const auto& e = c.estimate;
@@ -250,7 +252,7 @@ class LocalizationNode {
     s.mode =
         global_ ? spott_msgs::LocalizationStatus::GLOBAL : spott_msgs::LocalizationStatus::TRACKING;
     s.certainty = c.certainty;
-    s.entropy = ml::Entropy(b);
+    s.entropy = entropy_;
     s.max_entropy = std::log(static_cast<double>(grid_->NumStates()));
     s.num_modes = modes.size();
     s.lost = c.certainty < params_.certainty.threshold || grid_->lost();
@@ -268,6 +270,8 @@ class LocalizationNode {
   std::unique_ptr<ml::MarkovGrid> grid_;
   std::optional<spott_map::Pose2> odom_, last_odom_, pending_initial_;
   bool global_ = true;
+  unsigned rings_ = 0;
+  double entropy_ = 0.0;
   ros::Publisher pose_pub_, status_pub_, modes_pub_;
   ros::Subscriber odom_sub_, ring_sub_, initial_sub_;
   ros::ServiceServer global_srv_;
