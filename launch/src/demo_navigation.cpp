@@ -5,6 +5,7 @@
 #include <nav_msgs/Odometry.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
+#include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/NavigateAction.h>
 
 #include <algorithm>
@@ -27,7 +28,11 @@ struct LegWatcher {
   const spott_map::World* world = nullptr;
   bool have_pose = false;
   spott_map::Vec2 position{0.0, 0.0};
+  double yaw = 0.0;
   double path_length_m = 0.0;
+  int estimates = 0, lost_reports = 0;
+  double sum_position_error_m = 0.0, max_position_error_m = 0.0;
+  double sum_heading_error_rad = 0.0, max_heading_error_rad = 0.0;
   double min_wall_distance_m = std::numeric_limits<double>::infinity();
   int bumper_hits = 0;
   std::string global_path;  ///< The first plan made for the current goal.
@@ -41,14 +46,32 @@ struct LegWatcher {
     path_length_m = 0.0;
     min_wall_distance_m = std::numeric_limits<double>::infinity();
     bumper_hits = 0;
+    estimates = lost_reports = 0;
+    sum_position_error_m = max_position_error_m = 0.0;
+    sum_heading_error_rad = max_heading_error_rad = 0.0;
   }
   void OnTruth(const nav_msgs::Odometry& odom) {
     const spott_map::Vec2 p(odom.pose.pose.position.x, odom.pose.pose.position.y);
     std::lock_guard<std::mutex> lock(mutex);
     if (have_pose) path_length_m += (p - position).norm();
     position = p;
+    yaw = 2.0 * std::atan2(odom.pose.pose.orientation.z, odom.pose.pose.orientation.w);
     have_pose = true;
     min_wall_distance_m = std::min(min_wall_distance_m, DistanceToNearestSolid(*world, p));
+  }
+  // The localization's estimate against the latest ground truth (both at about the same time:
+  // the status follows each sonar ring, the truth comes at the simulator's rate).
+  void OnStatus(const spott_msgs::LocalizationStatus& status) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!have_pose) return;
+    const double e = (spott_map::Vec2(status.estimate.x, status.estimate.y) - position).norm();
+    const double h = std::abs(spott_map::NormalizeAngle(status.estimate.theta - yaw));
+    ++estimates;
+    lost_reports += status.lost ? 1 : 0;
+    sum_position_error_m += e;
+    sum_heading_error_rad += h;
+    max_position_error_m = std::max(max_position_error_m, e);
+    max_heading_error_rad = std::max(max_heading_error_rad, h);
   }
   void OnBumper(const spott_msgs::BumperRing& ring) {
     if (std::none_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; })) return;
@@ -115,6 +138,8 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
   ros::Subscriber bumper_sub = watch_nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher);
   ros::Subscriber path_sub =
       watch_nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher);
+  ros::Subscriber status_sub =
+      watch_nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher);
   ros::AsyncSpinner watch_spinner(1, &queue);
   watch_spinner.start();
   ros::Publisher goal_pub = nh.advertise<geometry_msgs::PointStamped>("global_goal", 1, true);
@@ -182,6 +207,14 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     leg.final_position = watcher.position;
     leg.min_wall_distance_m = watcher.min_wall_distance_m;
     leg.bumper_hits = watcher.bumper_hits;
+    leg.estimates = watcher.estimates;
+    leg.lost_reports = watcher.lost_reports;
+    if (watcher.estimates > 0) {
+      leg.mean_position_error_m = watcher.sum_position_error_m / watcher.estimates;
+      leg.mean_heading_error_rad = watcher.sum_heading_error_rad / watcher.estimates;
+      leg.max_position_error_m = watcher.max_position_error_m;
+      leg.max_heading_error_rad = watcher.max_heading_error_rad;
+    }
     report.legs.push_back(leg);
   }
   return report;
@@ -222,6 +255,15 @@ std::string FormatNavigation(const NavigationReport& report) {
         << leg.final_position.y() << "), " << std::setprecision(2) << leg.final_error_m
         << " m from the target; closest approach to a wall or object " << leg.min_wall_distance_m
         << " m (centre), bumper contacts: " << leg.bumper_hits << "\n";
+    if (leg.estimates > 0) {
+      out << "     localization error (markov_localization vs ground truth, " << leg.estimates
+          << " estimates): mean " << leg.mean_position_error_m << " m / " << std::setprecision(1)
+          << leg.mean_heading_error_rad * 180.0 / M_PI << " deg, max " << std::setprecision(2)
+          << leg.max_position_error_m << " m / " << std::setprecision(1)
+          << leg.max_heading_error_rad * 180.0 / M_PI << " deg; said lost " << leg.lost_reports
+          << " times\n"
+          << std::setprecision(2);
+    }
   }
   out << "   " << reached << " of " << report.legs.size() << " goals reached\n";
   return out.str();

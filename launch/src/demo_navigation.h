@@ -26,6 +26,14 @@ struct NavigationLeg {
   double min_wall_distance_m = 0.0;  ///< Closest approach of the robot's centre to a wall or
                                      ///< object of the simulated world (m).
   int bumper_hits = 0;               ///< Bumper messages with a pressed segment.
+  /// Localization (markov_localization's status against the ground truth); 0 estimates when
+  /// the stack runs on the simulator's map->odom.
+  int estimates = 0;
+  double mean_position_error_m = 0.0;
+  double max_position_error_m = 0.0;
+  double mean_heading_error_rad = 0.0;
+  double max_heading_error_rad = 0.0;
+  int lost_reports = 0;  ///< Statuses that said lost.
 };
 
 struct NavigationReport {

@@ -10,6 +10,8 @@ std::vector<std::string> ValidateParameters(const LostDetectorParameters& p) {
   if (!(p.slow_rate > 0.0 && p.slow_rate < p.fast_rate))
     errors.push_back("slow_rate must be in (0, fast_rate)");
   if (!(p.lost_ratio > 0.0 && p.lost_ratio < 1.0)) errors.push_back("lost_ratio must be in (0, 1)");
+  if (!(p.scan_lost_ratio > 0.0 && p.scan_lost_ratio <= p.lost_ratio))
+    errors.push_back("scan_lost_ratio must be in (0, lost_ratio]");
   if (!(p.hold_scans >= 1)) errors.push_back("hold_scans must be >= 1");
   if (!(p.relocalization_mass > 0.0 && p.relocalization_mass < 1.0))
     errors.push_back("relocalization_mass must be in (0, 1)");
@@ -24,6 +26,7 @@ void LostDetector::Reset() {
 bool LostDetector::Update(double log_likelihood_per_beam) {
   if (!params_.enabled || !std::isfinite(log_likelihood_per_beam)) return false;
   const double r = std::exp(log_likelihood_per_beam);
+  const bool collapsed = scans_since_reset_ > 0 && r < params_.scan_lost_ratio * slow_;
   if (scans_since_reset_ == 0) {
     fast_ = slow_ = r;
   } else {
@@ -32,7 +35,7 @@ bool LostDetector::Update(double log_likelihood_per_beam) {
   }
   ++scans_since_reset_;
   if (scans_since_reset_ <= params_.hold_scans) return false;
-  if (fast_ >= params_.lost_ratio * slow_) return false;
+  if (!collapsed && fast_ >= params_.lost_ratio * slow_) return false;
   // Lost. The averages are kept: if the relocalization does not restore the usual fit the
   // detector fires again after the hold, while a lasting change of scene (clutter) is absorbed
   // by the slow average.

@@ -73,13 +73,21 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   // A fit that wobbles by +-20% around e^1 per beam for 200 scans: no alarm.
   for (int i = 0; i < 200; ++i) ASSERT_FALSE(d.Update(1.0 + 0.18 * std::sin(i))) << "scan " << i;
   EXPECT_NEAR(d.slow(), std::exp(1.0), 0.1);
-  // The fit falls to e^0 = 0.37 of the usual per beam: lost at the next scan (fast rate 0.5:
-  // fast = (e + 1) / 2 = 1.86 < 0.7 x 2.72).
-  EXPECT_TRUE(d.Update(0.0));
+  // A fit that falls to 0.6 of the usual (the worst seen while driving): no alarm.
+  for (int i = 0; i < 20; ++i) ASSERT_FALSE(d.Update(1.0 + std::log(0.6))) << "scan " << i;
+  d.Reset();
+  for (int i = 0; i < 50; ++i) d.Update(1.0);
+  // A fit that sinks to 0.3 of the usual per beam: fast (rate 0.5) / slow (rate 0.05) is
+  // 0.65 / 0.965, 0.475 / 0.932, 0.388 / 0.901, 0.344 / 0.871 = 0.395: lost at the fourth.
+  for (int i = 0; i < 3; ++i) EXPECT_FALSE(d.Update(1.0 + std::log(0.3))) << "scan " << i;
+  EXPECT_TRUE(d.Update(1.0 + std::log(0.3)));
+  for (int i = 0; i < 50; ++i) d.Update(1.0);
+  // A kidnap: one scan's fit falls to e^-2 = 0.05 of the usual (< 0.15): lost at once.
+  EXPECT_TRUE(d.Update(-2.0));
   // After a detection the hold keeps it quiet for hold_scans scans, then it fires again if the
   // fit has not come back.
-  for (int i = 0; i < LostDetectorParameters{}.hold_scans - 1; ++i) EXPECT_FALSE(d.Update(0.0));
-  EXPECT_TRUE(d.Update(0.0));
+  for (int i = 0; i < LostDetectorParameters{}.hold_scans - 1; ++i) EXPECT_FALSE(d.Update(-2.0));
+  EXPECT_TRUE(d.Update(-2.0));
 }
 
 TEST(LostDetector, NoAlarmDuringTheFirstScansAfterAReset) {

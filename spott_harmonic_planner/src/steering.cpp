@@ -34,10 +34,42 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
         "max_bias_deviation", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
   Check(p.slow_clearance_m > 0.0, "slow_clearance", p.slow_clearance_m, "> 0 m", v);
   Check(p.goal_slowdown_m > 0.0, "goal_slowdown", p.goal_slowdown_m, "> 0 m", v);
+  Check(p.escape_radius_m >= 0.0 && p.escape_radius_m <= 2.0, "escape_radius", p.escape_radius_m,
+        "in [0, 2] m", v);
   return v;
 }
 
 double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+namespace {
+
+// The nearest cell within `radius_m` of `at` that is free and connected to the goal (p > 0).
+std::optional<Vec2> NearestEscape(const PotentialField& field, const Vec2& at, double radius_m) {
+  const auto c = field.CellOf(at);
+  if (!c || radius_m <= 0.0) return std::nullopt;
+  const int r = static_cast<int>(std::ceil(radius_m / field.resolution()));
+  std::optional<Vec2> best;
+  double best_d = radius_m;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const int x = c->first + dx, y = c->second + dy;
+      if (x < 0 || y < 0 || x >= field.width() || y >= field.height()) continue;
+      const FieldCell kind = field.cell(x, y);
+      if ((kind != FieldCell::kFree && kind != FieldCell::kGoal) ||
+          !(field.GoalProbability(x, y) > 0.0))
+        continue;
+      const Vec2 centre = field.CellCentre(x, y);
+      const double d = (centre - at).norm();
+      if (d <= best_d) {
+        best_d = d;
+        best = centre;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
 
 double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation) {
   const double g = std::atan2(descent.y(), descent.x());
@@ -58,7 +90,23 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
     if (!c) {
       cmd.reason = "the robot is outside the planning window";
     } else if (field.cell(c->first, c->second) == FieldCell::kObstacle) {
-      cmd.reason = "the robot is inside a padded obstacle";
+      const auto escape = NearestEscape(field, at, params.escape_radius_m);
+      if (!escape) {
+        cmd.reason = "the robot is inside a padded obstacle";
+        return cmd;
+      }
+      // Out of the padding the way it came in, slowly (clearance 0 gives a tenth of the speed).
+      const Vec2 d = (*escape - at).normalized();
+      cmd.valid = true;
+      cmd.reason = "escaping the padding of an obstacle";
+      cmd.descent = d;
+      cmd.heading = std::atan2(d.y(), d.x());
+      const double error = WrapAngle(cmd.heading - pose.yaw);
+      cmd.angular =
+          std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);
+      cmd.linear =
+          0.1 * params.slowly_fraction * params.max_linear_mps * std::max(0.0, std::cos(error));
+      return cmd;
     } else {
       cmd.reason = "the goal cannot be reached from the robot's position";
     }

@@ -55,6 +55,37 @@ TEST(Steering, TurnInPlaceTurnsTheShortWayWithinLimitsAndStopsAtTolerance) {
   EXPECT_DOUBLE_EQ(c.angular, 0.0);
 }
 
+TEST(Steering, ARobotEstimatedInsideThePaddingHeadsForTheNearestFreeCell) {
+  // 4 x 4 m at 0.1 m; rows 0-9 (y < 1 m) blocked (a wall plus its padding); goal at the top.
+  auto raster = spott_map::OccupancyRaster(Vec2(0.0, 0.0), 40, 40, 0.1);
+  for (int y = 0; y < 10; ++y)
+    for (int x = 0; x < 40; ++x) raster.Mark(x, y, spott_map::Cell::kObstacle);
+  PotentialField field(FieldOptions{});
+  field.SetOccupancy(raster);
+  ASSERT_TRUE(field.SetGoalPoint(Vec2(2.0, 3.5)));
+  field.ColdStart();
+  field.Solve(5000);
+  SteeringParameters p;  // escape_radius 0.4 m
+  // 0.12 m deep in the padding (y = 0.88), facing north: out the nearest way, +y, slowly.
+  const SteeringCommand c =
+      ComputeSteering(field, Pose2{2.05, 0.88, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 2.6, p);
+  ASSERT_TRUE(c.valid) << c.reason;
+  EXPECT_NE(c.reason.find("escaping"), std::string::npos);
+  EXPECT_NEAR(c.descent.x(), 0.0, 1e-9);
+  EXPECT_NEAR(c.descent.y(), 1.0, 1e-9);
+  EXPECT_NEAR(c.linear, 0.1 * p.slowly_fraction * p.max_linear_mps, 1e-9);
+  // 0.6 m deep: no free cell within 0.4 m: it stops and says why.
+  const SteeringCommand deep =
+      ComputeSteering(field, Pose2{2.05, 0.38, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 3.1, p);
+  EXPECT_FALSE(deep.valid);
+  EXPECT_EQ(deep.reason, "the robot is inside a padded obstacle");
+  // escape_radius 0 keeps the old behaviour.
+  p.escape_radius_m = 0.0;
+  EXPECT_FALSE(
+      ComputeSteering(field, Pose2{2.05, 0.88, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 2.6, p)
+          .valid);
+}
+
 TEST(LocalPlanner, SteersStraightAtGoalInOpenSpaceWithSpeedByMode) {
   LocalPlanner planner(SmallWindow());
   planner.CorrectPose({0.0, 0.0, 0.0});

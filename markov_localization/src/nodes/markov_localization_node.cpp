@@ -34,6 +34,7 @@ struct NodeParameters {
   double initial_sigma_xy_m = 0.3;
   double initial_sigma_theta_rad = 0.2;
   bool start_uniform = true;
+  bool initial_pose_from_world = false;  // start at the world file's robot_start
   ml::MapModelParameters map;
   ml::MarkovGridParameters grid;
   ml::SensorModelParameters sensor;
@@ -50,6 +51,7 @@ std::vector<std::string> Read(ros::NodeHandle& pnh, NodeParameters& p) {
   pnh.param("transform_tolerance_s", p.transform_tolerance_s, p.transform_tolerance_s);
   if (!(p.transform_tolerance_s >= 0)) errors.push_back("transform_tolerance_s must be >= 0");
   pnh.param("start_uniform", p.start_uniform, p.start_uniform);
+  pnh.param("initial_pose_from_world", p.initial_pose_from_world, p.initial_pose_from_world);
   pnh.param("map/resolution_m", p.map.resolution_m, p.map.resolution_m);
   pnh.param("map/state_clearance_m", p.map.state_clearance_m, p.map.state_clearance_m);
   pnh.param("grid/angular_resolution_deg", p.angular_resolution_deg, p.angular_resolution_deg);
@@ -72,6 +74,7 @@ std::vector<std::string> Read(ros::NodeHandle& pnh, NodeParameters& p) {
   pnh.param("lost/fast_rate", lost.fast_rate, lost.fast_rate);
   pnh.param("lost/slow_rate", lost.slow_rate, lost.slow_rate);
   pnh.param("lost/lost_ratio", lost.lost_ratio, lost.lost_ratio);
+  pnh.param("lost/scan_lost_ratio", lost.scan_lost_ratio, lost.scan_lost_ratio);
   pnh.param("lost/hold_scans", lost.hold_scans, lost.hold_scans);
   pnh.param("lost/relocalization_mass", lost.relocalization_mass, lost.relocalization_mass);
   for (const auto& e : ml::ValidateParameters(p.map)) errors.push_back("map/" + e);
@@ -94,6 +97,7 @@ class LocalizationNode {
   LocalizationNode(ros::NodeHandle& nh, const NodeParameters& params, spott_map::World world)
       : params_(params) {
     map_ = ml::MapModel::FromWorld(world, params.map);
+    if (params.initial_pose_from_world) pending_initial_ = world.robot_start;
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 1, true);
     status_pub_ = nh.advertise<spott_msgs::LocalizationStatus>("localization_status", 1, true);
     modes_pub_ = nh.advertise<geometry_msgs::PoseArray>("localization_modes", 1, true);

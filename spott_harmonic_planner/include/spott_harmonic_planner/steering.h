@@ -28,13 +28,16 @@ struct SteeringParameters {
   double slow_clearance_m = 0.4;  ///< Below this clearance the speed scales down (m), > 0.
   double goal_slowdown_m =
       0.5;  ///< Below this distance to the goal the speed scales down (m), > 0.
+  /// A robot whose estimated position lies in the padding (localization error beside a door
+  /// jamb) heads for the nearest free cell within this distance (m), >= 0; 0: it stops.
+  double escape_radius_m = 0.4;
 };
 
 std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p);
 
 struct SteeringCommand {
   bool valid = false;      ///< False where the field gives no direction (see `reason`).
-  std::string reason;      ///< Why not valid.
+  std::string reason;      ///< Why not valid; when valid, a note ("escaping the padding ...").
   Vec2 descent{0.0, 0.0};  ///< Unit steepest-descent direction of u (map frame).
   double heading = 0.0;    ///< Commanded direction (rad, map frame), after the bias.
   double linear = 0.0;     ///< (m/s) >= 0.

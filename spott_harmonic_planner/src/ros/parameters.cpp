@@ -47,6 +47,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   pnh.param("heading_gain", s.heading_gain, s.heading_gain);
   pnh.param("max_bias_deviation", s.max_bias_deviation_rad, s.max_bias_deviation_rad);
   pnh.param("slow_clearance", s.slow_clearance_m, s.slow_clearance_m);
+  pnh.param("escape_radius", s.escape_radius_m, s.escape_radius_m);
   pnh.param("goal_slowdown", s.goal_slowdown_m, s.goal_slowdown_m);
   pnh.param<std::string>("frame_id", p.frame_id, p.frame_id);
   pnh.param<std::string>("base_frame", p.base_frame, p.base_frame);
