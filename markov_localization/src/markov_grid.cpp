@@ -1,5 +1,7 @@
 #include "markov_localization/markov_grid.h"
 
+#include "update_kernels.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -61,6 +63,7 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   moved_x_m_.assign(nt_, 0.0);
   moved_y_m_.assign(nt_, 0.0);
   moved_var_m2_.assign(nt_, 0.0);
+  spans_ = kernels::StateSpans(map_.state_mask(), 16);
   SetUniform();
 }
 
@@ -342,13 +345,16 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   // its largest entry so that the product over 24 beams cannot overflow a float; the common
   // factor `unlikely_factor` (prod_b 1 / max_e ratio) is what the cells left out by eq. (4)
   // are multiplied by instead of 1, so the normalized result is eq. (4) exactly.
-  std::vector<float> columns(static_cast<std::size_t>(nb) * bins);
+  // Stored with kernels::kPermuteBins floats per beam when the table is that small (the AVX-512
+  // kernel keeps a column in registers), zero-padded.
+  const int stride = bins <= kernels::kPermuteBins ? kernels::kPermuteBins : bins;
+  std::vector<float> columns(static_cast<std::size_t>(nb) * stride, 0.0f);
   double log_unlikely_factor = 0.0;
   for (int b = 0; b < nb; ++b) {
     const int z = sensor_.RangeBin(ranges_m[b]);
     float mx = 0.0f;
     for (int e = 0; e < bins; ++e) mx = std::max(mx, sensor_.Ratio(e, z));
-    for (int e = 0; e < bins; ++e) columns[b * bins + e] = sensor_.Ratio(e, z) / mx;
+    for (int e = 0; e < bins; ++e) columns[b * stride + e] = sensor_.Ratio(e, z) / mx;
     log_unlikely_factor -= std::log(static_cast<double>(mx));
   }
   const double unlikely_factor = std::exp(log_unlikely_factor);
@@ -363,29 +369,20 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     ++stats.active_parts;
     const int k = HeadingOfLayer(j);
     for (int b = 0; b < nb; ++b) rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
-    float* data = LayerData(j);
-    std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
-    double likely = 0.0, unlikely = 0.0;
-    std::size_t evaluated = 0;
-    for (std::size_t c = 0; c < LayerSize(); ++c) {
-      const float p = data[c];
-      // Eq. (4): cells at or below theta keep P(l) (their factor P~(s)/P~(s) = 1).
-      if (p <= theta) {
-        unlikely += p;
-        flags[c] = 0;
-        continue;
-      }
-      flags[c] = 1;
-      float l = 1.0f;
-      for (int b = 0; b < nb; ++b) l *= columns[b * bins + rows[b][c]];
-      const float v = p * l;
-      data[c] = v;
-      likely += v;
-      ++evaluated;
-    }
-    stats.states_evaluated += evaluated;
-    likely_total += likely;
-    unlikely_total += unlikely;
+    kernels::SensorLayerIn in;
+    in.data = LayerData(j);
+    in.flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+    in.rows = rows.data();
+    in.columns = columns.data();
+    in.beams = nb;
+    in.column_stride = stride;
+    in.theta = theta;
+    in.spans = spans_.data();
+    in.num_spans = spans_.size() / 2;
+    const kernels::SensorLayerOut out = kernels::SensorLayer(in);
+    stats.states_evaluated += out.evaluated;
+    likely_total += out.likely;
+    unlikely_total += out.unlikely;
   }
   // total in the scale of the normalized columns; alpha of eq. (4) is unlikely_factor / total.
   const double total = likely_total + unlikely_factor * unlikely_total;
@@ -397,23 +394,20 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   stats.normalizer = alpha;
   const float a_likely = static_cast<float>(1.0 / total);
   const float a_unlikely = static_cast<float>(alpha);
-  const auto& mask = map_.state_mask();
+  std::vector<float> layer_max(nt_, 0.0f);
   for (int j = 0; j < nt_; ++j) {
     if (active_[j]) {
-      float* data = LayerData(j);
-      const std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
-      for (std::size_t c = 0; c < LayerSize(); ++c) {
-        if (!mask[c]) continue;
-        // Which factor a cell gets depends on whether it was updated; its value before was
-        // <= theta exactly when it was left out. A floor keeps every state recoverable.
-        const bool updated = flags[c] != 0;
-        data[c] = std::max(floor_, data[c] * (updated ? a_likely : a_unlikely));
-      }
+      // Which factor a cell gets depends on whether it was updated; its value before was
+      // <= theta exactly when it was left out. A floor keeps every state recoverable.
+      layer_max[j] = kernels::ScaleLayer(
+          LayerData(j), evaluated_.data() + static_cast<std::size_t>(j) * LayerSize(),
+          map_.state_mask().data(), spans_.data(), spans_.size() / 2, a_likely, a_unlikely, floor_);
     } else {
       alpha_[j] *= alpha;
       if (alpha_[j] > 1.0) {  // the rest of the belief lost against this part: wake it.
         WakeLayer(j);
         ++stats.parts_woken;
+        layer_max[j] = -1.0f;  // not known after the wake: computed below
       }
     }
   }
@@ -422,8 +416,11 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     for (int j = 0; j < nt_; ++j) {
       if (!active_[j]) continue;
       const float* data = LayerData(j);
-      float mx = 0.0f;
-      for (std::size_t c = 0; c < LayerSize(); ++c) mx = std::max(mx, data[c]);
+      float mx = layer_max[j];
+      if (stats.parts_woken > 0 || mx < 0.0f) {  // normalized again: the maximum changed
+        mx = 0.0f;
+        for (std::size_t c = 0; c < LayerSize(); ++c) mx = std::max(mx, data[c]);
+      }
       if (mx < theta) {
         active_[j] = 0;
         alpha_[j] = 1.0;

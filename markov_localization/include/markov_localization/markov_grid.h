@@ -135,6 +135,8 @@ class MarkovGrid {
   std::vector<double> moved_x_m_;   // a_pi: accumulated world displacement (m) ...
   std::vector<double> moved_y_m_;
   std::vector<double> moved_var_m2_;  // ... and accumulated position noise variance (m^2).
+  // Runs [begin, end) of cells (pairs) covering every state cell: the loops skip the rest.
+  std::vector<std::uint32_t> spans_;
 };
 
 }  // namespace markov_localization

@@ -1,0 +1,340 @@
+#include "update_kernels.h"
+
+#include <algorithm>
+#include <atomic>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define MARKOV_X86_KERNELS 1
+#include <immintrin.h>
+// GCC 12's AVX-512 intrinsics start from _mm512_undefined_*: false "uninitialized" warnings.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+namespace markov_localization {
+namespace kernels {
+
+namespace {
+
+Isa DetectIsa() {
+#ifdef MARKOV_X86_KERNELS
+  __builtin_cpu_init();  // also checks that the OS saves the AVX/AVX-512 registers
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
+    return Isa::kAvx512;
+  if (__builtin_cpu_supports("avx2")) return Isa::kAvx2;
+#endif
+  return Isa::kScalar;
+}
+
+std::atomic<int>& ActiveSlot() {
+  static std::atomic<int> slot{static_cast<int>(DetectIsa())};
+  return slot;
+}
+
+// ---- portable versions (also the tails of the vector versions) --------------------------------
+
+void SensorCells(const SensorLayerIn& in, std::size_t begin, std::size_t end, SensorLayerOut& out) {
+  float* data = in.data;
+  for (std::size_t c = begin; c < end; ++c) {
+    const float p = data[c];
+    // Eq. (4): cells at or below theta keep P(l) (their factor P~(s)/P~(s) = 1).
+    if (p <= in.theta) {
+      out.unlikely += p;
+      in.flags[c] = 0;
+      continue;
+    }
+    in.flags[c] = 1;
+    float l = 1.0f;
+    for (int b = 0; b < in.beams; ++b) l *= in.columns[b * in.column_stride + in.rows[b][c]];
+    const float v = p * l;
+    data[c] = v;
+    out.likely += v;
+    ++out.evaluated;
+  }
+}
+
+float ScaleCells(float* data, const std::uint8_t* flags, const std::uint8_t* mask,
+                 std::size_t begin, std::size_t end, float a_likely, float a_unlikely, float floor,
+                 float mx) {
+  for (std::size_t c = begin; c < end; ++c) {
+    if (!mask[c]) continue;
+    // Which factor a cell gets depends on whether it was updated; its value before was
+    // <= theta exactly when it was left out. A floor keeps every state recoverable.
+    data[c] = std::max(floor, data[c] * (flags[c] ? a_likely : a_unlikely));
+    mx = std::max(mx, data[c]);
+  }
+  return mx;
+}
+
+SensorLayerOut SensorLayerScalar(const SensorLayerIn& in) {
+  SensorLayerOut out;
+  for (std::size_t s = 0; s < in.num_spans; ++s)
+    SensorCells(in, in.spans[2 * s], in.spans[2 * s + 1], out);
+  return out;
+}
+
+float ScaleLayerScalar(float* data, const std::uint8_t* flags, const std::uint8_t* mask,
+                       const std::uint32_t* spans, std::size_t num_spans, float a_likely,
+                       float a_unlikely, float floor) {
+  float mx = 0.0f;
+  for (std::size_t s = 0; s < num_spans; ++s)
+    mx = ScaleCells(data, flags, mask, spans[2 * s], spans[2 * s + 1], a_likely, a_unlikely, floor,
+                    mx);
+  return mx;
+}
+
+#ifdef MARKOV_X86_KERNELS
+
+// ---- AVX2: 8 cells at a time, the columns looked up by gathers ---------------------------------
+
+__attribute__((target("avx2"))) SensorLayerOut SensorLayerAvx2(const SensorLayerIn& in) {
+  SensorLayerOut out;
+  const __m256 theta = _mm256_set1_ps(in.theta);
+  const __m256 one = _mm256_set1_ps(1.0f);
+  __m256d likely = _mm256_setzero_pd(), unlikely = _mm256_setzero_pd();
+  float* data = in.data;
+  for (std::size_t s = 0; s < in.num_spans; ++s) {
+    std::size_t c = in.spans[2 * s];
+    const std::size_t end = in.spans[2 * s + 1];
+    for (; c + 8 <= end; c += 8) {
+      const __m256 p = _mm256_loadu_ps(data + c);
+      const __m256 upd = _mm256_cmp_ps(p, theta, _CMP_NLE_UQ);  // !(p <= theta)
+      const int m = _mm256_movemask_ps(upd);
+      if (m == 0) {
+        unlikely = _mm256_add_pd(unlikely, _mm256_cvtps_pd(_mm256_castps256_ps128(p)));
+        unlikely = _mm256_add_pd(unlikely, _mm256_cvtps_pd(_mm256_extractf128_ps(p, 1)));
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(in.flags + c), _mm_setzero_si128());
+        continue;
+      }
+      __m256 l = one;
+      for (int b = 0; b < in.beams; ++b) {
+        const __m128i e8 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(in.rows[b] + c));
+        const __m256i e = _mm256_cvtepu8_epi32(e8);
+        l = _mm256_mul_ps(l, _mm256_i32gather_ps(in.columns + b * in.column_stride, e, 4));
+      }
+      const __m256 v = _mm256_mul_ps(p, l);
+      const __m256 stored = _mm256_blendv_ps(p, v, upd);
+      _mm256_storeu_ps(data + c, stored);
+      const __m256 lv = _mm256_and_ps(upd, v), up = _mm256_andnot_ps(upd, p);
+      likely = _mm256_add_pd(likely, _mm256_cvtps_pd(_mm256_castps256_ps128(lv)));
+      likely = _mm256_add_pd(likely, _mm256_cvtps_pd(_mm256_extractf128_ps(lv, 1)));
+      unlikely = _mm256_add_pd(unlikely, _mm256_cvtps_pd(_mm256_castps256_ps128(up)));
+      unlikely = _mm256_add_pd(unlikely, _mm256_cvtps_pd(_mm256_extractf128_ps(up, 1)));
+      // flags: one byte per cell, 1 where updated.
+      const __m256i f32 = _mm256_srli_epi32(_mm256_castps_si256(upd), 31);
+      const __m128i f16 =
+          _mm_packus_epi32(_mm256_castsi256_si128(f32), _mm256_extracti128_si256(f32, 1));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(in.flags + c), _mm_packus_epi16(f16, f16));
+      out.evaluated += static_cast<std::size_t>(__builtin_popcount(m));
+    }
+    SensorCells(in, c, end, out);
+  }
+  alignas(32) double l4[4], u4[4];
+  _mm256_store_pd(l4, likely);
+  _mm256_store_pd(u4, unlikely);
+  out.likely += (l4[0] + l4[1]) + (l4[2] + l4[3]);
+  out.unlikely += (u4[0] + u4[1]) + (u4[2] + u4[3]);
+  return out;
+}
+
+__attribute__((target("avx2"))) float ScaleLayerAvx2(float* data, const std::uint8_t* flags,
+                                                     const std::uint8_t* mask,
+                                                     const std::uint32_t* spans,
+                                                     std::size_t num_spans, float a_likely,
+                                                     float a_unlikely, float floor) {
+  const __m256 al = _mm256_set1_ps(a_likely), au = _mm256_set1_ps(a_unlikely);
+  const __m256 fl = _mm256_set1_ps(floor);
+  __m256 vmx = _mm256_setzero_ps();
+  float mx = 0.0f;
+  for (std::size_t s = 0; s < num_spans; ++s) {
+    std::size_t c = spans[2 * s];
+    const std::size_t end = spans[2 * s + 1];
+    for (; c + 8 <= end; c += 8) {
+      const __m256i f =
+          _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(flags + c)));
+      const __m256i st =
+          _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(mask + c)));
+      const __m256 updated = _mm256_castsi256_ps(_mm256_cmpgt_epi32(f, _mm256_setzero_si256()));
+      const __m256 state = _mm256_castsi256_ps(_mm256_cmpgt_epi32(st, _mm256_setzero_si256()));
+      const __m256 d = _mm256_loadu_ps(data + c);
+      // std::max(floor, x) is x when floor < x, else floor: _mm256_max_ps(x, floor) likewise.
+      const __m256 nv = _mm256_max_ps(_mm256_mul_ps(d, _mm256_blendv_ps(au, al, updated)), fl);
+      const __m256 r = _mm256_blendv_ps(d, nv, state);
+      _mm256_storeu_ps(data + c, r);
+      vmx = _mm256_max_ps(vmx, r);
+    }
+    mx = ScaleCells(data, flags, mask, c, end, a_likely, a_unlikely, floor, mx);
+  }
+  alignas(32) float m8[8];
+  _mm256_store_ps(m8, vmx);
+  for (float v : m8) mx = std::max(mx, v);
+  return mx;
+}
+
+// ---- AVX-512: 16 cells at a time; columns of <= 64 bins looked up in registers -----------------
+
+#define MARKOV_AVX512 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
+
+MARKOV_AVX512 SensorLayerOut SensorLayerAvx512(const SensorLayerIn& in) {
+  SensorLayerOut out;
+  const __m512 theta = _mm512_set1_ps(in.theta);
+  const __m512 one = _mm512_set1_ps(1.0f);
+  const __m512i bit5 = _mm512_set1_epi32(32);
+  const bool permute = in.column_stride == kPermuteBins;
+  __m512d likely = _mm512_setzero_pd(), unlikely = _mm512_setzero_pd();
+  float* data = in.data;
+  for (std::size_t s = 0; s < in.num_spans; ++s) {
+    const std::size_t end = in.spans[2 * s + 1];
+    for (std::size_t c = in.spans[2 * s]; c < end; c += 16) {
+      const std::size_t n = std::min<std::size_t>(16, end - c);
+      const __mmask16 lanes = static_cast<__mmask16>(n == 16 ? 0xFFFFu : (1u << n) - 1u);
+      const __m512 p = _mm512_maskz_loadu_ps(lanes, data + c);
+      const __mmask16 upd = _mm512_mask_cmp_ps_mask(lanes, p, theta, _CMP_NLE_UQ);
+      const __mmask16 left = static_cast<__mmask16>(lanes & ~upd);
+      const __m512 up = _mm512_maskz_mov_ps(left, p);
+      unlikely = _mm512_add_pd(unlikely, _mm512_cvtps_pd(_mm512_castps512_ps256(up)));
+      unlikely = _mm512_add_pd(
+          unlikely,
+          _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(up), 1))));
+      _mm_mask_storeu_epi8(in.flags + c, lanes, _mm_maskz_set1_epi8(upd, 1));
+      if (upd == 0) continue;
+      __m512 l = one;
+      if (permute) {
+        for (int b = 0; b < in.beams; ++b) {
+          const __m512i e = _mm512_cvtepu8_epi32(_mm_maskz_loadu_epi8(lanes, in.rows[b] + c));
+          const float* t = in.columns + b * kPermuteBins;
+          const __m512 lo = _mm512_permutex2var_ps(_mm512_loadu_ps(t), e, _mm512_loadu_ps(t + 16));
+          const __m512 hi =
+              _mm512_permutex2var_ps(_mm512_loadu_ps(t + 32), e, _mm512_loadu_ps(t + 48));
+          const __mmask16 high = _mm512_test_epi32_mask(e, bit5);
+          l = _mm512_mul_ps(l, _mm512_mask_blend_ps(high, lo, hi));
+        }
+      } else {
+        for (int b = 0; b < in.beams; ++b) {
+          const __m512i e = _mm512_cvtepu8_epi32(_mm_maskz_loadu_epi8(lanes, in.rows[b] + c));
+          l = _mm512_mul_ps(l, _mm512_i32gather_ps(e, in.columns + b * in.column_stride, 4));
+        }
+      }
+      const __m512 v = _mm512_maskz_mul_ps(upd, p, l);
+      _mm512_mask_storeu_ps(data + c, upd, v);
+      likely = _mm512_add_pd(likely, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
+      likely = _mm512_add_pd(
+          likely,
+          _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
+      out.evaluated += static_cast<std::size_t>(__builtin_popcount(upd));
+    }
+  }
+  alignas(64) double l8[8], u8[8];
+  _mm512_store_pd(l8, likely);
+  _mm512_store_pd(u8, unlikely);
+  out.likely = ((l8[0] + l8[1]) + (l8[2] + l8[3])) + ((l8[4] + l8[5]) + (l8[6] + l8[7]));
+  out.unlikely = ((u8[0] + u8[1]) + (u8[2] + u8[3])) + ((u8[4] + u8[5]) + (u8[6] + u8[7]));
+  return out;
+}
+
+MARKOV_AVX512 float ScaleLayerAvx512(float* data, const std::uint8_t* flags,
+                                     const std::uint8_t* mask, const std::uint32_t* spans,
+                                     std::size_t num_spans, float a_likely, float a_unlikely,
+                                     float floor) {
+  const __m512 al = _mm512_set1_ps(a_likely), au = _mm512_set1_ps(a_unlikely);
+  const __m512 fl = _mm512_set1_ps(floor);
+  __m512 vmx = _mm512_setzero_ps();
+  for (std::size_t s = 0; s < num_spans; ++s) {
+    const std::size_t end = spans[2 * s + 1];
+    for (std::size_t c = spans[2 * s]; c < end; c += 16) {
+      const std::size_t n = std::min<std::size_t>(16, end - c);
+      const __mmask16 lanes = static_cast<__mmask16>(n == 16 ? 0xFFFFu : (1u << n) - 1u);
+      const __m128i f = _mm_maskz_loadu_epi8(lanes, flags + c);
+      const __m128i st = _mm_maskz_loadu_epi8(lanes, mask + c);
+      const __mmask16 updated = _mm_test_epi8_mask(f, f);
+      const __mmask16 state = _mm_test_epi8_mask(st, st);
+      const __m512 d = _mm512_maskz_loadu_ps(state, data + c);
+      const __m512 nv = _mm512_max_ps(_mm512_mul_ps(d, _mm512_mask_blend_ps(updated, au, al)), fl);
+      _mm512_mask_storeu_ps(data + c, state, nv);
+      vmx = _mm512_mask_max_ps(vmx, state, vmx, nv);
+    }
+  }
+  return _mm512_reduce_max_ps(vmx);
+}
+
+#endif  // MARKOV_X86_KERNELS
+
+}  // namespace
+
+Isa SupportedIsa() {
+  static const Isa isa = DetectIsa();
+  return isa;
+}
+
+Isa ActiveIsa() { return static_cast<Isa>(ActiveSlot().load(std::memory_order_relaxed)); }
+
+Isa ForceIsa(Isa isa) {
+  const Isa use = static_cast<int>(isa) <= static_cast<int>(SupportedIsa()) ? isa : SupportedIsa();
+  ActiveSlot().store(static_cast<int>(use), std::memory_order_relaxed);
+  return use;
+}
+
+const char* IsaName(Isa isa) {
+  switch (isa) {
+    case Isa::kAvx512:
+      return "avx512";
+    case Isa::kAvx2:
+      return "avx2";
+    default:
+      return "scalar";
+  }
+}
+
+std::vector<std::uint32_t> StateSpans(const std::vector<std::uint8_t>& mask, std::size_t min_gap) {
+  std::vector<std::uint32_t> spans;
+  const std::size_t n = mask.size();
+  std::size_t c = 0;
+  while (c < n) {
+    while (c < n && !mask[c]) ++c;
+    if (c == n) break;
+    std::size_t e = c;
+    while (e < n && mask[e]) ++e;
+    if (!spans.empty() && c - spans.back() < min_gap) {
+      spans.back() = static_cast<std::uint32_t>(e);
+    } else {
+      spans.push_back(static_cast<std::uint32_t>(c));
+      spans.push_back(static_cast<std::uint32_t>(e));
+    }
+    c = e;
+  }
+  return spans;
+}
+
+SensorLayerOut SensorLayer(const SensorLayerIn& in) {
+  switch (ActiveIsa()) {
+#ifdef MARKOV_X86_KERNELS
+    case Isa::kAvx512:
+      return SensorLayerAvx512(in);
+    case Isa::kAvx2:
+      return SensorLayerAvx2(in);
+#endif
+    default:
+      return SensorLayerScalar(in);
+  }
+}
+
+float ScaleLayer(float* data, const std::uint8_t* flags, const std::uint8_t* state_mask,
+                 const std::uint32_t* spans, std::size_t num_spans, float a_likely,
+                 float a_unlikely, float floor) {
+  switch (ActiveIsa()) {
+#ifdef MARKOV_X86_KERNELS
+    case Isa::kAvx512:
+      return ScaleLayerAvx512(data, flags, state_mask, spans, num_spans, a_likely, a_unlikely,
+                              floor);
+    case Isa::kAvx2:
+      return ScaleLayerAvx2(data, flags, state_mask, spans, num_spans, a_likely, a_unlikely, floor);
+#endif
+    default:
+      return ScaleLayerScalar(data, flags, state_mask, spans, num_spans, a_likely, a_unlikely,
+                              floor);
+  }
+}
+
+}  // namespace kernels
+}  // namespace markov_localization
