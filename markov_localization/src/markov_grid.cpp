@@ -123,58 +123,7 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
   for (float& v : belief_) v = static_cast<float>(v / total);
 }
 
-double MarkovGrid::LayerSum(int j) const {
-  const float* data = LayerData(j);
-  double s = 0.0;
-  for (std::size_t c = 0; c < LayerSize(); ++c) s += data[c];
-  return s;
-}
-
-void MarkovGrid::ClearNonStates(float* data) const {
-  const auto& mask = map_.state_mask();
-  for (std::size_t c = 0; c < LayerSize(); ++c)
-    if (!mask[c]) data[c] = 0.0f;
-}
-
-namespace {
-// Repeated 3-tap kernels [w, 1-2w, w] (variance 2w each, w <= 0.25) approximate a Gaussian of
-// the requested variance (cells^2) along one axis; mass leaving the grid is dropped.
-void BlurAxis(float* data, int nx, int ny, double var, bool along_x, std::vector<float>& line) {
-  if (!(var > 1e-6)) return;
-  const int passes = static_cast<int>(std::ceil(var / 0.5));
-  const float w = static_cast<float>(var / passes / 2.0);
-  const float c = 1.0f - 2.0f * w;
-  const int n = along_x ? nx : ny;
-  const int lines = along_x ? ny : nx;
-  const std::size_t stride = along_x ? 1 : static_cast<std::size_t>(nx);
-  line.resize(n + 2);
-  for (int l = 0; l < lines; ++l) {
-    float* base = along_x ? data + static_cast<std::size_t>(l) * nx : data + l;
-    bool any = false;
-    for (int i = 0; i < n; ++i) {
-      line[i + 1] = base[i * stride];
-      any = any || line[i + 1] != 0.0f;
-    }
-    if (!any) continue;
-    for (int p = 0; p < passes; ++p) {
-      line[0] = line[n + 1] = 0.0f;
-      float prev = 0.0f;
-      for (int i = 1; i <= n; ++i) {
-        const float cur = line[i];
-        line[i] = w * (prev + line[i + 1]) + c * cur;
-        prev = cur;
-      }
-    }
-    for (int i = 0; i < n; ++i) base[i * stride] = line[i + 1];
-  }
-}
-}  // namespace
-
-void MarkovGrid::BlurLayerXY(float* data, double var_cells) {
-  std::vector<float> line;
-  BlurAxis(data, nx(), ny(), var_cells, true, line);
-  BlurAxis(data, nx(), ny(), var_cells, false, line);
-}
+double MarkovGrid::LayerSum(int j) const { return kernels::Sum(LayerData(j), LayerSize()); }
 
 void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells) {
   float* data = LayerData(j);
@@ -182,35 +131,23 @@ void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells) {
   const int ox = static_cast<int>(flx), oy = static_cast<int>(fly);
   const float fx = static_cast<float>(sx - flx), fy = static_cast<float>(sy - fly);
   const float w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
-  std::fill(scratch_.begin(), scratch_.end(), 0.0f);
   const int w = nx(), h = ny();
-  for (int iy = 0; iy < h; ++iy) {
-    const int ty = iy + oy;
-    if (ty < -1 || ty >= h) continue;
-    for (int ix = 0; ix < w; ++ix) {
-      const float v = data[static_cast<std::size_t>(iy) * w + ix];
-      if (v == 0.0f) continue;
-      const int tx = ix + ox;
-      if (tx < -1 || tx >= w) continue;
-      if (ty >= 0) {
-        float* row = &scratch_[static_cast<std::size_t>(ty) * w];
-        if (tx >= 0) row[tx] += v * w00;
-        if (tx + 1 < w) row[tx + 1] += v * w10;
-      }
-      if (ty + 1 < h) {
-        float* row = &scratch_[static_cast<std::size_t>(ty + 1) * w];
-        if (tx >= 0) row[tx] += v * w01;
-        if (tx + 1 < w) row[tx + 1] += v * w11;
-      }
-    }
-  }
-  std::memcpy(data, scratch_.data(), scratch_.size() * sizeof(float));
+  kernels::ShiftBilinear(data, scratch_.data(), w, h, ox, oy, w00, w10, w01, w11);
   // The bilinear split already spreads the mass by fx(1-fx) (resp. fy(1-fy)) cells^2: only the
-  // rest of the motion noise is added.
+  // rest of the motion noise is added, by repeated 3-tap kernels [k, 1-2k, k] (variance 2k
+  // each, k <= 0.25) approximating a Gaussian; mass leaving the grid is dropped.
   std::vector<float> line;
-  BlurAxis(data, w, h, var_cells - fx * (1 - fx), true, line);
-  BlurAxis(data, w, h, var_cells - fy * (1 - fy), false, line);
-  ClearNonStates(data);
+  const double var_x = var_cells - fx * (1 - fx), var_y = var_cells - fy * (1 - fy);
+  if (var_x > 1e-6) {
+    const int passes = static_cast<int>(std::ceil(var_x / 0.5));
+    kernels::BlurX(scratch_.data(), w, h, passes, static_cast<float>(var_x / passes / 2.0), line);
+  }
+  if (var_y > 1e-6) {
+    const int passes = static_cast<int>(std::ceil(var_y / 0.5));
+    kernels::BlurY(scratch_.data(), w, h, passes, static_cast<float>(var_y / passes / 2.0), line);
+  }
+  // Mass pushed into obstacles is removed.
+  kernels::MaskedCopy(data, scratch_.data(), map_.state_mask().data(), LayerSize());
 }
 
 void MarkovGrid::MotionUpdate(const Motion& m) {
@@ -245,6 +182,7 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
   // Heading noise between neighbouring parts. Mass that flows into an inactive part is stored
   // there in its own scale (P / alpha_pi); inactive parts (all cells below theta) send none.
   const double var_bins = sigma_th * sigma_th / (angular_resolution() * angular_resolution());
+  std::vector<double> active_sums;  // sum of each active part after the heading noise
   if (var_bins > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_bins / 0.5));
     const float w = static_cast<float>(var_bins / passes / 2.0);
@@ -252,53 +190,77 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     // "all below theta": it rejoins the update (with its stored movement) before the mass
     // arrives, so that the sensor update sees it.
     if (params_.selective_update) {
-      std::vector<float> layer_max(nt_, 0.0f);
-      for (int j = 0; j < nt_; ++j)
-        if (active_[j]) layer_max[j] = *std::max_element(LayerData(j), LayerData(j) + LayerSize());
+      // Only the maxima of active parts next to an inactive one matter (taken before any wakes).
+      const std::vector<std::uint8_t> was_active = active_;
+      std::vector<float> layer_max(nt_, -1.0f);
+      auto max_of = [&](int q) {
+        if (!was_active[q]) return 0.0f;
+        if (layer_max[q] < 0.0f) layer_max[q] = kernels::Max(LayerData(q), LayerSize());
+        return layer_max[q];
+      };
       const double inflow = std::min(1.0, var_bins / 2.0);
       for (int q = 0; q < nt_; ++q) {
-        if (active_[q]) continue;
-        const double m = std::max(layer_max[(q + nt_ - 1) % nt_], layer_max[(q + 1) % nt_]);
+        if (was_active[q]) continue;
+        const double m = std::max(max_of((q + nt_ - 1) % nt_), max_of((q + 1) % nt_));
         if (inflow * m > threshold_) WakeLayer(q);
       }
     }
-    std::vector<std::vector<float>> old(nt_);
+    // Each pass: new_j = (1 - 2w) old_j + w old_{j-1} + w old_{j+1} over the active parts, in
+    // place in ascending j: old_{j+1} is still in place, old_{j-1} and old_0 are kept in
+    // buffers (three layers instead of a copy of all of them).
+    const float c0 = 1.0f - 2.0f * w;
+    std::vector<float> first(LayerSize()), buf_a(LayerSize()), buf_b(LayerSize());
+    active_sums.assign(nt_, 0.0);
     for (int p = 0; p < passes; ++p) {
+      if (active_[0]) std::copy(LayerData(0), LayerData(0) + LayerSize(), first.begin());
+      const float* prev_old = active_[nt_ - 1] ? LayerData(nt_ - 1) : nullptr;
+      float* spare = buf_a.data();
+      float* spare2 = buf_b.data();
       for (int j = 0; j < nt_; ++j) {
-        if (active_[j])
-          old[j].assign(LayerData(j), LayerData(j) + LayerSize());
-        else
-          old[j].clear();
-      }
-      for (int j = 0; j < nt_; ++j) {
-        if (!active_[j]) continue;
-        float* data = LayerData(j);
-        const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
-        for (std::size_t c = 0; c < LayerSize(); ++c) data[c] = (1.0f - 2.0f * w) * old[j][c];
-        for (int q : nb) {
-          if (active_[q]) {
-            for (std::size_t c = 0; c < LayerSize(); ++c) data[c] += w * old[q][c];
-          } else {
-            float* dst = LayerData(q);
-            if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
-            const float scale = static_cast<float>(w / alpha_[q]);
-            double added = 0.0;
-            for (std::size_t c = 0; c < LayerSize(); ++c) {
-              dst[c] += scale * old[j][c];
-              added += scale * old[j][c];
-            }
-            stored_sum_[q] += added;
-          }
+        if (!active_[j]) {
+          prev_old = nullptr;
+          continue;
         }
+        const float* cur_old = first.data();
+        if (j > 0) {
+          std::copy(LayerData(j), LayerData(j) + LayerSize(), spare);
+          cur_old = spare;
+          std::swap(spare, spare2);
+        }
+        const float* next_old = j + 1 < nt_ ? (active_[j + 1] ? LayerData(j + 1) : nullptr)
+                                            : (active_[0] ? first.data() : nullptr);
+        active_sums[j] =
+            kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, LayerSize());
+        const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
+        for (int q : nb) {
+          if (active_[q]) continue;
+          float* dst = LayerData(q);
+          if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
+          const float scale = static_cast<float>(w / alpha_[q]);
+          double added = 0.0;
+          for (std::size_t c = 0; c < LayerSize(); ++c) {
+            dst[c] += scale * cur_old[c];
+            added += scale * cur_old[c];
+          }
+          stored_sum_[q] += added;
+        }
+        prev_old = cur_old;
       }
     }
   }
-  Normalize();
+  Normalize(active_sums.empty() ? nullptr : active_sums.data());
 }
 
-void MarkovGrid::Normalize() {
+void MarkovGrid::Normalize() { Normalize(nullptr); }
+
+void MarkovGrid::Normalize(const double* active_sums) {
   double total = 0.0;
-  for (int j = 0; j < nt_; ++j) total += active_[j] ? LayerSum(j) : stored_sum_[j] * alpha_[j];
+  for (int j = 0; j < nt_; ++j) {
+    if (active_[j])
+      total += active_sums ? active_sums[j] : LayerSum(j);
+    else
+      total += stored_sum_[j] * alpha_[j];
+  }
   if (!(total > 0.0)) {  // every state ruled out: nothing is known any more.
     SetUniform();
     return;
@@ -306,8 +268,7 @@ void MarkovGrid::Normalize() {
   const float inv = static_cast<float>(1.0 / total);
   for (int j = 0; j < nt_; ++j) {
     if (active_[j]) {
-      float* data = LayerData(j);
-      for (std::size_t c = 0; c < LayerSize(); ++c) data[c] *= inv;
+      kernels::Scale(LayerData(j), LayerSize(), inv);
     } else {
       alpha_[j] /= total;
     }
@@ -325,8 +286,7 @@ void MarkovGrid::MaterializeLayer(int j) {
 
 void MarkovGrid::WakeLayer(int j) {
   float* data = LayerData(j);
-  const float a = static_cast<float>(alpha_[j]);
-  for (std::size_t c = 0; c < LayerSize(); ++c) data[c] *= a;
+  kernels::Scale(data, LayerSize(), static_cast<float>(alpha_[j]));
   const double res = map_.resolution();
   ShiftLayer(j, moved_x_m_[j] / res, moved_y_m_[j] / res, moved_var_m2_[j] / (res * res));
   active_[j] = 1;

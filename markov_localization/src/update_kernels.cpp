@@ -338,3 +338,178 @@ float ScaleLayer(float* data, const std::uint8_t* flags, const std::uint8_t* sta
 
 }  // namespace kernels
 }  // namespace markov_localization
+
+// ---- motion update ---------------------------------------------------------------------------
+
+namespace markov_localization {
+namespace kernels {
+
+#if defined(MARKOV_X86_KERNELS) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define MARKOV_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+#endif
+#ifndef MARKOV_CLONES
+#define MARKOV_CLONES
+#endif
+
+namespace {
+
+// One row of the shift: sources r1 (row ty-oy-1) and r0 (row ty-oy), either may be nullptr.
+MARKOV_CLONES void ShiftRow(const float* r1, const float* r0, float* out, int w, int ox, float w00,
+                            float w10, float w01, float w11) {
+  // Target tx reads source columns tx-ox-1 (weights w11, w10) and tx-ox (w01, w00).
+  auto at = [w](const float* r, int x) { return r && x >= 0 && x < w ? r[x] : 0.0f; };
+  auto cell = [&](int tx) {
+    const int a = tx - ox - 1, b = tx - ox;
+    return ((at(r1, a) * w11 + at(r1, b) * w01) + at(r0, a) * w10) + at(r0, b) * w00;
+  };
+  // Interior: both source columns inside the row.
+  const int lo = std::max(0, ox + 1), hi = std::min(w, w + ox);  // tx in [lo, hi)
+  if (lo >= hi) {
+    for (int tx = 0; tx < w; ++tx) out[tx] = cell(tx);
+    return;
+  }
+  for (int tx = 0; tx < lo; ++tx) out[tx] = cell(tx);
+  const float* a1 = r1 ? r1 - ox - 1 : nullptr;
+  const float* a0 = r0 ? r0 - ox - 1 : nullptr;
+  if (r1 && r0) {
+    for (int tx = lo; tx < hi; ++tx)
+      out[tx] = ((a1[tx] * w11 + a1[tx + 1] * w01) + a0[tx] * w10) + a0[tx + 1] * w00;
+  } else if (r0) {
+    for (int tx = lo; tx < hi; ++tx) out[tx] = a0[tx] * w10 + a0[tx + 1] * w00;
+  } else if (r1) {
+    for (int tx = lo; tx < hi; ++tx) out[tx] = a1[tx] * w11 + a1[tx + 1] * w01;
+  } else {
+    for (int tx = lo; tx < hi; ++tx) out[tx] = 0.0f;
+  }
+  for (int tx = hi; tx < w; ++tx) out[tx] = cell(tx);
+}
+
+// new = k (left + right) + c centre over one padded line: in[0] and in[n + 1] are 0.
+MARKOV_CLONES void Blur3(const float* in, float* out, int n, float k, float c) {
+  for (int i = 0; i < n; ++i) out[i] = k * (in[i] + in[i + 2]) + c * in[i + 1];
+}
+
+MARKOV_CLONES void Blur3Rows(const float* up, const float* centre, const float* down, float* out,
+                             int n, float k, float c) {
+  for (int i = 0; i < n; ++i) out[i] = k * (up[i] + down[i]) + c * centre[i];
+}
+
+}  // namespace
+
+void ShiftBilinear(const float* in, float* out, int w, int h, int ox, int oy, float w00, float w10,
+                   float w01, float w11) {
+  for (int ty = 0; ty < h; ++ty) {
+    const int y1 = ty - oy - 1, y0 = ty - oy;
+    const float* r1 = y1 >= 0 && y1 < h ? in + static_cast<std::size_t>(y1) * w : nullptr;
+    const float* r0 = y0 >= 0 && y0 < h ? in + static_cast<std::size_t>(y0) * w : nullptr;
+    ShiftRow(r1, r0, out + static_cast<std::size_t>(ty) * w, w, ox, w00, w10, w01, w11);
+  }
+}
+
+void BlurX(float* data, int w, int h, int passes, float k, std::vector<float>& line) {
+  const float c = 1.0f - 2.0f * k;
+  line.assign(w + 2, 0.0f);
+  for (int y = 0; y < h; ++y) {
+    float* row = data + static_cast<std::size_t>(y) * w;
+    for (int p = 0; p < passes; ++p) {
+      std::copy(row, row + w, line.begin() + 1);
+      Blur3(line.data(), row, w, k, c);
+    }
+  }
+}
+
+void BlurY(float* data, int w, int h, int passes, float k, std::vector<float>& line) {
+  const float c = 1.0f - 2.0f * k;
+  // Rows y - 1 (old), y (old) kept in two buffers; row y + 1 is still old in place.
+  line.assign(3 * static_cast<std::size_t>(w), 0.0f);
+  float* zero = line.data();
+  float* prev = zero + w;
+  float* cur = prev + w;
+  for (int p = 0; p < passes; ++p) {
+    const float* up = zero;
+    for (int y = 0; y < h; ++y) {
+      float* row = data + static_cast<std::size_t>(y) * w;
+      std::copy(row, row + w, cur);
+      const float* down = y + 1 < h ? row + w : zero;
+      Blur3Rows(up, cur, down, row, w, k, c);
+      std::swap(prev, cur);
+      up = prev;
+    }
+  }
+}
+
+MARKOV_CLONES void MaskedCopy(float* dst, const float* src, const std::uint8_t* mask,
+                              std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) dst[i] = mask[i] ? src[i] : 0.0f;
+}
+
+namespace {
+template <int kTerms>
+inline double HeadingBlendLoop(float* dst, const float* cur, const float* a, const float* b,
+                               float c0, float k, std::size_t n) {
+  double acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  std::size_t i = 0;
+  auto value = [&](std::size_t j) {
+    float v = c0 * cur[j];
+    if (kTerms >= 1) v += k * a[j];
+    if (kTerms >= 2) v += k * b[j];
+    return v;
+  };
+  for (; i + 8 <= n; i += 8) {
+    for (int l = 0; l < 8; ++l) {
+      const float v = value(i + l);
+      dst[i + l] = v;
+      acc[l] += v;
+    }
+  }
+  for (; i < n; ++i) {
+    const float v = value(i);
+    dst[i] = v;
+    acc[i % 8] += v;
+  }
+  return ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]));
+}
+
+MARKOV_CLONES double HeadingBlend2(float* dst, const float* cur, const float* a, const float* b,
+                                   float c0, float k, std::size_t n) {
+  return HeadingBlendLoop<2>(dst, cur, a, b, c0, k, n);
+}
+MARKOV_CLONES double HeadingBlend1(float* dst, const float* cur, const float* a, float c0, float k,
+                                   std::size_t n) {
+  return HeadingBlendLoop<1>(dst, cur, a, nullptr, c0, k, n);
+}
+MARKOV_CLONES double HeadingBlend0(float* dst, const float* cur, float c0, std::size_t n) {
+  return HeadingBlendLoop<0>(dst, cur, nullptr, nullptr, c0, 0.0f, n);
+}
+}  // namespace
+
+double HeadingBlend(float* dst, const float* cur, const float* prev, const float* next, float c0,
+                    float k, std::size_t n) {
+  if (prev && next) return HeadingBlend2(dst, cur, prev, next, c0, k, n);
+  if (prev || next) return HeadingBlend1(dst, cur, prev ? prev : next, c0, k, n);
+  return HeadingBlend0(dst, cur, c0, n);
+}
+
+MARKOV_CLONES double Sum(const float* data, std::size_t n) {
+  double acc[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8)
+    for (int l = 0; l < 8; ++l) acc[l] += data[i + l];
+  for (; i < n; ++i) acc[i % 8] += data[i];
+  return ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]));
+}
+
+MARKOV_CLONES float Max(const float* data, std::size_t n) {
+  float mx = 0.0f;
+  for (std::size_t i = 0; i < n; ++i) mx = mx < data[i] ? data[i] : mx;
+  return mx;
+}
+
+MARKOV_CLONES void Scale(float* data, std::size_t n, float factor) {
+  for (std::size_t i = 0; i < n; ++i) data[i] *= factor;
+}
+
+}  // namespace kernels
+}  // namespace markov_localization

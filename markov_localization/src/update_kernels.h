@@ -64,5 +64,32 @@ float ScaleLayer(float* data, const std::uint8_t* flags, const std::uint8_t* sta
                  const std::uint32_t* spans, std::size_t num_spans, float a_likely,
                  float a_unlikely, float floor);
 
+// ---- motion update: plain loops the compiler vectorizes, one version per ISA (target_clones).
+// Lanes never mix a cell's arithmetic, so every version gives the same floats; sums use eight
+// double accumulators (cell i to accumulator i mod 8) added in a fixed order.
+
+/// Bilinear shift of a w x h layer by (ox + fx, oy + fy) cells, in gather form: out(tx, ty) =
+/// ((in(tx-ox-1, ty-oy-1) w11 + in(tx-ox, ty-oy-1) w01) + in(tx-ox-1, ty-oy) w10) + in(tx-ox,
+/// ty-oy) w00, sources outside the layer 0 (the order in which the former scatter added them).
+void ShiftBilinear(const float* in, float* out, int w, int h, int ox, int oy, float w00, float w10,
+                   float w01, float w11);
+
+/// `passes` 3-tap passes [k, 1 - 2k, k] along x (each row) or y (each column), zero outside;
+/// new = k (left + right) + (1 - 2k) centre. `line` is scratch.
+void BlurX(float* data, int w, int h, int passes, float k, std::vector<float>& line);
+void BlurY(float* data, int w, int h, int passes, float k, std::vector<float>& line);
+
+/// dst = mask ? src : 0.
+void MaskedCopy(float* dst, const float* src, const std::uint8_t* mask, std::size_t n);
+
+/// One heading-noise pass of a layer: dst = ((c0 cur) + k prev) + k next, a missing neighbour
+/// (nullptr) left out. Returns the sum of dst.
+double HeadingBlend(float* dst, const float* cur, const float* prev, const float* next, float c0,
+                    float k, std::size_t n);
+
+double Sum(const float* data, std::size_t n);
+float Max(const float* data, std::size_t n);
+void Scale(float* data, std::size_t n, float factor);
+
 }  // namespace kernels
 }  // namespace markov_localization

@@ -111,12 +111,11 @@ class MarkovGrid {
     return belief_.data() + static_cast<std::size_t>(j) * LayerSize();
   }
   void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells);
-  void BlurLayerXY(float* data, double var_cells);
-  void ClearNonStates(float* data) const;
   double LayerSum(int j) const;
   void WakeLayer(int j);
   void MaterializeLayer(int j);
   void Normalize();
+  void Normalize(const double* active_sums);  // sums of the active parts when known
 
   const MapModel& map_;
   const SensorModel& sensor_;
