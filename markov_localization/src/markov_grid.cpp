@@ -55,7 +55,7 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   threshold_ = params.threshold_fraction / static_cast<double>(NumStates());
   floor_ = static_cast<float>(params.floor_fraction / static_cast<double>(NumStates()));
   belief_.assign(LayerSize() * nt_, 0.0f);
-  scratch_.assign(LayerSize(), 0.0f);
+  scratch_.assign(4 * LayerSize(), 0.0f);
   evaluated_.assign(belief_.size(), 0);
   active_.assign(nt_, 1);
   alpha_.assign(nt_, 1.0);
@@ -161,12 +161,21 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
 
   // Translation along each part's heading (the heading before the turn, refined by the turn
   // not yet applied to the bins).
+  // With every part active and heading noise to add, each shift is done just before the
+  // heading noise needs the layer (one pass over the belief instead of two).
+  const double var_bins = sigma_th * sigma_th / (angular_resolution() * angular_resolution());
+  const bool all_active = std::find(active_.begin(), active_.end(), 0) == active_.end();
+  const bool fuse_shift = all_active && var_bins > 1e-6;
+  std::vector<double> shift_x(nt_), shift_y(nt_);  // cells
+  auto shift = [&](int j) { ShiftLayer(j, shift_x[j], shift_y[j], var_cells); };
   for (int j = 0; j < nt_; ++j) {
     const double heading = Heading(HeadingOfLayer(j)) + rotation_residual_;
     const double wx = std::cos(heading) * m.dx - std::sin(heading) * m.dy;
     const double wy = std::sin(heading) * m.dx + std::cos(heading) * m.dy;
     if (active_[j]) {
-      ShiftLayer(j, wx / res, wy / res, var_cells);
+      shift_x[j] = wx / res;
+      shift_y[j] = wy / res;
+      if (!fuse_shift) shift(j);
     } else {  // a_pi accumulates; applied when the part wakes up.
       moved_x_m_[j] += wx;
       moved_y_m_[j] += wy;
@@ -181,7 +190,6 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
 
   // Heading noise between neighbouring parts. Mass that flows into an inactive part is stored
   // there in its own scale (P / alpha_pi); inactive parts (all cells below theta) send none.
-  const double var_bins = sigma_th * sigma_th / (angular_resolution() * angular_resolution());
   std::vector<double> active_sums;  // sum of each active part after the heading noise
   if (var_bins > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_bins / 0.5));
@@ -209,26 +217,32 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     // place in ascending j: old_{j+1} is still in place, old_{j-1} and old_0 are kept in
     // buffers (three layers instead of a copy of all of them).
     const float c0 = 1.0f - 2.0f * w;
-    std::vector<float> first(LayerSize()), buf_a(LayerSize()), buf_b(LayerSize());
+    float* first = scratch_.data() + LayerSize();  // scratch_ holds four layers
     active_sums.assign(nt_, 0.0);
     for (int p = 0; p < passes; ++p) {
-      if (active_[0]) std::copy(LayerData(0), LayerData(0) + LayerSize(), first.begin());
+      const bool shift_now = fuse_shift && p == 0;
+      if (shift_now) {
+        shift(nt_ - 1);
+        shift(0);
+      }
+      if (active_[0]) std::copy(LayerData(0), LayerData(0) + LayerSize(), first);
       const float* prev_old = active_[nt_ - 1] ? LayerData(nt_ - 1) : nullptr;
-      float* spare = buf_a.data();
-      float* spare2 = buf_b.data();
+      float* spare = first + LayerSize();
+      float* spare2 = spare + LayerSize();
       for (int j = 0; j < nt_; ++j) {
+        if (shift_now && j + 1 < nt_ - 1) shift(j + 1);
         if (!active_[j]) {
           prev_old = nullptr;
           continue;
         }
-        const float* cur_old = first.data();
+        const float* cur_old = first;
         if (j > 0) {
           std::copy(LayerData(j), LayerData(j) + LayerSize(), spare);
           cur_old = spare;
           std::swap(spare, spare2);
         }
         const float* next_old = j + 1 < nt_ ? (active_[j + 1] ? LayerData(j + 1) : nullptr)
-                                            : (active_[0] ? first.data() : nullptr);
+                                            : (active_[0] ? first : nullptr);
         active_sums[j] =
             kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, LayerSize());
         const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};

@@ -126,7 +126,7 @@ class MarkovGrid {
   int rotation_ = 0;                // Layer j holds heading bin (j + rotation_) mod nt_.
   double rotation_residual_ = 0.0;  // Turn (rad) not yet applied to the heading bins.
   std::vector<float> belief_;       // [layer][iy][ix]; inactive layers hold P / alpha_pi.
-  std::vector<float> scratch_;
+  std::vector<float> scratch_;      // 4 layers: the shift's target, the heading noise's buffers
   std::vector<std::uint8_t> evaluated_;  // Cells the last sensor update computed P(s|l) for.
   std::vector<std::uint8_t> active_;
   std::vector<double> alpha_;       // alpha_pi of each inactive layer.
