@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 
+#include "../src/update_kernels.h"
 #include "markov_localization/markov_grid.h"
 #include "spott_map/world_loader.h"
 
@@ -74,6 +75,7 @@ std::vector<double> Scan(const Setup& s, const ml::Pose2& pose) {
 }
 
 void Counters(benchmark::State& state, const ml::MarkovGrid& grid) {
+  state.SetLabel(ml::kernels::IsaName(ml::kernels::ActiveIsa()));
   state.counters["states_M"] = grid.NumStates() / 1e6;
   state.counters["grid_cells_M"] = grid.nx() * grid.ny() * grid.nt() / 1e6;
   state.counters["amcl_issue_ms"] = 0.5;  // quoted from the issue, not measured here
@@ -146,6 +148,34 @@ void BM_SelectiveMotionLocalized(benchmark::State& state) {
   state.counters["active_parts"] = grid.ActiveParts();
 }
 
+// The full sensor update with each instruction-set version of its kernels (arg: 0 plain C++,
+// 1 AVX2, 2 AVX-512), over the 30 x 30 m building: what a CPU without AVX-512 or AVX2 gets.
+// (The motion update's loops are versioned by the compiler's target_clones, chosen by the
+// loader: not switchable here; they are bound by memory traffic rather than arithmetic.)
+bool UseIsa(benchmark::State& state) {
+  const auto isa = static_cast<ml::kernels::Isa>(state.range(0));
+  if (ml::kernels::ForceIsa(isa) == isa) return true;
+  state.SkipWithError("not supported by this CPU");
+  return false;
+}
+
+void BM_FullSensorUpdateByIsa(benchmark::State& state) {
+  Setup& s = Building30();
+  if (!UseIsa(state)) return;
+  ml::MarkovGridParameters p;
+  p.selective_update = false;
+  ml::MarkovGrid grid(s.map, *s.sensor, p);
+  const auto scan = Scan(s, s.inside);
+  for (auto _ : state) {
+    state.PauseTiming();
+    grid.SetUniform();
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(grid.SensorUpdate(scan));
+  }
+  Counters(state, grid);
+  ml::kernels::ForceIsa(ml::kernels::SupportedIsa());
+}
+
 }  // namespace
 
 // Arg 0: the 30 x 30 m building; arg 1: bonn_department.
@@ -153,4 +183,5 @@ BENCHMARK(BM_FullSensorUpdate)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->I
 BENCHMARK(BM_MotionUpdateUniform)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_SelectiveTrackingStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SelectiveMotionLocalized)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSensorUpdateByIsa)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_MAIN();
