@@ -176,53 +176,91 @@ __attribute__((target("avx2"))) float ScaleLayerAvx2(float* data, const std::uin
 
 #define MARKOV_AVX512 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
 
+// The likelihood products of NC chunks of 16 cells, kept in registers while the beams are
+// applied in order (a column's four registers serve all NC chunks). NC > 1: full chunks only.
+template <int NC>
+MARKOV_AVX512 inline void ProductsAvx512(const SensorLayerIn& in, std::size_t c0,
+                                         const __mmask16* lanes, __m512* l) {
+  const __m512i bit5 = _mm512_set1_epi32(32);
+  __m512 acc[NC];  // local (not through `l`, which may alias the columns): kept in registers
+#pragma GCC unroll 8
+  for (int k = 0; k < NC; ++k) acc[k] = _mm512_set1_ps(1.0f);
+  for (int b = 0; b < in.beams; ++b) {
+    const float* t = in.columns + b * in.column_stride;
+    const std::uint8_t* row = in.rows[b] + c0;
+    if (in.column_stride == kPermuteBins) {
+      const __m512 t0 = _mm512_loadu_ps(t), t1 = _mm512_loadu_ps(t + 16);
+      const __m512 t2 = _mm512_loadu_ps(t + 32), t3 = _mm512_loadu_ps(t + 48);
+#pragma GCC unroll 8
+      for (int k = 0; k < NC; ++k) {
+        const __m512i e = _mm512_cvtepu8_epi32(
+            NC > 1 ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16 * k))
+                   : _mm_maskz_loadu_epi8(lanes[k], row + 16 * k));
+        const __m512 lo = _mm512_permutex2var_ps(t0, e, t1);
+        const __m512 hi = _mm512_permutex2var_ps(t2, e, t3);
+        const __m512 f = _mm512_mask_blend_ps(_mm512_test_epi32_mask(e, bit5), lo, hi);
+        acc[k] = _mm512_mul_ps(acc[k], f);
+      }
+    } else {
+#pragma GCC unroll 8
+      for (int k = 0; k < NC; ++k) {
+        const __m512i e = _mm512_cvtepu8_epi32(
+            NC > 1 ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16 * k))
+                   : _mm_maskz_loadu_epi8(lanes[k], row + 16 * k));
+        const __m512 f = _mm512_i32gather_ps(e, t, 4);
+        acc[k] = _mm512_mul_ps(acc[k], f);
+      }
+    }
+  }
+#pragma GCC unroll 8
+  for (int k = 0; k < NC; ++k) l[k] = acc[k];
+}
+
 MARKOV_AVX512 SensorLayerOut SensorLayerAvx512(const SensorLayerIn& in) {
+  constexpr int kChunks = 8;  // cells in blocks of 8 x 16
   SensorLayerOut out;
   const __m512 theta = _mm512_set1_ps(in.theta);
-  const __m512 one = _mm512_set1_ps(1.0f);
-  const __m512i bit5 = _mm512_set1_epi32(32);
-  const bool permute = in.column_stride == kPermuteBins;
   __m512d likely = _mm512_setzero_pd(), unlikely = _mm512_setzero_pd();
   float* data = in.data;
   for (std::size_t s = 0; s < in.num_spans; ++s) {
     const std::size_t end = in.spans[2 * s + 1];
-    for (std::size_t c = in.spans[2 * s]; c < end; c += 16) {
-      const std::size_t n = std::min<std::size_t>(16, end - c);
-      const __mmask16 lanes = static_cast<__mmask16>(n == 16 ? 0xFFFFu : (1u << n) - 1u);
-      const __m512 p = _mm512_maskz_loadu_ps(lanes, data + c);
-      const __mmask16 upd = _mm512_mask_cmp_ps_mask(lanes, p, theta, _CMP_NLE_UQ);
-      const __mmask16 left = static_cast<__mmask16>(lanes & ~upd);
-      const __m512 up = _mm512_maskz_mov_ps(left, p);
-      unlikely = _mm512_add_pd(unlikely, _mm512_cvtps_pd(_mm512_castps512_ps256(up)));
-      unlikely = _mm512_add_pd(
-          unlikely,
-          _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(up), 1))));
-      _mm_mask_storeu_epi8(in.flags + c, lanes, _mm_maskz_set1_epi8(upd, 1));
-      if (upd == 0) continue;
-      __m512 l = one;
-      if (permute) {
-        for (int b = 0; b < in.beams; ++b) {
-          const __m512i e = _mm512_cvtepu8_epi32(_mm_maskz_loadu_epi8(lanes, in.rows[b] + c));
-          const float* t = in.columns + b * kPermuteBins;
-          const __m512 lo = _mm512_permutex2var_ps(_mm512_loadu_ps(t), e, _mm512_loadu_ps(t + 16));
-          const __m512 hi =
-              _mm512_permutex2var_ps(_mm512_loadu_ps(t + 32), e, _mm512_loadu_ps(t + 48));
-          const __mmask16 high = _mm512_test_epi32_mask(e, bit5);
-          l = _mm512_mul_ps(l, _mm512_mask_blend_ps(high, lo, hi));
-        }
-      } else {
-        for (int b = 0; b < in.beams; ++b) {
-          const __m512i e = _mm512_cvtepu8_epi32(_mm_maskz_loadu_epi8(lanes, in.rows[b] + c));
-          l = _mm512_mul_ps(l, _mm512_i32gather_ps(e, in.columns + b * in.column_stride, 4));
-        }
+    for (std::size_t c0 = in.spans[2 * s]; c0 < end; c0 += 16 * kChunks) {
+      const std::size_t n = std::min<std::size_t>(16 * kChunks, end - c0);
+      const int chunks = static_cast<int>((n + 15) / 16);
+      __mmask16 upd[kChunks], lanes[kChunks];
+      bool any = false;
+      for (int ch = 0; ch < chunks; ++ch) {
+        const std::size_t c = c0 + 16 * ch, m = std::min<std::size_t>(16, end - c);
+        lanes[ch] = static_cast<__mmask16>(m == 16 ? 0xFFFFu : (1u << m) - 1u);
+        const __m512 p = _mm512_maskz_loadu_ps(lanes[ch], data + c);
+        upd[ch] = _mm512_mask_cmp_ps_mask(lanes[ch], p, theta, _CMP_NLE_UQ);  // !(p <= theta)
+        const __m512 up = _mm512_maskz_mov_ps(static_cast<__mmask16>(lanes[ch] & ~upd[ch]), p);
+        unlikely = _mm512_add_pd(unlikely, _mm512_cvtps_pd(_mm512_castps512_ps256(up)));
+        unlikely = _mm512_add_pd(
+            unlikely,
+            _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(up), 1))));
+        _mm_mask_storeu_epi8(in.flags + c, lanes[ch], _mm_maskz_set1_epi8(upd[ch], 1));
+        any = any || upd[ch] != 0;
       }
-      const __m512 v = _mm512_maskz_mul_ps(upd, p, l);
-      _mm512_mask_storeu_ps(data + c, upd, v);
-      likely = _mm512_add_pd(likely, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
-      likely = _mm512_add_pd(
-          likely,
-          _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
-      out.evaluated += static_cast<std::size_t>(__builtin_popcount(upd));
+      if (!any) continue;
+      __m512 l[kChunks];
+      if (chunks == kChunks) {
+        ProductsAvx512<kChunks>(in, c0, lanes, l);
+      } else {
+        for (int ch = 0; ch < chunks; ++ch) ProductsAvx512<1>(in, c0 + 16 * ch, lanes + ch, l + ch);
+      }
+      for (int ch = 0; ch < chunks; ++ch) {
+        if (upd[ch] == 0) continue;
+        const std::size_t c = c0 + 16 * ch;
+        const __m512 p = _mm512_maskz_loadu_ps(lanes[ch], data + c);
+        const __m512 v = _mm512_maskz_mul_ps(upd[ch], p, l[ch]);
+        _mm512_mask_storeu_ps(data + c, upd[ch], v);
+        likely = _mm512_add_pd(likely, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
+        likely = _mm512_add_pd(
+            likely,
+            _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
+        out.evaluated += static_cast<std::size_t>(__builtin_popcount(upd[ch]));
+      }
     }
   }
   alignas(64) double l8[8], u8[8];
