@@ -1,14 +1,32 @@
 #include "markov_localization/markov_grid.h"
 
 #include "update_kernels.h"
+#include "worker_pool.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
 namespace markov_localization {
+
+namespace {
+// task(0), ..., task(count - 1) on the pool's threads when there is one.
+void ForEach(WorkerPool* pool, int count, const std::function<void(int)>& task) {
+  if (pool && count > 1) {
+    pool->Run(count, task);
+  } else {
+    for (int i = 0; i < count; ++i) task(i);
+  }
+}
+
+// Parts are handed to the threads in this many chunks (whoever is free takes the next), when
+// at least kMinParallelParts are active; a few parts (tracking) are not worth a thread switch.
+constexpr int kChunks = 8;
+constexpr int kMinParallelParts = 16;
+}  // namespace
 
 std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   std::vector<std::string> errors;
@@ -55,7 +73,8 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   threshold_ = params.threshold_fraction / static_cast<double>(NumStates());
   floor_ = static_cast<float>(params.floor_fraction / static_cast<double>(NumStates()));
   belief_.assign(LayerSize() * nt_, 0.0f);
-  scratch_.assign(4 * LayerSize(), 0.0f);
+  if (WorkerThreadsEnabled()) pool_ = std::make_shared<WorkerPool>();
+  scratch_.assign((pool_ ? 2 : 1) * 5 * LayerSize(), 0.0f);
   evaluated_.assign(belief_.size(), 0);
   active_.assign(nt_, 1);
   alpha_.assign(nt_, 1.0);
@@ -125,14 +144,15 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
 
 double MarkovGrid::LayerSum(int j) const { return kernels::Sum(LayerData(j), LayerSize()); }
 
-void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells) {
+void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells, float* scratch) {
   float* data = LayerData(j);
+  float* buf = scratch ? scratch : scratch_.data();
   const double flx = std::floor(sx), fly = std::floor(sy);
   const int ox = static_cast<int>(flx), oy = static_cast<int>(fly);
   const float fx = static_cast<float>(sx - flx), fy = static_cast<float>(sy - fly);
   const float w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
   const int w = nx(), h = ny();
-  kernels::ShiftBilinear(data, scratch_.data(), w, h, ox, oy, w00, w10, w01, w11);
+  kernels::ShiftBilinear(data, buf, w, h, ox, oy, w00, w10, w01, w11);
   // The bilinear split already spreads the mass by fx(1-fx) (resp. fy(1-fy)) cells^2: only the
   // rest of the motion noise is added, by repeated 3-tap kernels [k, 1-2k, k] (variance 2k
   // each, k <= 0.25) approximating a Gaussian; mass leaving the grid is dropped.
@@ -140,14 +160,14 @@ void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells) {
   const double var_x = var_cells - fx * (1 - fx), var_y = var_cells - fy * (1 - fy);
   if (var_x > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_x / 0.5));
-    kernels::BlurX(scratch_.data(), w, h, passes, static_cast<float>(var_x / passes / 2.0), line);
+    kernels::BlurX(buf, w, h, passes, static_cast<float>(var_x / passes / 2.0), line);
   }
   if (var_y > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_y / 0.5));
-    kernels::BlurY(scratch_.data(), w, h, passes, static_cast<float>(var_y / passes / 2.0), line);
+    kernels::BlurY(buf, w, h, passes, static_cast<float>(var_y / passes / 2.0), line);
   }
   // Mass pushed into obstacles is removed.
-  kernels::MaskedCopy(data, scratch_.data(), map_.state_mask().data(), LayerSize());
+  kernels::MaskedCopy(data, buf, map_.state_mask().data(), LayerSize());
 }
 
 void MarkovGrid::MotionUpdate(const Motion& m) {
@@ -167,7 +187,9 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
   const bool all_active = std::find(active_.begin(), active_.end(), 0) == active_.end();
   const bool fuse_shift = all_active && var_bins > 1e-6;
   std::vector<double> shift_x(nt_), shift_y(nt_);  // cells
-  auto shift = [&](int j) { ShiftLayer(j, shift_x[j], shift_y[j], var_cells); };
+  auto shift = [&](int j, float* scratch) {
+    ShiftLayer(j, shift_x[j], shift_y[j], var_cells, scratch);
+  };
   for (int j = 0; j < nt_; ++j) {
     const double heading = Heading(HeadingOfLayer(j)) + rotation_residual_;
     const double wx = std::cos(heading) * m.dx - std::sin(heading) * m.dy;
@@ -175,7 +197,7 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     if (active_[j]) {
       shift_x[j] = wx / res;
       shift_y[j] = wy / res;
-      if (!fuse_shift) shift(j);
+      if (!fuse_shift) shift(j, nullptr);
     } else {  // a_pi accumulates; applied when the part wakes up.
       moved_x_m_[j] += wx;
       moved_y_m_[j] += wy;
@@ -214,51 +236,90 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
       }
     }
     // Each pass: new_j = (1 - 2w) old_j + w old_{j-1} + w old_{j+1} over the active parts, in
-    // place in ascending j: old_{j+1} is still in place, old_{j-1} and old_0 are kept in
-    // buffers (three layers instead of a copy of all of them).
+    // place in ascending j: old_{j+1} is still in place, old_{j-1} is kept in a buffer (a few
+    // layers instead of a copy of all of them). Buffers of segment h: scratch_ layers 5h (the
+    // shift's target), 5h + 1 and 5h + 2 (old first and last layer), 5h + 3 and 5h + 4.
     const float c0 = 1.0f - 2.0f * w;
-    float* first = scratch_.data() + LayerSize();  // scratch_ holds four layers
+    const std::size_t size = LayerSize();
+    auto buffer = [&](int h, int i) { return scratch_.data() + (5 * h + i) * size; };
     active_sums.assign(nt_, 0.0);
-    for (int p = 0; p < passes; ++p) {
-      const bool shift_now = fuse_shift && p == 0;
-      if (shift_now) {
-        shift(nt_ - 1);
-        shift(0);
-      }
-      if (active_[0]) std::copy(LayerData(0), LayerData(0) + LayerSize(), first);
-      const float* prev_old = active_[nt_ - 1] ? LayerData(nt_ - 1) : nullptr;
-      float* spare = first + LayerSize();
-      float* spare2 = spare + LayerSize();
-      for (int j = 0; j < nt_; ++j) {
-        if (shift_now && j + 1 < nt_ - 1) shift(j + 1);
-        if (!active_[j]) {
-          prev_old = nullptr;
-          continue;
-        }
-        const float* cur_old = first;
-        if (j > 0) {
-          std::copy(LayerData(j), LayerData(j) + LayerSize(), spare);
-          cur_old = spare;
-          std::swap(spare, spare2);
-        }
-        const float* next_old = j + 1 < nt_ ? (active_[j + 1] ? LayerData(j + 1) : nullptr)
-                                            : (active_[0] ? first : nullptr);
-        active_sums[j] =
-            kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, LayerSize());
-        const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
-        for (int q : nb) {
-          if (active_[q]) continue;
-          float* dst = LayerData(q);
-          if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
-          const float scale = static_cast<float>(w / alpha_[q]);
-          double added = 0.0;
-          for (std::size_t c = 0; c < LayerSize(); ++c) {
-            dst[c] += scale * cur_old[c];
-            added += scale * cur_old[c];
+    if (all_active) {
+      // Every part active: the layers are cut into segments, one per thread. Phase 1 keeps old
+      // copies of each segment's first and last layer (shifted first when the shift is fused),
+      // phase 2 runs each segment in ascending j, its neighbours' old edges from the copies.
+      const int segments = pool_ ? 2 : 1;
+      auto begin = [&](int h) { return h * nt_ / segments; };
+      for (int p = 0; p < passes; ++p) {
+        const bool shift_now = fuse_shift && p == 0;
+        ForEach(pool_.get(), segments, [&](int h) {
+          const int a = begin(h), b = begin(h + 1);
+          if (shift_now) {
+            shift(a, buffer(h, 0));
+            if (b - 1 != a) shift(b - 1, buffer(h, 0));
           }
-          stored_sum_[q] += added;
+          std::copy(LayerData(a), LayerData(a) + size, buffer(h, 1));
+          std::copy(LayerData(b - 1), LayerData(b - 1) + size, buffer(h, 2));
+        });
+        ForEach(pool_.get(), segments, [&](int h) {
+          const int a = begin(h), b = begin(h + 1);
+          const float* prev_old = buffer((h + segments - 1) % segments, 2);
+          float* spare = buffer(h, 3);
+          float* spare2 = buffer(h, 4);
+          for (int j = a; j < b; ++j) {
+            if (shift_now && j + 1 > a && j + 1 < b - 1) shift(j + 1, buffer(h, 0));
+            const float* cur_old = buffer(h, 1);
+            if (j == b - 1) {
+              cur_old = buffer(h, 2);
+            } else if (j > a) {
+              std::copy(LayerData(j), LayerData(j) + size, spare);
+              cur_old = spare;
+              std::swap(spare, spare2);
+            }
+            const float* next_old = j + 1 < b ? LayerData(j + 1) : buffer((h + 1) % segments, 1);
+            active_sums[j] =
+                kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, size);
+            prev_old = cur_old;
+          }
+        });
+      }
+    } else {
+      float* first = buffer(0, 1);
+      for (int p = 0; p < passes; ++p) {
+        if (active_[0]) std::copy(LayerData(0), LayerData(0) + size, first);
+        const float* prev_old = active_[nt_ - 1] ? LayerData(nt_ - 1) : nullptr;
+        float* spare = buffer(0, 3);
+        float* spare2 = buffer(0, 4);
+        for (int j = 0; j < nt_; ++j) {
+          if (!active_[j]) {
+            prev_old = nullptr;
+            continue;
+          }
+          const float* cur_old = first;
+          if (j > 0) {
+            std::copy(LayerData(j), LayerData(j) + size, spare);
+            cur_old = spare;
+            std::swap(spare, spare2);
+          }
+          const float* next_old = j + 1 < nt_ ? (active_[j + 1] ? LayerData(j + 1) : nullptr)
+                                              : (active_[0] ? first : nullptr);
+          active_sums[j] =
+              kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, size);
+          // Mass that flows into an inactive part is stored there in its own scale.
+          const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
+          for (int q : nb) {
+            if (active_[q]) continue;
+            float* dst = LayerData(q);
+            if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
+            const float scale = static_cast<float>(w / alpha_[q]);
+            double added = 0.0;
+            for (std::size_t c = 0; c < size; ++c) {
+              dst[c] += scale * cur_old[c];
+              added += scale * cur_old[c];
+            }
+            stored_sum_[q] += added;
+          }
+          prev_old = cur_old;
         }
-        prev_old = cur_old;
       }
     }
   }
@@ -280,13 +341,19 @@ void MarkovGrid::Normalize(const double* active_sums) {
     return;
   }
   const float inv = static_cast<float>(1.0 / total);
+  std::vector<int> active_layers;
   for (int j = 0; j < nt_; ++j) {
-    if (active_[j]) {
-      kernels::Scale(LayerData(j), LayerSize(), inv);
-    } else {
+    if (active_[j])
+      active_layers.push_back(j);
+    else
       alpha_[j] /= total;
-    }
   }
+  const int n = static_cast<int>(active_layers.size());
+  ForEach(pool_.get(), n >= kMinParallelParts ? kChunks : 1, [&](int t) {
+    const int chunks = n >= kMinParallelParts ? kChunks : 1;
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i)
+      kernels::Scale(LayerData(active_layers[i]), LayerSize(), inv);
+  });
 }
 
 void MarkovGrid::MaterializeLayer(int j) {
@@ -333,7 +400,33 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   }
   const double unlikely_factor = std::exp(log_unlikely_factor);
   const float theta = params_.selective_update ? static_cast<float>(threshold_) : 0.0f;
-  std::vector<const std::uint8_t*> rows(nb);
+  std::vector<int> active_layers;
+  for (int j = 0; j < nt_; ++j)
+    if (active_[j]) active_layers.push_back(j);
+  const int n = static_cast<int>(active_layers.size());
+  const int chunks = n >= kMinParallelParts ? kChunks : 1;
+  // Each part's sums in its own place, added below in part order whatever thread ran it.
+  std::vector<kernels::SensorLayerOut> outs(nt_);
+  ForEach(pool_.get(), chunks, [&](int t) {
+    std::vector<const std::uint8_t*> rows(nb);
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
+      const int j = active_layers[i];
+      const int k = HeadingOfLayer(j);
+      for (int b = 0; b < nb; ++b)
+        rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
+      kernels::SensorLayerIn in;
+      in.data = LayerData(j);
+      in.flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+      in.rows = rows.data();
+      in.columns = columns.data();
+      in.beams = nb;
+      in.column_stride = stride;
+      in.theta = theta;
+      in.spans = spans_.data();
+      in.num_spans = spans_.size() / 2;
+      outs[j] = kernels::SensorLayer(in);
+    }
+  });
   double likely_total = 0.0, unlikely_total = 0.0;
   for (int j = 0; j < nt_; ++j) {
     if (!active_[j]) {
@@ -341,22 +434,9 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
       continue;
     }
     ++stats.active_parts;
-    const int k = HeadingOfLayer(j);
-    for (int b = 0; b < nb; ++b) rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
-    kernels::SensorLayerIn in;
-    in.data = LayerData(j);
-    in.flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
-    in.rows = rows.data();
-    in.columns = columns.data();
-    in.beams = nb;
-    in.column_stride = stride;
-    in.theta = theta;
-    in.spans = spans_.data();
-    in.num_spans = spans_.size() / 2;
-    const kernels::SensorLayerOut out = kernels::SensorLayer(in);
-    stats.states_evaluated += out.evaluated;
-    likely_total += out.likely;
-    unlikely_total += out.unlikely;
+    stats.states_evaluated += outs[j].evaluated;
+    likely_total += outs[j].likely;
+    unlikely_total += outs[j].unlikely;
   }
   // total in the scale of the normalized columns; alpha of eq. (4) is unlikely_factor / total.
   const double total = likely_total + unlikely_factor * unlikely_total;
@@ -369,14 +449,18 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   const float a_likely = static_cast<float>(1.0 / total);
   const float a_unlikely = static_cast<float>(alpha);
   std::vector<float> layer_max(nt_, 0.0f);
-  for (int j = 0; j < nt_; ++j) {
-    if (active_[j]) {
+  ForEach(pool_.get(), chunks, [&](int t) {
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
+      const int j = active_layers[i];
       // Which factor a cell gets depends on whether it was updated; its value before was
       // <= theta exactly when it was left out. A floor keeps every state recoverable.
       layer_max[j] = kernels::ScaleLayer(
           LayerData(j), evaluated_.data() + static_cast<std::size_t>(j) * LayerSize(),
           map_.state_mask().data(), spans_.data(), spans_.size() / 2, a_likely, a_unlikely, floor_);
-    } else {
+    }
+  });
+  for (int j = 0; j < nt_; ++j) {
+    if (!active_[j]) {
       alpha_[j] *= alpha;
       if (alpha_[j] > 1.0) {  // the rest of the belief lost against this part: wake it.
         WakeLayer(j);

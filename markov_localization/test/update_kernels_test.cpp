@@ -1,7 +1,8 @@
 // The optimized update loops (src/update_kernels.cpp: runs of state cells, AVX2/AVX-512
-// versions, the fused shift and heading noise) against plain reference loops written here in
-// double precision from the model's definition, and every instruction-set version against the
-// others (they must give the same floats).
+// versions, the fused shift and heading noise, the worker thread) against plain reference
+// loops written here in double precision from the model's definition, and every
+// instruction-set version and thread count against the others (they must give the same
+// floats).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "../src/update_kernels.h"
+#include "../src/worker_pool.h"
 #include "markov_localization/markov_grid.h"
 
 namespace markov_localization {
@@ -219,7 +221,11 @@ Sequence RunAndCheck(const MapModel& map, const SensorModel& sensor, bool select
 
 class UpdateKernels : public ::testing::TestWithParam<double> {
  protected:
-  void TearDown() override { kernels::ForceIsa(kernels::SupportedIsa()); }
+  void TearDown() override {
+    kernels::ForceIsa(kernels::SupportedIsa());
+    EnableWorkerThreads(threads_);
+  }
+  const bool threads_ = WorkerThreadsEnabled();
 };
 
 TEST_P(UpdateKernels, EveryVersionEqualsThePlainReferenceLoopsAndTheOthers) {
@@ -229,12 +235,17 @@ TEST_P(UpdateKernels, EveryVersionEqualsThePlainReferenceLoopsAndTheOthers) {
     std::vector<Sequence> runs;
     for (kernels::Isa isa : {kernels::Isa::kScalar, kernels::Isa::kAvx2, kernels::Isa::kAvx512}) {
       if (kernels::ForceIsa(isa) != isa) continue;  // not on this CPU
-      SCOPED_TRACE(std::string(kernels::IsaName(isa)) + (selective ? " selective" : " full"));
-      runs.push_back(RunAndCheck(map, sensor, selective));
-      ASSERT_EQ(runs.back().beliefs.size(), 8u);  // four sensor and four motion updates
-      // Selective: some states were left out (at or below theta).
-      if (selective) {
-        EXPECT_LT(runs.back().evaluated, 4 * runs.back().states);
+      // One thread and (where the machine has two cores) two threads.
+      for (bool threads : {false, threads_}) {
+        EnableWorkerThreads(threads);
+        SCOPED_TRACE(std::string(kernels::IsaName(isa)) + (selective ? " selective" : " full") +
+                     (threads ? ", two threads" : ", one thread"));
+        runs.push_back(RunAndCheck(map, sensor, selective));
+        ASSERT_EQ(runs.back().beliefs.size(), 8u);  // four sensor and four motion updates
+        // Selective: some states were left out (at or below theta).
+        if (selective) {
+          EXPECT_LT(runs.back().evaluated, 4 * runs.back().states);
+        }
       }
     }
     for (std::size_t r = 1; r < runs.size(); ++r) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@
 namespace markov_localization {
 
 using spott_map::Pose2;
+
+class WorkerPool;
 
 struct MotionModelParameters {
   double sigma_xy_per_m = 0.1;       ///< Position noise per metre travelled (m/m), >= 0.
@@ -110,7 +113,8 @@ class MarkovGrid {
   const float* LayerData(int j) const {
     return belief_.data() + static_cast<std::size_t>(j) * LayerSize();
   }
-  void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells);
+  void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells,
+                  float* scratch = nullptr);  // scratch: one layer (default: scratch_)
   double LayerSum(int j) const;
   void WakeLayer(int j);
   void MaterializeLayer(int j);
@@ -123,10 +127,10 @@ class MarkovGrid {
   int nt_ = 0;
   double threshold_ = 0.0;
   float floor_ = 0.0f;
-  int rotation_ = 0;                // Layer j holds heading bin (j + rotation_) mod nt_.
-  double rotation_residual_ = 0.0;  // Turn (rad) not yet applied to the heading bins.
-  std::vector<float> belief_;       // [layer][iy][ix]; inactive layers hold P / alpha_pi.
-  std::vector<float> scratch_;      // 4 layers: the shift's target, the heading noise's buffers
+  int rotation_ = 0;                     // Layer j holds heading bin (j + rotation_) mod nt_.
+  double rotation_residual_ = 0.0;       // Turn (rad) not yet applied to the heading bins.
+  std::vector<float> belief_;            // [layer][iy][ix]; inactive layers hold P / alpha_pi.
+  std::vector<float> scratch_;           // 5 layers per segment of the motion update (see there)
   std::vector<std::uint8_t> evaluated_;  // Cells the last sensor update computed P(s|l) for.
   std::vector<std::uint8_t> active_;
   std::vector<double> alpha_;       // alpha_pi of each inactive layer.
@@ -136,6 +140,8 @@ class MarkovGrid {
   std::vector<double> moved_var_m2_;  // ... and accumulated position noise variance (m^2).
   // Runs [begin, end) of cells (pairs) covering every state cell: the loops skip the rest.
   std::vector<std::uint32_t> spans_;
+  // Two threads (the caller and one worker) when the machine has two cores; shared by copies.
+  std::shared_ptr<WorkerPool> pool_;
 };
 
 }  // namespace markov_localization
