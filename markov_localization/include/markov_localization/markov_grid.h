@@ -5,7 +5,8 @@
 // update (movement applied as one combined motion) when alpha_pi exceeds 1.
 //
 // Not thread-safe. Takes no clock and no random generator: the caller passes each motion and
-// each scan.
+// each scan. On a machine with two cores or more a grid runs its large updates on the calling
+// thread plus one worker thread of its own; the belief is the same as with one thread.
 #pragma once
 
 #include <cstdint>
