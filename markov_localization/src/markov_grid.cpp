@@ -74,7 +74,7 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   floor_ = static_cast<float>(params.floor_fraction / static_cast<double>(NumStates()));
   belief_.assign(LayerSize() * nt_, 0.0f);
   if (WorkerThreadsEnabled()) pool_ = std::make_shared<WorkerPool>();
-  scratch_.assign((pool_ ? 2 : 1) * 5 * LayerSize(), 0.0f);
+  scratch_.assign((pool_ ? 2 : 1) * 6 * LayerSize(), 0.0f);
   evaluated_.assign(belief_.size(), 0);
   active_.assign(nt_, 1);
   alpha_.assign(nt_, 1.0);
@@ -144,7 +144,8 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
 
 double MarkovGrid::LayerSum(int j) const { return kernels::Sum(LayerData(j), LayerSize()); }
 
-void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells, float* scratch) {
+void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells, float* scratch,
+                            float* out) {
   float* data = LayerData(j);
   float* buf = scratch ? scratch : scratch_.data();
   const double flx = std::floor(sx), fly = std::floor(sy);
@@ -167,7 +168,7 @@ void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells, float
     kernels::BlurY(buf, w, h, passes, static_cast<float>(var_y / passes / 2.0), line);
   }
   // Mass pushed into obstacles is removed.
-  kernels::MaskedCopy(data, buf, map_.state_mask().data(), LayerSize());
+  kernels::MaskedCopy(out ? out : data, buf, map_.state_mask().data(), LayerSize());
 }
 
 void MarkovGrid::MotionUpdate(const Motion& m) {
@@ -187,8 +188,8 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
   const bool all_active = std::find(active_.begin(), active_.end(), 0) == active_.end();
   const bool fuse_shift = all_active && var_bins > 1e-6;
   std::vector<double> shift_x(nt_), shift_y(nt_);  // cells
-  auto shift = [&](int j, float* scratch) {
-    ShiftLayer(j, shift_x[j], shift_y[j], var_cells, scratch);
+  auto shift = [&](int j, float* scratch, float* out) {
+    ShiftLayer(j, shift_x[j], shift_y[j], var_cells, scratch, out);
   };
   for (int j = 0; j < nt_; ++j) {
     const double heading = Heading(HeadingOfLayer(j)) + rotation_residual_;
@@ -197,7 +198,7 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     if (active_[j]) {
       shift_x[j] = wx / res;
       shift_y[j] = wy / res;
-      if (!fuse_shift) shift(j, nullptr);
+      if (!fuse_shift) shift(j, nullptr, nullptr);
     } else {  // a_pi accumulates; applied when the part wakes up.
       moved_x_m_[j] += wx;
       moved_y_m_[j] += wy;
@@ -237,48 +238,46 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     }
     // Each pass: new_j = (1 - 2w) old_j + w old_{j-1} + w old_{j+1} over the active parts, in
     // place in ascending j: old_{j+1} is still in place, old_{j-1} is kept in a buffer (a few
-    // layers instead of a copy of all of them). Buffers of segment h: scratch_ layers 5h (the
-    // shift's target), 5h + 1 and 5h + 2 (old first and last layer), 5h + 3 and 5h + 4.
+    // layers instead of a copy of all of them). Buffers of segment h: scratch_ layers 6h (the
+    // shift's target), 6h + 1 to 6h + 5.
     const float c0 = 1.0f - 2.0f * w;
     const std::size_t size = LayerSize();
-    auto buffer = [&](int h, int i) { return scratch_.data() + (5 * h + i) * size; };
+    auto buffer = [&](int h, int i) { return scratch_.data() + (6 * h + i) * size; };
     active_sums.assign(nt_, 0.0);
     if (all_active) {
-      // Every part active: the layers are cut into segments, one per thread. Phase 1 keeps old
-      // copies of each segment's first and last layer (shifted first when the shift is fused),
-      // phase 2 runs each segment in ascending j, its neighbours' old edges from the copies.
+      // Every part active: the layers are cut into segments, one per thread. Phase 1 puts the
+      // old (in the first pass: just shifted) values of each segment's first and last layer in
+      // buffers 1 and 2; phase 2 runs each segment in ascending j, the old values of layer
+      // j + 1 made (shifted or copied) into buffers 3-5 in turn, the neighbour segments' edges
+      // read from their buffers; the result is written over layer j.
       const int segments = pool_ ? 2 : 1;
       auto begin = [&](int h) { return h * nt_ / segments; };
       for (int p = 0; p < passes; ++p) {
         const bool shift_now = fuse_shift && p == 0;
+        auto old_of = [&](int h, int j, float* out) {
+          if (shift_now)
+            shift(j, buffer(h, 0), out);
+          else
+            std::copy(LayerData(j), LayerData(j) + size, out);
+          return out;
+        };
         ForEach(pool_.get(), segments, [&](int h) {
-          const int a = begin(h), b = begin(h + 1);
-          if (shift_now) {
-            shift(a, buffer(h, 0));
-            if (b - 1 != a) shift(b - 1, buffer(h, 0));
-          }
-          std::copy(LayerData(a), LayerData(a) + size, buffer(h, 1));
-          std::copy(LayerData(b - 1), LayerData(b - 1) + size, buffer(h, 2));
+          const int a = begin(h), b = begin(h + 1);  // b - a >= 2 (nt_ >= 4)
+          old_of(h, a, buffer(h, 1));
+          old_of(h, b - 1, buffer(h, 2));
         });
         ForEach(pool_.get(), segments, [&](int h) {
           const int a = begin(h), b = begin(h + 1);
           const float* prev_old = buffer((h + segments - 1) % segments, 2);
-          float* spare = buffer(h, 3);
-          float* spare2 = buffer(h, 4);
+          const float* cur_old = buffer(h, 1);
           for (int j = a; j < b; ++j) {
-            if (shift_now && j + 1 > a && j + 1 < b - 1) shift(j + 1, buffer(h, 0));
-            const float* cur_old = buffer(h, 1);
-            if (j == b - 1) {
-              cur_old = buffer(h, 2);
-            } else if (j > a) {
-              std::copy(LayerData(j), LayerData(j) + size, spare);
-              cur_old = spare;
-              std::swap(spare, spare2);
-            }
-            const float* next_old = j + 1 < b ? LayerData(j + 1) : buffer((h + 1) % segments, 1);
+            const float* next_old = j + 1 == b       ? buffer((h + 1) % segments, 1)
+                                    : j + 1 == b - 1 ? buffer(h, 2)
+                                                     : old_of(h, j + 1, buffer(h, 3 + (j + 1) % 3));
             active_sums[j] =
                 kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, size);
             prev_old = cur_old;
+            cur_old = next_old;
           }
         });
       }

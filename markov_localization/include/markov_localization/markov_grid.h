@@ -114,8 +114,9 @@ class MarkovGrid {
   const float* LayerData(int j) const {
     return belief_.data() + static_cast<std::size_t>(j) * LayerSize();
   }
+  // scratch: one layer (default: scratch_); out: where the result goes (default: layer j).
   void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells,
-                  float* scratch = nullptr);  // scratch: one layer (default: scratch_)
+                  float* scratch = nullptr, float* out = nullptr);
   double LayerSum(int j) const;
   void WakeLayer(int j);
   void MaterializeLayer(int j);
@@ -131,7 +132,7 @@ class MarkovGrid {
   int rotation_ = 0;                     // Layer j holds heading bin (j + rotation_) mod nt_.
   double rotation_residual_ = 0.0;       // Turn (rad) not yet applied to the heading bins.
   std::vector<float> belief_;            // [layer][iy][ix]; inactive layers hold P / alpha_pi.
-  std::vector<float> scratch_;           // 5 layers per segment of the motion update (see there)
+  std::vector<float> scratch_;           // 6 layers per segment of the motion update (see there)
   std::vector<std::uint8_t> evaluated_;  // Cells the last sensor update computed P(s|l) for.
   std::vector<std::uint8_t> active_;
   std::vector<double> alpha_;       // alpha_pi of each inactive layer.
