@@ -1,12 +1,32 @@
 #include "markov_localization/markov_grid.h"
 
+#include "update_kernels.h"
+#include "worker_pool.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
 namespace markov_localization {
+
+namespace {
+// task(0), ..., task(count - 1) on the pool's threads when there is one.
+void ForEach(WorkerPool* pool, int count, const std::function<void(int)>& task) {
+  if (pool && count > 1) {
+    pool->Run(count, task);
+  } else {
+    for (int i = 0; i < count; ++i) task(i);
+  }
+}
+
+// Parts are handed to the threads in this many chunks (whoever is free takes the next), when
+// at least kMinParallelParts are active; a few parts (tracking) are not worth a thread switch.
+constexpr int kChunks = 8;
+constexpr int kMinParallelParts = 16;
+}  // namespace
 
 std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   std::vector<std::string> errors;
@@ -58,7 +78,8 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   threshold_ = params.threshold_fraction / static_cast<double>(NumStates());
   floor_ = static_cast<float>(params.floor_fraction / static_cast<double>(NumStates()));
   belief_.assign(LayerSize() * nt_, 0.0f);
-  scratch_.assign(LayerSize(), 0.0f);
+  if (WorkerThreadsEnabled()) pool_ = std::make_shared<WorkerPool>();
+  scratch_.assign((pool_ ? 2 : 1) * 6 * LayerSize(), 0.0f);
   evaluated_.assign(belief_.size(), 0);
   active_.assign(nt_, 1);
   alpha_.assign(nt_, 1.0);
@@ -66,6 +87,7 @@ MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
   moved_x_m_.assign(nt_, 0.0);
   moved_y_m_.assign(nt_, 0.0);
   moved_var_m2_.assign(nt_, 0.0);
+  spans_ = kernels::StateSpans(map_.state_mask(), 16);
   SetUniform();
 }
 
@@ -129,94 +151,33 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
   for (float& v : belief_) v = static_cast<float>(v / total);
 }
 
-double MarkovGrid::LayerSum(int j) const {
-  const float* data = LayerData(j);
-  double s = 0.0;
-  for (std::size_t c = 0; c < LayerSize(); ++c) s += data[c];
-  return s;
-}
+double MarkovGrid::LayerSum(int j) const { return kernels::Sum(LayerData(j), LayerSize()); }
 
-void MarkovGrid::ClearNonStates(float* data) const {
-  const auto& mask = map_.state_mask();
-  for (std::size_t c = 0; c < LayerSize(); ++c)
-    if (!mask[c]) data[c] = 0.0f;
-}
-
-namespace {
-// Repeated 3-tap kernels [w, 1-2w, w] (variance 2w each, w <= 0.25) approximate a Gaussian of
-// the requested variance (cells^2) along one axis; mass leaving the grid is dropped.
-void BlurAxis(float* data, int nx, int ny, double var, bool along_x, std::vector<float>& line) {
-  if (!(var > 1e-6)) return;
-  const int passes = static_cast<int>(std::ceil(var / 0.5));
-  const float w = static_cast<float>(var / passes / 2.0);
-  const float c = 1.0f - 2.0f * w;
-  const int n = along_x ? nx : ny;
-  const int lines = along_x ? ny : nx;
-  const std::size_t stride = along_x ? 1 : static_cast<std::size_t>(nx);
-  line.resize(n + 2);
-  for (int l = 0; l < lines; ++l) {
-    float* base = along_x ? data + static_cast<std::size_t>(l) * nx : data + l;
-    bool any = false;
-    for (int i = 0; i < n; ++i) {
-      line[i + 1] = base[i * stride];
-      any = any || line[i + 1] != 0.0f;
-    }
-    if (!any) continue;
-    for (int p = 0; p < passes; ++p) {
-      line[0] = line[n + 1] = 0.0f;
-      float prev = 0.0f;
-      for (int i = 1; i <= n; ++i) {
-        const float cur = line[i];
-        line[i] = w * (prev + line[i + 1]) + c * cur;
-        prev = cur;
-      }
-    }
-    for (int i = 0; i < n; ++i) base[i * stride] = line[i + 1];
-  }
-}
-}  // namespace
-
-void MarkovGrid::BlurLayerXY(float* data, double var_cells) {
-  std::vector<float> line;
-  BlurAxis(data, nx(), ny(), var_cells, true, line);
-  BlurAxis(data, nx(), ny(), var_cells, false, line);
-}
-
-void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells) {
+void MarkovGrid::ShiftLayer(int j, double sx, double sy, double var_cells, float* scratch,
+                            float* out) {
   float* data = LayerData(j);
+  float* buf = scratch ? scratch : scratch_.data();
   const double flx = std::floor(sx), fly = std::floor(sy);
   const int ox = static_cast<int>(flx), oy = static_cast<int>(fly);
   const float fx = static_cast<float>(sx - flx), fy = static_cast<float>(sy - fly);
   const float w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
-  std::fill(scratch_.begin(), scratch_.end(), 0.0f);
   const int w = nx(), h = ny();
-  for (int iy = 0; iy < h; ++iy) {
-    const int ty = iy + oy;
-    if (ty < -1 || ty >= h) continue;
-    for (int ix = 0; ix < w; ++ix) {
-      const float v = data[static_cast<std::size_t>(iy) * w + ix];
-      if (v == 0.0f) continue;
-      const int tx = ix + ox;
-      if (tx < -1 || tx >= w) continue;
-      if (ty >= 0) {
-        float* row = &scratch_[static_cast<std::size_t>(ty) * w];
-        if (tx >= 0) row[tx] += v * w00;
-        if (tx + 1 < w) row[tx + 1] += v * w10;
-      }
-      if (ty + 1 < h) {
-        float* row = &scratch_[static_cast<std::size_t>(ty + 1) * w];
-        if (tx >= 0) row[tx] += v * w01;
-        if (tx + 1 < w) row[tx + 1] += v * w11;
-      }
-    }
-  }
-  std::memcpy(data, scratch_.data(), scratch_.size() * sizeof(float));
+  kernels::ShiftBilinear(data, buf, w, h, ox, oy, w00, w10, w01, w11);
   // The bilinear split already spreads the mass by fx(1-fx) (resp. fy(1-fy)) cells^2: only the
-  // rest of the motion noise is added.
+  // rest of the motion noise is added, by repeated 3-tap kernels [k, 1-2k, k] (variance 2k
+  // each, k <= 0.25) approximating a Gaussian; mass leaving the grid is dropped.
   std::vector<float> line;
-  BlurAxis(data, w, h, var_cells - fx * (1 - fx), true, line);
-  BlurAxis(data, w, h, var_cells - fy * (1 - fy), false, line);
-  ClearNonStates(data);
+  const double var_x = var_cells - fx * (1 - fx), var_y = var_cells - fy * (1 - fy);
+  if (var_x > 1e-6) {
+    const int passes = static_cast<int>(std::ceil(var_x / 0.5));
+    kernels::BlurX(buf, w, h, passes, static_cast<float>(var_x / passes / 2.0), line);
+  }
+  if (var_y > 1e-6) {
+    const int passes = static_cast<int>(std::ceil(var_y / 0.5));
+    kernels::BlurY(buf, w, h, passes, static_cast<float>(var_y / passes / 2.0), line);
+  }
+  // Mass pushed into obstacles is removed.
+  kernels::MaskedCopy(out ? out : data, buf, map_.state_mask().data(), LayerSize());
 }
 
 void MarkovGrid::MotionUpdate(const Motion& m) {
@@ -230,12 +191,23 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
 
   // Translation along each part's heading (the heading before the turn, refined by the turn
   // not yet applied to the bins).
+  // With every part active and heading noise to add, each shift is done just before the
+  // heading noise needs the layer (one pass over the belief instead of two).
+  const double var_bins = sigma_th * sigma_th / (angular_resolution() * angular_resolution());
+  const bool all_active = std::find(active_.begin(), active_.end(), 0) == active_.end();
+  const bool fuse_shift = all_active && var_bins > 1e-6;
+  std::vector<double> shift_x(nt_), shift_y(nt_);  // cells
+  auto shift = [&](int j, float* scratch, float* out) {
+    ShiftLayer(j, shift_x[j], shift_y[j], var_cells, scratch, out);
+  };
   for (int j = 0; j < nt_; ++j) {
     const double heading = Heading(HeadingOfLayer(j)) + rotation_residual_;
     const double wx = std::cos(heading) * m.dx - std::sin(heading) * m.dy;
     const double wy = std::sin(heading) * m.dx + std::cos(heading) * m.dy;
     if (active_[j]) {
-      ShiftLayer(j, wx / res, wy / res, var_cells);
+      shift_x[j] = wx / res;
+      shift_y[j] = wy / res;
+      if (!fuse_shift) shift(j, nullptr, nullptr);
     } else {  // a_pi accumulates; applied when the part wakes up.
       moved_x_m_[j] += wx;
       moved_y_m_[j] += wy;
@@ -250,7 +222,7 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
 
   // Heading noise between neighbouring parts. Mass that flows into an inactive part is stored
   // there in its own scale (P / alpha_pi); inactive parts (all cells below theta) send none.
-  const double var_bins = sigma_th * sigma_th / (angular_resolution() * angular_resolution());
+  std::vector<double> active_sums;  // sum of each active part after the heading noise
   if (var_bins > 1e-6) {
     const int passes = static_cast<int>(std::ceil(var_bins / 0.5));
     const float w = static_cast<float>(var_bins / passes / 2.0);
@@ -258,66 +230,138 @@ void MarkovGrid::MotionUpdate(const Motion& m) {
     // "all below theta": it rejoins the update (with its stored movement) before the mass
     // arrives, so that the sensor update sees it.
     if (params_.selective_update) {
-      std::vector<float> layer_max(nt_, 0.0f);
-      for (int j = 0; j < nt_; ++j)
-        if (active_[j]) layer_max[j] = *std::max_element(LayerData(j), LayerData(j) + LayerSize());
+      // Only the maxima of active parts next to an inactive one matter (taken before any wakes).
+      const std::vector<std::uint8_t> was_active = active_;
+      std::vector<float> layer_max(nt_, -1.0f);
+      auto max_of = [&](int q) {
+        if (!was_active[q]) return 0.0f;
+        if (layer_max[q] < 0.0f) layer_max[q] = kernels::Max(LayerData(q), LayerSize());
+        return layer_max[q];
+      };
       const double inflow = std::min(1.0, var_bins / 2.0);
       for (int q = 0; q < nt_; ++q) {
-        if (active_[q]) continue;
-        const double m = std::max(layer_max[(q + nt_ - 1) % nt_], layer_max[(q + 1) % nt_]);
+        if (was_active[q]) continue;
+        const double m = std::max(max_of((q + nt_ - 1) % nt_), max_of((q + 1) % nt_));
         if (inflow * m > threshold_) WakeLayer(q);
       }
     }
-    std::vector<std::vector<float>> old(nt_);
-    for (int p = 0; p < passes; ++p) {
-      for (int j = 0; j < nt_; ++j) {
-        if (active_[j])
-          old[j].assign(LayerData(j), LayerData(j) + LayerSize());
-        else
-          old[j].clear();
+    // Each pass: new_j = (1 - 2w) old_j + w old_{j-1} + w old_{j+1} over the active parts, in
+    // place in ascending j: old_{j+1} is still in place, old_{j-1} is kept in a buffer (a few
+    // layers instead of a copy of all of them). Buffers of segment h: scratch_ layers 6h (the
+    // shift's target), 6h + 1 to 6h + 5.
+    const float c0 = 1.0f - 2.0f * w;
+    const std::size_t size = LayerSize();
+    auto buffer = [&](int h, int i) { return scratch_.data() + (6 * h + i) * size; };
+    active_sums.assign(nt_, 0.0);
+    if (all_active) {
+      // Every part active: the layers are cut into segments, one per thread. Phase 1 puts the
+      // old (in the first pass: just shifted) values of each segment's first and last layer in
+      // buffers 1 and 2; phase 2 runs each segment in ascending j, the old values of layer
+      // j + 1 made (shifted or copied) into buffers 3-5 in turn, the neighbour segments' edges
+      // read from their buffers; the result is written over layer j.
+      const int segments = pool_ ? 2 : 1;
+      auto begin = [&](int h) { return h * nt_ / segments; };
+      for (int p = 0; p < passes; ++p) {
+        const bool shift_now = fuse_shift && p == 0;
+        auto old_of = [&](int h, int j, float* out) {
+          if (shift_now)
+            shift(j, buffer(h, 0), out);
+          else
+            std::copy(LayerData(j), LayerData(j) + size, out);
+          return out;
+        };
+        ForEach(pool_.get(), segments, [&](int h) {
+          const int a = begin(h), b = begin(h + 1);  // b - a >= 2 (nt_ >= 4)
+          old_of(h, a, buffer(h, 1));
+          old_of(h, b - 1, buffer(h, 2));
+        });
+        ForEach(pool_.get(), segments, [&](int h) {
+          const int a = begin(h), b = begin(h + 1);
+          const float* prev_old = buffer((h + segments - 1) % segments, 2);
+          const float* cur_old = buffer(h, 1);
+          for (int j = a; j < b; ++j) {
+            const float* next_old = j + 1 == b       ? buffer((h + 1) % segments, 1)
+                                    : j + 1 == b - 1 ? buffer(h, 2)
+                                                     : old_of(h, j + 1, buffer(h, 3 + (j + 1) % 3));
+            active_sums[j] =
+                kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, size);
+            prev_old = cur_old;
+            cur_old = next_old;
+          }
+        });
       }
-      for (int j = 0; j < nt_; ++j) {
-        if (!active_[j]) continue;
-        float* data = LayerData(j);
-        const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
-        for (std::size_t c = 0; c < LayerSize(); ++c) data[c] = (1.0f - 2.0f * w) * old[j][c];
-        for (int q : nb) {
-          if (active_[q]) {
-            for (std::size_t c = 0; c < LayerSize(); ++c) data[c] += w * old[q][c];
-          } else {
+    } else {
+      float* first = buffer(0, 1);
+      for (int p = 0; p < passes; ++p) {
+        if (active_[0]) std::copy(LayerData(0), LayerData(0) + size, first);
+        const float* prev_old = active_[nt_ - 1] ? LayerData(nt_ - 1) : nullptr;
+        float* spare = buffer(0, 3);
+        float* spare2 = buffer(0, 4);
+        for (int j = 0; j < nt_; ++j) {
+          if (!active_[j]) {
+            prev_old = nullptr;
+            continue;
+          }
+          const float* cur_old = first;
+          if (j > 0) {
+            std::copy(LayerData(j), LayerData(j) + size, spare);
+            cur_old = spare;
+            std::swap(spare, spare2);
+          }
+          const float* next_old = j + 1 < nt_ ? (active_[j + 1] ? LayerData(j + 1) : nullptr)
+                                              : (active_[0] ? first : nullptr);
+          active_sums[j] =
+              kernels::HeadingBlend(LayerData(j), cur_old, prev_old, next_old, c0, w, size);
+          // Mass that flows into an inactive part is stored there in its own scale.
+          const int nb[2] = {(j + nt_ - 1) % nt_, (j + 1) % nt_};
+          for (int q : nb) {
+            if (active_[q]) continue;
             float* dst = LayerData(q);
             if (alpha_[q] < 1e-20) MaterializeLayer(q);  // keeps w / alpha_pi in float range
             const float scale = static_cast<float>(w / alpha_[q]);
             double added = 0.0;
-            for (std::size_t c = 0; c < LayerSize(); ++c) {
-              dst[c] += scale * old[j][c];
-              added += scale * old[j][c];
+            for (std::size_t c = 0; c < size; ++c) {
+              dst[c] += scale * cur_old[c];
+              added += scale * cur_old[c];
             }
             stored_sum_[q] += added;
           }
+          prev_old = cur_old;
         }
       }
     }
   }
-  Normalize();
+  Normalize(active_sums.empty() ? nullptr : active_sums.data());
 }
 
-void MarkovGrid::Normalize() {
+void MarkovGrid::Normalize() { Normalize(nullptr); }
+
+void MarkovGrid::Normalize(const double* active_sums) {
   double total = 0.0;
-  for (int j = 0; j < nt_; ++j) total += active_[j] ? LayerSum(j) : stored_sum_[j] * alpha_[j];
+  for (int j = 0; j < nt_; ++j) {
+    if (active_[j])
+      total += active_sums ? active_sums[j] : LayerSum(j);
+    else
+      total += stored_sum_[j] * alpha_[j];
+  }
   if (!(total > 0.0)) {  // every state ruled out: nothing is known any more.
     SetUniform();
     return;
   }
   const float inv = static_cast<float>(1.0 / total);
+  std::vector<int> active_layers;
   for (int j = 0; j < nt_; ++j) {
-    if (active_[j]) {
-      float* data = LayerData(j);
-      for (std::size_t c = 0; c < LayerSize(); ++c) data[c] *= inv;
-    } else {
+    if (active_[j])
+      active_layers.push_back(j);
+    else
       alpha_[j] /= total;
-    }
   }
+  const int n = static_cast<int>(active_layers.size());
+  ForEach(pool_.get(), n >= kMinParallelParts ? kChunks : 1, [&](int t) {
+    const int chunks = n >= kMinParallelParts ? kChunks : 1;
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i)
+      kernels::Scale(LayerData(active_layers[i]), LayerSize(), inv);
+  });
 }
 
 void MarkovGrid::MixUniform(double mass) {
@@ -344,8 +388,7 @@ void MarkovGrid::MaterializeLayer(int j) {
 
 void MarkovGrid::WakeLayer(int j) {
   float* data = LayerData(j);
-  const float a = static_cast<float>(alpha_[j]);
-  for (std::size_t c = 0; c < LayerSize(); ++c) data[c] *= a;
+  kernels::Scale(data, LayerSize(), static_cast<float>(alpha_[j]));
   const double res = map_.resolution();
   ShiftLayer(j, moved_x_m_[j] / res, moved_y_m_[j] / res, moved_var_m2_[j] / (res * res));
   active_[j] = 1;
@@ -364,18 +407,47 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   // its largest entry so that the product over 24 beams cannot overflow a float; the common
   // factor `unlikely_factor` (prod_b 1 / max_e ratio) is what the cells left out by eq. (4)
   // are multiplied by instead of 1, so the normalized result is eq. (4) exactly.
-  std::vector<float> columns(static_cast<std::size_t>(nb) * bins);
+  // Stored with kernels::kPermuteBins floats per beam when the table is that small (the AVX-512
+  // kernel keeps a column in registers), zero-padded.
+  const int stride = bins <= kernels::kPermuteBins ? kernels::kPermuteBins : bins;
+  std::vector<float> columns(static_cast<std::size_t>(nb) * stride, 0.0f);
   double log_unlikely_factor = 0.0;
   for (int b = 0; b < nb; ++b) {
     const int z = sensor_.RangeBin(ranges_m[b]);
     float mx = 0.0f;
     for (int e = 0; e < bins; ++e) mx = std::max(mx, sensor_.Ratio(e, z));
-    for (int e = 0; e < bins; ++e) columns[b * bins + e] = sensor_.Ratio(e, z) / mx;
+    for (int e = 0; e < bins; ++e) columns[b * stride + e] = sensor_.Ratio(e, z) / mx;
     log_unlikely_factor -= std::log(static_cast<double>(mx));
   }
   const double unlikely_factor = std::exp(log_unlikely_factor);
   const float theta = params_.selective_update ? static_cast<float>(threshold_) : 0.0f;
-  std::vector<const std::uint8_t*> rows(nb);
+  std::vector<int> active_layers;
+  for (int j = 0; j < nt_; ++j)
+    if (active_[j]) active_layers.push_back(j);
+  const int n = static_cast<int>(active_layers.size());
+  const int chunks = n >= kMinParallelParts ? kChunks : 1;
+  // Each part's sums in its own place, added below in part order whatever thread ran it.
+  std::vector<kernels::SensorLayerOut> outs(nt_);
+  ForEach(pool_.get(), chunks, [&](int t) {
+    std::vector<const std::uint8_t*> rows(nb);
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
+      const int j = active_layers[i];
+      const int k = HeadingOfLayer(j);
+      for (int b = 0; b < nb; ++b)
+        rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
+      kernels::SensorLayerIn in;
+      in.data = LayerData(j);
+      in.flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+      in.rows = rows.data();
+      in.columns = columns.data();
+      in.beams = nb;
+      in.column_stride = stride;
+      in.theta = theta;
+      in.spans = spans_.data();
+      in.num_spans = spans_.size() / 2;
+      outs[j] = kernels::SensorLayer(in);
+    }
+  });
   double likely_total = 0.0, unlikely_total = 0.0;
   for (int j = 0; j < nt_; ++j) {
     if (!active_[j]) {
@@ -383,31 +455,9 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
       continue;
     }
     ++stats.active_parts;
-    const int k = HeadingOfLayer(j);
-    for (int b = 0; b < nb; ++b) rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
-    float* data = LayerData(j);
-    std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
-    double likely = 0.0, unlikely = 0.0;
-    std::size_t evaluated = 0;
-    for (std::size_t c = 0; c < LayerSize(); ++c) {
-      const float p = data[c];
-      // Eq. (4): cells at or below theta keep P(l) (their factor P~(s)/P~(s) = 1).
-      if (p <= theta) {
-        unlikely += p;
-        flags[c] = 0;
-        continue;
-      }
-      flags[c] = 1;
-      float l = 1.0f;
-      for (int b = 0; b < nb; ++b) l *= columns[b * bins + rows[b][c]];
-      const float v = p * l;
-      data[c] = v;
-      likely += v;
-      ++evaluated;
-    }
-    stats.states_evaluated += evaluated;
-    likely_total += likely;
-    unlikely_total += unlikely;
+    stats.states_evaluated += outs[j].evaluated;
+    likely_total += outs[j].likely;
+    unlikely_total += outs[j].unlikely;
   }
   // total in the scale of the normalized columns; alpha of eq. (4) is unlikely_factor / total.
   const double total = likely_total + unlikely_factor * unlikely_total;
@@ -420,23 +470,24 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   stats.log_likelihood_per_beam = -std::log(alpha) / nb;
   const float a_likely = static_cast<float>(1.0 / total);
   const float a_unlikely = static_cast<float>(alpha);
-  const auto& mask = map_.state_mask();
+  std::vector<float> layer_max(nt_, 0.0f);
+  ForEach(pool_.get(), chunks, [&](int t) {
+    for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
+      const int j = active_layers[i];
+      // Which factor a cell gets depends on whether it was updated; its value before was
+      // <= theta exactly when it was left out. A floor keeps every state recoverable.
+      layer_max[j] = kernels::ScaleLayer(
+          LayerData(j), evaluated_.data() + static_cast<std::size_t>(j) * LayerSize(),
+          map_.state_mask().data(), spans_.data(), spans_.size() / 2, a_likely, a_unlikely, floor_);
+    }
+  });
   for (int j = 0; j < nt_; ++j) {
-    if (active_[j]) {
-      float* data = LayerData(j);
-      const std::uint8_t* flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
-      for (std::size_t c = 0; c < LayerSize(); ++c) {
-        if (!mask[c]) continue;
-        // Which factor a cell gets depends on whether it was updated; its value before was
-        // <= theta exactly when it was left out. A floor keeps every state recoverable.
-        const bool updated = flags[c] != 0;
-        data[c] = std::max(floor_, data[c] * (updated ? a_likely : a_unlikely));
-      }
-    } else {
+    if (!active_[j]) {
       alpha_[j] *= alpha;
       if (alpha_[j] > 1.0) {  // the rest of the belief lost against this part: wake it.
         WakeLayer(j);
         ++stats.parts_woken;
+        layer_max[j] = -1.0f;  // not known after the wake: computed below
       }
     }
   }
@@ -445,8 +496,11 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     for (int j = 0; j < nt_; ++j) {
       if (!active_[j]) continue;
       const float* data = LayerData(j);
-      float mx = 0.0f;
-      for (std::size_t c = 0; c < LayerSize(); ++c) mx = std::max(mx, data[c]);
+      float mx = layer_max[j];
+      if (stats.parts_woken > 0 || mx < 0.0f) {  // normalized again: the maximum changed
+        mx = 0.0f;
+        for (std::size_t c = 0; c < LayerSize(); ++c) mx = std::max(mx, data[c]);
+      }
       if (mx < theta) {
         active_[j] = 0;
         alpha_[j] = 1.0;

@@ -5,10 +5,12 @@
 // update (movement applied as one combined motion) when alpha_pi exceeds 1.
 //
 // Not thread-safe. Takes no clock and no random generator: the caller passes each motion and
-// each scan.
+// each scan. On a machine with two cores or more a grid runs its large updates on the calling
+// thread plus one worker thread of its own; the belief is the same as with one thread.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,8 @@
 namespace markov_localization {
 
 using spott_map::Pose2;
+
+class WorkerPool;
 
 struct MotionModelParameters {
   double sigma_xy_per_m = 0.1;       ///< Position noise per metre travelled (m/m), >= 0.
@@ -126,13 +130,14 @@ class MarkovGrid {
   const float* LayerData(int j) const {
     return belief_.data() + static_cast<std::size_t>(j) * LayerSize();
   }
-  void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells);
-  void BlurLayerXY(float* data, double var_cells);
-  void ClearNonStates(float* data) const;
+  // scratch: one layer (default: scratch_); out: where the result goes (default: layer j).
+  void ShiftLayer(int j, double sx_cells, double sy_cells, double var_cells,
+                  float* scratch = nullptr, float* out = nullptr);
   double LayerSum(int j) const;
   void WakeLayer(int j);
   void MaterializeLayer(int j);
   void Normalize();
+  void Normalize(const double* active_sums);  // sums of the active parts when known
 
   const MapModel& map_;
   const SensorModel& sensor_;
@@ -140,10 +145,10 @@ class MarkovGrid {
   int nt_ = 0;
   double threshold_ = 0.0;
   float floor_ = 0.0f;
-  int rotation_ = 0;                // Layer j holds heading bin (j + rotation_) mod nt_.
-  double rotation_residual_ = 0.0;  // Turn (rad) not yet applied to the heading bins.
-  std::vector<float> belief_;       // [layer][iy][ix]; inactive layers hold P / alpha_pi.
-  std::vector<float> scratch_;
+  int rotation_ = 0;                     // Layer j holds heading bin (j + rotation_) mod nt_.
+  double rotation_residual_ = 0.0;       // Turn (rad) not yet applied to the heading bins.
+  std::vector<float> belief_;            // [layer][iy][ix]; inactive layers hold P / alpha_pi.
+  std::vector<float> scratch_;           // 6 layers per segment of the motion update (see there)
   std::vector<std::uint8_t> evaluated_;  // Cells the last sensor update computed P(s|l) for.
   std::vector<std::uint8_t> active_;
   std::vector<double> alpha_;       // alpha_pi of each inactive layer.
@@ -153,6 +158,10 @@ class MarkovGrid {
   std::vector<double> moved_var_m2_;  // ... and accumulated position noise variance (m^2).
   LostDetector detector_;
   bool lost_ = false;
+  // Runs [begin, end) of cells (pairs) covering every state cell: the loops skip the rest.
+  std::vector<std::uint32_t> spans_;
+  // Two threads (the caller and one worker) when the machine has two cores; shared by copies.
+  std::shared_ptr<WorkerPool> pool_;
 };
 
 }  // namespace markov_localization
