@@ -43,25 +43,25 @@ double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 namespace {
 
-// The nearest cell within `radius_m` of `at` that is free and connected to the goal (p > 0).
-std::optional<Vec2> NearestEscape(const PotentialField& field, const Vec2& at, double radius_m) {
+// The free cell connected to the goal (p > 0) within `radius_m` of `at` that is closest to the
+// goal (largest p). Within the padding's width no free cell lies beyond a wall, so this is the
+// way out towards the goal: in a doorway, into the door's channel rather than back into the hall.
+std::optional<Vec2> BestEscape(const PotentialField& field, const Vec2& at, double radius_m) {
   const auto c = field.CellOf(at);
   if (!c || radius_m <= 0.0) return std::nullopt;
   const int r = static_cast<int>(std::ceil(radius_m / field.resolution()));
   std::optional<Vec2> best;
-  double best_d = radius_m;
+  double best_p = 0.0;
   for (int dy = -r; dy <= r; ++dy) {
     for (int dx = -r; dx <= r; ++dx) {
       const int x = c->first + dx, y = c->second + dy;
       if (x < 0 || y < 0 || x >= field.width() || y >= field.height()) continue;
       const FieldCell kind = field.cell(x, y);
-      if ((kind != FieldCell::kFree && kind != FieldCell::kGoal) ||
-          !(field.GoalProbability(x, y) > 0.0))
-        continue;
+      if (kind != FieldCell::kFree && kind != FieldCell::kGoal) continue;
       const Vec2 centre = field.CellCentre(x, y);
-      const double d = (centre - at).norm();
-      if (d <= best_d) {
-        best_d = d;
+      const double p = field.GoalProbability(x, y);
+      if ((centre - at).norm() <= radius_m && p > best_p) {
+        best_p = p;
         best = centre;
       }
     }
@@ -90,12 +90,12 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
     if (!c) {
       cmd.reason = "the robot is outside the planning window";
     } else if (field.cell(c->first, c->second) == FieldCell::kObstacle) {
-      const auto escape = NearestEscape(field, at, params.escape_radius_m);
+      const auto escape = BestEscape(field, at, params.escape_radius_m);
       if (!escape) {
         cmd.reason = "the robot is inside a padded obstacle";
         return cmd;
       }
-      // Out of the padding the way it came in, slowly (clearance 0 gives a tenth of the speed).
+      // Out of the padding towards the goal, slowly.
       const Vec2 d = (*escape - at).normalized();
       cmd.valid = true;
       cmd.reason = "escaping the padding of an obstacle";

@@ -66,13 +66,12 @@ TEST(Steering, ARobotEstimatedInsideThePaddingHeadsForTheNearestFreeCell) {
   field.ColdStart();
   field.Solve(5000);
   SteeringParameters p;  // escape_radius 0.4 m
-  // 0.12 m deep in the padding (y = 0.88), facing north: out the nearest way, +y, slowly.
+  // 0.12 m deep in the padding (y = 0.88), facing north: out towards the goal, +y, slowly.
   const SteeringCommand c =
       ComputeSteering(field, Pose2{2.05, 0.88, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 2.6, p);
   ASSERT_TRUE(c.valid) << c.reason;
   EXPECT_NE(c.reason.find("escaping"), std::string::npos);
-  EXPECT_NEAR(c.descent.x(), 0.0, 1e-9);
-  EXPECT_NEAR(c.descent.y(), 1.0, 1e-9);
+  EXPECT_GT(c.descent.y(), 0.95);
   EXPECT_NEAR(c.linear, 0.1 * p.slowly_fraction * p.max_linear_mps, 1e-9);
   // 0.6 m deep: no free cell within 0.4 m: it stops and says why.
   const SteeringCommand deep =

@@ -29,7 +29,8 @@ struct SteeringParameters {
   double goal_slowdown_m =
       0.5;  ///< Below this distance to the goal the speed scales down (m), > 0.
   /// A robot whose estimated position lies in the padding (localization error beside a door
-  /// jamb) heads for the nearest free cell within this distance (m), >= 0; 0: it stops.
+  /// jamb) heads for the free cell closest to the goal within this distance (m), >= 0; 0: it
+  /// stops. Keep it below the padding's width: no free cell beyond a wall is that near.
   double escape_radius_m = 0.4;
 };
 
