@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -46,6 +47,9 @@ std::unique_ptr<Models> Models::Load(const std::string& world_file, const Settin
 
   MapModelParameters mp;
   mp.resolution_m = settings.resolution_m;
+  mp.state_clearance_m =
+      settings.state_clearance_m >= 0 ? settings.state_clearance_m : m->robot.radius_m;
+  m->settings.state_clearance_m = mp.state_clearance_m;
   m->map = MapModel::FromWorld(m->world, mp);
   // The node's construction from the ring (markov_localization_node.cpp BuildModels): beam
   // axes and mean offset from the mounts, max range from the ring.
@@ -322,6 +326,8 @@ double MinRange(const Models& m, const std::vector<double>& ranges, double from,
   return best;
 }
 
+bool verbose_trace = false;
+
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
@@ -331,17 +337,39 @@ double Front(Episode& e) { return MinRange(e.models(), e.ranges(), -31 * kDeg, 3
 
 }  // namespace
 
+bool Escape::Step(Episode& e, Twist2* cmd) {
+  if (phase_ == 0 && e.stalled()) {
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < e.ranges().size(); ++i)
+      if (e.ranges()[i] < e.ranges()[nearest]) nearest = i;
+    target_yaw_ = e.odom().yaw + e.models().ring->mounts[nearest].yaw + M_PI;
+    phase_ = 1;
+  }
+  if (phase_ == 1) {
+    const double err = spott_map::NormalizeAngle(target_yaw_ - e.odom().yaw);
+    if (std::abs(err) > 0.25) {
+      *cmd = {0.0, std::copysign(1.0, err)};
+      return true;
+    }
+    phase_ = 2;
+    until_ = e.time() + 0.8;
+  }
+  if (phase_ == 2) {
+    if (e.time() < until_ && !e.stalled()) {
+      *cmd = {0.2, 0.0};
+      return true;
+    }
+    phase_ = 0;
+  }
+  return false;
+}
+
 Twist2 RandomWander::Command(Episode& e) {
   const double dt = e.tick_seconds();
   const double v = e.models().settings.speed_mps;
-  if (e.stalled() && backoff_s_ <= 0.0) {
-    backoff_s_ = 1.0;
-    turn_left_ = 0.0;
-  }
-  if (backoff_s_ > 0.0) {
-    backoff_s_ -= dt;
-    return {-0.15, 0.0};
-  }
+  Twist2 esc;
+  if (e.stalled()) turn_left_ = 0.0;
+  if (escape_.Step(e, &esc)) return esc;
   if (turn_left_ != 0.0) {
     const double w = std::copysign(1.0, turn_left_);
     turn_left_ -= w * dt;
@@ -363,11 +391,9 @@ Twist2 WallFollow::Command(Episode& e) {
   const double dt = e.tick_seconds();
   const double v = 0.8 * e.models().settings.speed_mps;
   const double side = right_ ? -1.0 : 1.0;  // + = left
-  if (e.stalled() && backoff_s_ <= 0.0) backoff_s_ = 1.0;
-  if (backoff_s_ > 0.0) {
-    backoff_s_ -= dt;
-    return {-0.15, -side * 0.6};
-  }
+  (void)dt;
+  Twist2 esc;
+  if (escape_.Step(e, &esc)) return esc;
   const double front = Front(e);
   if (front < 0.7) return {0.0, -side * 0.8};  // turn away from the wall side
   const double wall = right_ ? MinRange(e.models(), e.ranges(), -106 * kDeg, -44 * kDeg)
@@ -384,25 +410,19 @@ void GoTo::Set(std::vector<Vec2> odom_waypoints, double now, double timeout_s) {
   deadline_ = now + timeout_s;
   done_ = wp_.empty();
   timed_out_ = false;
-  backoff_s_ = 0.0;
+  escape_ = Escape();
   stalls_ = 0;
 }
 
 Twist2 GoTo::Command(Episode& e) {
   if (done_) return {};
-  const double dt = e.tick_seconds();
-  if (e.time() > deadline_ || stalls_ > 5) {
+  if (e.time() > deadline_ || stalls_ > 8) {
     done_ = timed_out_ = true;
     return {};
   }
-  if (e.stalled() && backoff_s_ <= 0.0) {
-    backoff_s_ = 0.8;
-    ++stalls_;
-  }
-  if (backoff_s_ > 0.0) {
-    backoff_s_ -= dt;
-    return {-0.15, 0.0};
-  }
+  if (e.stalled()) ++stalls_;
+  Twist2 esc;
+  if (escape_.Step(e, &esc)) return esc;
   const Pose2& o = e.odom();
   while (next_ + 1 < wp_.size() && (wp_[next_] - o.Position()).norm() < 0.4) ++next_;
   const Vec2 d = wp_[next_] - o.Position();
@@ -415,22 +435,41 @@ Twist2 GoTo::Command(Episode& e) {
   double v = std::min(e.models().settings.speed_mps, 0.3 + d.norm());
   double w = std::clamp(1.5 * err, -1.0, 1.0);
   // Obstacle avoidance: slow down near something ahead, and steer away from the nearer side.
-  const double front = Front(e);
-  if (front < 0.3) {
+  const double front = MinRange(e.models(), e.ranges(), -16 * kDeg, 16 * kDeg);
+  if (verbose_trace) {
+    std::fprintf(stderr, "      go-to t %.1f truth (%.2f, %.2f, %.0f) wp %zu/%zu front %.2f err %.2f\n",
+                 e.time(), e.truth().x, e.truth().y, e.truth().yaw * 180 / M_PI, next_, wp_.size(),
+                 front, err);
+  }
+  if (front < 0.25) {
     v = 0.0;
     const double left = MinRange(e.models(), e.ranges(), 30 * kDeg, 100 * kDeg);
     const double right = MinRange(e.models(), e.ranges(), -100 * kDeg, -30 * kDeg);
     w = left >= right ? 0.6 : -0.6;
   } else if (front < 0.8) {
-    v *= (front - 0.3) / 0.5;
+    v *= (front - 0.25) / 0.55;
     v = std::max(v, 0.1);
+  }
+  if (v > 0.0) {  // keep off the walls beside the robot
+    const double left = MinRange(e.models(), e.ranges(), 40 * kDeg, 95 * kDeg);
+    const double right = MinRange(e.models(), e.ranges(), -95 * kDeg, -40 * kDeg);
+    if (left < 0.25 && left < right) w -= 2.0 * (0.25 - left) + 0.2;
+    if (right < 0.25 && right < left) w += 2.0 * (0.25 - right) + 0.2;
+    w = std::clamp(w, -1.0, 1.0);
   }
   return {v, w};
 }
 
 Twist2 ActiveDriver::Command(Episode& e) {
   if (e.time() < fallback_until_) return fallback_.Command(e);
-  if (!goto_.done()) return goto_.Command(e);
+  if (!goto_.done()) {
+    const Twist2 cmd = goto_.Command(e);
+    if (verbose && goto_.done())
+      std::fprintf(stderr, "    t %.1f go-to %s at truth (%.2f, %.2f), certainty %.2f\n", e.time(),
+                   goto_.timed_out() ? "gave up" : "arrived", e.truth().x, e.truth().y,
+                   e.status().certainty);
+    if (!goto_.done()) return cmd;
+  }
   // Choose a*: the belief's modes, eqs. (6)-(9).
   const auto t0 = std::chrono::steady_clock::now();
   const auto modes = e.Modes();
@@ -442,6 +481,14 @@ Twist2 ActiveDriver::Command(Episode& e) {
     return fallback_.Command(e);
   }
   targets_true_.push_back(Compose(e.truth(), Vec2(choice.ax, choice.ay)));
+  if (verbose)
+    std::fprintf(stderr,
+                 "    t %.1f choice %d: %zu modes, a* (%.2f ahead, %.2f left) -> %s (%.2f, %.2f) "
+                 "E[H] %.2f v %.2f path %zu\n",
+                 e.time(), choices_, modes.size(), choice.ax, choice.ay,
+                 e.models().RoomAt(targets_true_.back()).c_str(), targets_true_.back().x(),
+                 targets_true_.back().y(), choice.expected_entropy, choice.cost,
+                 choice.path.size());
   std::vector<Vec2> wp;
   for (const Vec2& p : choice.path) wp.push_back(Compose(e.odom(), p));
   goto_.Set(std::move(wp), e.time(), 60.0);

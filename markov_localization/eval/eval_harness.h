@@ -59,7 +59,10 @@ struct Settings {
   /// When set, the mixture weights and sigma_hit of the sensor model are fitted to readings of
   /// the simulator (see CalibrateSensorModel) before the runs; otherwise the core's defaults.
   bool calibrate = false;
-  bool selective_update = true;  ///< false: the full eq. (2) on every state (diagnostic).
+  bool selective_update = true;
+  /// MapModelParameters::state_clearance_m; < 0: the robot's radius (the B21's 0.2625 m), so
+  /// that the active localizer's paths keep the body off the walls.
+  double state_clearance_m = -1.0;  ///< false: the full eq. (2) on every state (diagnostic).
   int calibration_poses = 2000;
   std::uint64_t calibration_seed = 1000003;
 };
@@ -154,6 +157,19 @@ class Episode {
 /// Smallest reading of the beams whose mount heading is within [from, to] (rad, robot frame).
 double MinRange(const Models& m, const std::vector<double>& ranges, double from, double to);
 
+/// Stall recovery shared by the behaviours: after a stall the robot turns on the spot until it
+/// faces away from the nearest sonar reading, then drives 0.16 m that way.
+class Escape {
+ public:
+  /// True while escaping; `cmd` is then the command to send.
+  bool Step(Episode& e, Twist2* cmd);
+
+ private:
+  int phase_ = 0;  ///< 0 idle, 1 turning, 2 driving away
+  double target_yaw_ = 0.0;
+  double until_ = 0.0;
+};
+
 /// A behaviour: the command for the next sonar period from what the robot senses.
 class Behaviour {
  public:
@@ -162,14 +178,14 @@ class Behaviour {
 };
 
 /// Random wandering: straight ahead until the front sonars see an obstacle, then a turn on the
-/// spot by a random angle (60-180 degrees) to the freer side; backs off after a stall.
+/// spot by a random angle (60-180 degrees) to the freer side; Escape after a stall.
 class RandomWander : public Behaviour {
  public:
   Twist2 Command(Episode& e) override;
 
  private:
   double turn_left_ = 0.0;  ///< Rotation (rad) still to make; sign = direction.
-  double backoff_s_ = 0.0;
+  Escape escape_;
 };
 
 /// Wall following: keeps a wall on one side at 0.6 m by the side sonars, turns away from
@@ -181,13 +197,14 @@ class WallFollow : public Behaviour {
 
  private:
   bool right_;
-  double backoff_s_ = 0.0;
+  Escape escape_;
 };
 
 /// A plain obstacle-avoiding go-to (not a planner: the integrator's stand-in for the suite's
 /// Navigate action): follows waypoints given in the odom frame, turning on the spot towards the
-/// next, slowing and turning away when the front sonars see something close; backs off after a
-/// stall. Done when the last waypoint is within 0.25 m (odometry), or after `timeout_s`.
+/// next, slowing and turning away when the front sonars see something close, steering away from
+/// a side closer than 0.25 m; Escape after a stall. Done when the last waypoint is within 0.25 m
+/// (odometry), or after `timeout_s` or 8 stalls (then timed_out()).
 class GoTo : public Behaviour {
  public:
   void Set(std::vector<Vec2> odom_waypoints, double now, double timeout_s);
@@ -201,7 +218,7 @@ class GoTo : public Behaviour {
   double deadline_ = 0.0;
   bool done_ = true;
   bool timed_out_ = false;
-  double backoff_s_ = 0.0;
+  Escape escape_;
   int stalls_ = 0;
 };
 
@@ -214,6 +231,7 @@ class ActiveDriver : public Behaviour {
   int choices() const { return choices_; }
   const std::vector<Vec2>& targets_true() const { return targets_true_; }
   double choose_ms_total() const { return choose_ms_; }
+  bool verbose = false;  ///< Log each choice and how the go-to ended (stderr).
 
  private:
   GoTo goto_;
@@ -231,6 +249,9 @@ Vec2 Compose(const Pose2& pose, const Vec2& rel);
 Vec2 MapToOdom(const Pose2& estimate, const Pose2& odom, const Vec2& p);
 
 double Elapsed(std::chrono::steady_clock::time_point since);
+
+/// Logs every go-to step (stderr; debugging only).
+extern bool verbose_trace;
 
 }  // namespace eval
 }  // namespace markov_localization

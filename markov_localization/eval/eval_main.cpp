@@ -50,6 +50,7 @@ struct Options {
   bool verbose = false;
   bool calibrate = false;
   bool full_update = false;
+  double clearance_m = -1;
 };
 
 std::string LoadAverage() {
@@ -64,7 +65,7 @@ int Usage(const char* argv0) {
             << " tracking|global|fig2|symmetric|kidnap [--runs N] [--seed S] [--resolution M]"
                " [--heading-bins K] [--sigma-hit M] [--time-limit S]"
                " [--behaviours wander,wall,active] [--kidnap-deg D] [--kidnap-shift M]"
-               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--verbose]\n";
+               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--verbose]\n";
   return 2;
 }
 
@@ -114,11 +115,11 @@ Pose2 RandomHallwayPose(const ev::Models& m, ev::Rng& rng) {
 void PrintHeader(const Options& o, const ev::Models& m, const std::string& world_file) {
   std::printf("# markov_localization_eval %s: world %s, B21 sonars only (%zu beams, max %.1f m)\n",
               o.scenario.c_str(), world_file.c_str(), m.ring->mounts.size(), m.ring->max_range);
-  std::printf("# grid %.2f m x %.1f deg (%zu states), sigma_hit %.2f m, %s, "
+  std::printf("# grid %.2f m x %.1f deg (%zu states; state clearance %.3f m), sigma_hit %.2f m, %s, "
               "speed %.2f m/s, 1 update per ring at %.0f Hz; models built in %.1f s\n",
               m.settings.resolution_m, 360.0 / m.settings.heading_bins,
               m.map.NumStateCells() * static_cast<std::size_t>(m.settings.heading_bins),
-              m.sensor_params.sigma_hit_m,
+              m.settings.state_clearance_m, m.sensor_params.sigma_hit_m,
               m.settings.selective_update ? "selective update eq. (4)" : "full update eq. (2)",
               m.settings.speed_mps, m.settings.sonar_hz, m.build_seconds);
   if (!m.calibration_report.empty()) std::printf("# %s\n", m.calibration_report.c_str());
@@ -230,6 +231,7 @@ GlobalResult GlobalRun(const Options& o, const ev::Models& m, const Pose2& start
   ev::RandomWander wander;
   ev::WallFollow wall(seed % 2 == 0);
   ev::ActiveDriver active;
+  active.verbose = o.verbose;
   Record rec;
   double random_motion_m = 10.0;  // active: about ten metres of random motion first (paper)
   while (e.time() < o.time_limit_s) {
@@ -333,10 +335,6 @@ int Fig2(const Options& o, const ev::Models& m) {
       if (e.distance() < 10.0) {
         cmd = wander.Command(e);
       } else if (!heading_to_a) {
-        if (modes_10m < 0) {
-          modes_10m = static_cast<int>(e.Modes().size());
-          cert_10m = e.status().certainty;
-        }
         cmd = active.Command(e);
       } else {
         cmd = to_a.Command(e);
@@ -347,6 +345,10 @@ int Fig2(const Options& o, const ev::Models& m) {
       }
       e.Tick(cmd);
       rec.Add(e);
+      if (modes_10m < 0 && e.distance() >= 10.0) {  // the paper's position 2: Fig. 3's belief
+        modes_10m = static_cast<int>(e.Modes().size());
+        cert_10m = e.status().certainty;
+      }
       // The robot decides by its certainty alone; the harness scores against the truth.
       if (!heading_to_a && e.distance() >= 10.0 && e.status().certainty > m.settings.certain) {
         heading_to_a = true;
@@ -496,8 +498,10 @@ int main(int argc, char** argv) {
       else if (a == "--settle") o.settle_s = std::stod(next());
       else if (a == "--world") o.world = next();
       else if (a == "--verbose") o.verbose = true;
+      else if (a == "--trace") o.verbose = ev::verbose_trace = true;
       else if (a == "--calibrate") o.calibrate = true;
       else if (a == "--full-update") o.full_update = true;
+      else if (a == "--clearance") o.clearance_m = std::stod(next());
       else if (a == "--behaviours") {
         o.behaviours.clear();
         std::stringstream ss(next());
@@ -541,6 +545,7 @@ int main(int argc, char** argv) {
   s.robot_dir = ROBOT_SIM_DIR;
   s.calibrate = o.calibrate;
   s.selective_update = !o.full_update;
+  s.state_clearance_m = o.clearance_m;
   const auto start = std::chrono::steady_clock::now();
   try {
     const auto models = ev::Models::Load(o.world, s);
