@@ -273,11 +273,15 @@ const Status& Episode::Tick(const Twist2& cmd) {
   if (!sim_->SetCommand(robot_, cmd, &error)) throw std::runtime_error("command: " + error);
   const int steps = std::max(1, static_cast<int>(std::lround(s.physics_hz / s.sonar_hz)));
   stalled_ = false;
+  bumper_.clear();
   for (int i = 0; i < steps; ++i) {
     const Pose2 before = truth();
     sim_->Step(1.0 / s.physics_hz, rng_);
     distance_ += (truth().Position() - before.Position()).norm();
     stalled_ = stalled_ || sim_->Stalled(robot_);
+    const std::vector<bool> pressed = sim_->Bumper(robot_);
+    bumper_.resize(pressed.size(), false);
+    for (std::size_t k = 0; k < pressed.size(); ++k) bumper_[k] = bumper_[k] || pressed[k];
   }
   ranges_ = sim_->SenseRing(robot_, *models_.ring, rng_);
   const auto t0 = std::chrono::steady_clock::now();
@@ -339,10 +343,24 @@ double Front(Episode& e) { return MinRange(e.models(), e.ranges(), -31 * kDeg, 3
 
 bool Escape::Step(Episode& e, Twist2* cmd) {
   if (phase_ == 0 && e.stalled()) {
-    std::size_t nearest = 0;
-    for (std::size_t i = 1; i < e.ranges().size(); ++i)
-      if (e.ranges()[i] < e.ranges()[nearest]) nearest = i;
-    target_yaw_ = e.odom().yaw + e.models().ring->mounts[nearest].yaw + M_PI;
+    // Direction of the contact in the robot frame: mean of the pressed bumper segments.
+    double cx = 0.0, cy = 0.0;
+    const auto& bumper = e.bumper();
+    for (std::size_t k = 0; k < bumper.size(); ++k)
+      if (bumper[k]) {
+        const double a = 2.0 * M_PI * k / bumper.size();
+        cx += std::cos(a), cy += std::sin(a);
+      }
+    double contact = 0.0;
+    if (std::hypot(cx, cy) > 1e-6) {
+      contact = std::atan2(cy, cx);
+    } else {
+      std::size_t nearest = 0;
+      for (std::size_t i = 1; i < e.ranges().size(); ++i)
+        if (e.ranges()[i] < e.ranges()[nearest]) nearest = i;
+      contact = e.models().ring->mounts[nearest].yaw;
+    }
+    target_yaw_ = e.odom().yaw + contact + M_PI;
     phase_ = 1;
   }
   if (phase_ == 1) {

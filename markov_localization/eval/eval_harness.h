@@ -128,6 +128,8 @@ class Episode {
   const Pose2& odom() const { return sim_->odometry(robot_).pose(); }
   const Pose2& truth() const { return sim_->GroundTruth(robot_); }
   bool stalled() const { return stalled_; }
+  /// Bumper segments pressed during the last sonar period (segment 0 ahead, counter-clockwise).
+  const std::vector<bool>& bumper() const { return bumper_; }
   double distance() const { return distance_; }
   double time() const { return status_.time; }
   double tick_seconds() const { return 1.0 / models_.settings.sonar_hz; }
@@ -151,6 +153,7 @@ class Episode {
   std::vector<double> ranges_;
   Status status_;
   bool stalled_ = false;
+  std::vector<bool> bumper_;
   double distance_ = 0.0;
 };
 
@@ -158,7 +161,8 @@ class Episode {
 double MinRange(const Models& m, const std::vector<double>& ranges, double from, double to);
 
 /// Stall recovery shared by the behaviours: after a stall the robot turns on the spot until it
-/// faces away from the nearest sonar reading, then drives 0.16 m that way.
+/// faces away from the contact (the pressed bumper segments; the nearest sonar reading when none
+/// is pressed), then drives 0.16 m that way.
 class Escape {
  public:
   /// True while escaping; `cmd` is then the command to send.

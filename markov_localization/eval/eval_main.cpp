@@ -51,6 +51,7 @@ struct Options {
   bool calibrate = false;
   bool full_update = false;
   double clearance_m = -1;
+  bool on_lost_uniform = true;
 };
 
 std::string LoadAverage() {
@@ -65,7 +66,7 @@ int Usage(const char* argv0) {
             << " tracking|global|fig2|symmetric|kidnap [--runs N] [--seed S] [--resolution M]"
                " [--heading-bins K] [--sigma-hit M] [--time-limit S]"
                " [--behaviours wander,wall,active] [--kidnap-deg D] [--kidnap-shift M]"
-               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--verbose]\n";
+               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--on-lost uniform|keep] [--verbose]\n";
   return 2;
 }
 
@@ -324,6 +325,7 @@ int Fig2(const Options& o, const ev::Models& m) {
     ev::Episode e(m, p1->pose, seed, /*known_start=*/false);
     ev::RandomWander wander;
     ev::ActiveDriver active;
+    active.verbose = o.verbose;
     ev::GoTo to_a;
     Record rec;
     int modes_10m = -1;
@@ -411,19 +413,22 @@ int Symmetric(const Options& o, const ev::Models& m) {
 int Kidnap(const Options& o, const ev::Models& m) {
   const bool detector = ev::HasLostDetector<ml::MarkovGrid>::value;
   std::printf("# kidnap: %.0f deg clockwise rotation in place%s after %.0f s of tracking "
-              "(random wandering from a known start in the corridor); lost = %s; after lost the "
-              "robot localizes actively; %0.f s allowed after the kidnap\n",
+              "(random wandering from a known start in the corridor); lost = %s; once lost: %s; "
+              "%0.f s allowed after the kidnap\n",
               o.kidnap_deg,
               o.kidnap_shift_m != 0 ? (" and " + Fmt(o.kidnap_shift_m, "%.2f") + " m ahead").c_str()
                                     : "",
               o.settle_s,
               detector ? "MarkovGrid::lost() (markov_kidnap's detector)"
                        : "certainty < 0.8 (the lost detector is not merged)",
+              o.on_lost_uniform ? "uniform belief, ~10 m random motion, then active localization"
+                                : "active localization on the belief as it is",
               o.time_limit_s);
   std::printf("| run | seed | start (x, y, deg) | tracking before | certainty < 0.8 after (s) "
               "| detector lost after (s) | relocalized after (s) | confidently wrong after "
-              "kidnap (s) | final certainty | final error (m, deg) | wall (s) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "kidnap (s) | certainty < 0.8 before the kidnap (s) | final certainty | final "
+              "error (m, deg) | wall (s) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int recovered = 0;
   for (int run = 0; run < o.runs; ++run) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -433,7 +438,12 @@ int Kidnap(const Options& o, const ev::Models& m) {
     ev::Episode e(m, start, seed, /*known_start=*/true);
     ev::RandomWander wander;
     ev::ActiveDriver active;
-    while (e.time() < o.settle_s) e.Tick(wander.Command(e));
+    active.verbose = o.verbose;
+    double unsure_before = 0;  // time below the threshold while still tracking (false alarms)
+    while (e.time() < o.settle_s) {
+      e.Tick(wander.Command(e));
+      if (e.status().certainty < m.settings.certain) unsure_before += e.tick_seconds();
+    }
     const bool tracking = e.Success();
     std::string error;
     const Pose2 jump{o.kidnap_shift_m, 0.0, -o.kidnap_deg * kDeg};
@@ -444,25 +454,35 @@ int Kidnap(const Options& o, const ev::Models& m) {
     }
     const double tk = e.time();
     double below = -1, lost = -1, reloc = -1, wrong = 0;
+    double relocalize_from_m = -1;  // odometry distance when relocalization started
     while (e.time() < tk + o.time_limit_s) {
-      // Not certain any more (or the detector fired): localize actively.
-      const bool uncertain = lost >= 0 || below >= 0;
-      e.Tick(uncertain ? active.Command(e) : wander.Command(e));
+      // Once lost: the relocalization (uniform belief, about ten metres of random
+      // motion, then active localization), or (--on-lost keep) active localization on the
+      // belief as it is.
+      const bool relocalizing = relocalize_from_m >= 0;
+      const bool random_phase =
+          !relocalizing || (o.on_lost_uniform && e.distance() - relocalize_from_m < 10.0);
+      e.Tick(random_phase ? wander.Command(e) : active.Command(e));
       const auto& s = e.status();
       if (e.ConfidentlyWrong()) wrong += e.tick_seconds();
       if (below < 0 && s.certainty < m.settings.certain) below = e.time() - tk;
       if (lost < 0 && s.lost_detector) lost = e.time() - tk;
+      if (!relocalizing && (detector ? lost >= 0 : below >= 0)) {
+        relocalize_from_m = e.distance();
+        if (o.on_lost_uniform) e.grid().SetUniform();
+        continue;
+      }
       if ((below >= 0 || lost >= 0) && e.Success()) {
         reloc = e.time() - tk;
         break;
       }
     }
     if (reloc >= 0) ++recovered;
-    std::printf("| %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %s | %s | %.1f | %.2f | %.2f, %.0f | "
-                "%.0f |\n",
+    std::printf("| %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %s | %s | %.1f | %.1f | %.2f | "
+                "%.2f, %.0f | %.0f |\n",
                 run + 1, static_cast<unsigned long long>(seed), start.x, start.y,
                 start.yaw / kDeg, tracking ? "yes" : "no", Fmt(below).c_str(),
-                detector ? Fmt(lost).c_str() : "n/a", Fmt(reloc).c_str(), wrong,
+                detector ? Fmt(lost).c_str() : "n/a", Fmt(reloc).c_str(), wrong, unsure_before,
                 e.status().certainty, e.status().pos_error, e.status().yaw_error / kDeg,
                 ev::Elapsed(t0));
     std::fflush(stdout);
@@ -502,6 +522,14 @@ int main(int argc, char** argv) {
       else if (a == "--calibrate") o.calibrate = true;
       else if (a == "--full-update") o.full_update = true;
       else if (a == "--clearance") o.clearance_m = std::stod(next());
+      else if (a == "--on-lost") {
+        const std::string v = next();
+        if (v != "uniform" && v != "keep") {
+          std::cerr << "--on-lost must be uniform or keep\n";
+          return 2;
+        }
+        o.on_lost_uniform = v == "uniform";
+      }
       else if (a == "--behaviours") {
         o.behaviours.clear();
         std::stringstream ss(next());

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Runs every scenario of markov_localization_eval with the settings of the README's figures and
+# writes each table to eval/results/<name>.md. Needs `./spott build markov_localization` first.
+# Each command is seeded (--seed 1 unless given) and takes minutes, not hours; run them one at a
+# time on a shared machine (nice -n 10). Usage: eval/run_figures.sh [NAME...] (default: all).
+set -euo pipefail
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+EVAL="$HERE/../../.ws/devel/lib/markov_localization/markov_localization_eval"
+OUT="$HERE/results"
+mkdir -p "$OUT"
+declare -A CMD=(
+  [global_calibrated_20cm]="global --runs 20 --calibrate --resolution 0.2"
+  [global_default_model_20cm]="global --runs 20 --resolution 0.2"
+  [tracking_15cm]="tracking --runs 3 --calibrate"
+  [fig2_20cm]="fig2 --runs 5 --calibrate --resolution 0.2"
+  [symmetric_20cm]="symmetric --runs 10 --calibrate --resolution 0.2"
+  [symmetric_25cm]="symmetric --runs 10 --calibrate --resolution 0.25"
+  [kidnap_20cm]="kidnap --runs 10 --calibrate --resolution 0.2"
+  [global_active_full_update_25cm]="global --runs 10 --calibrate --resolution 0.25 --full-update --behaviours active"
+  [kidnap_full_update_25cm]="kidnap --runs 10 --calibrate --resolution 0.25 --full-update"
+)
+ORDER=(global_calibrated_20cm global_default_model_20cm tracking_15cm fig2_20cm symmetric_20cm
+       symmetric_25cm kidnap_20cm global_active_full_update_25cm kidnap_full_update_25cm)
+[[ $# -gt 0 ]] && ORDER=("$@")
+for name in "${ORDER[@]}"; do
+  echo "== $name: markov_localization_eval ${CMD[$name]}" >&2
+  { echo "command: markov_localization_eval ${CMD[$name]}  ($(date -u +%FT%TZ))"; echo;
+    # shellcheck disable=SC2086
+    nice -n 10 "$EVAL" ${CMD[$name]}; } > "$OUT/$name.md" 2> "$OUT/$name.log"
+done
