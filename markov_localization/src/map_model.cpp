@@ -180,6 +180,11 @@ bool MapModel::IsStateAt(const Vec2& p) const {
 }
 
 double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m) const {
+  const Hit h = RayCastHit(from, angle_rad, max_range_m);
+  return h.hit ? h.range_m : max_range_m;
+}
+
+MapModel::Hit MapModel::RayCastHit(const Vec2& from, double angle_rad, double max_range_m) const {
   // Amanatides-Woo traversal of the cells the beam crosses.
   const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
   const double fres = resolution_ / subdivision_;
@@ -189,8 +194,9 @@ double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m)
   auto inside = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < fine_width_ && y < fine_height_;
   };
-  if (!inside(ix, iy)) return max_range_m;
-  if (FineOccupied(ix, iy)) return 0.0;
+  Hit miss{max_range_m, false, false};
+  if (!inside(ix, iy)) return miss;
+  if (FineOccupied(ix, iy)) return Hit{0.0, true, std::abs(dx) >= std::abs(dy)};
   const double inf = std::numeric_limits<double>::infinity();
   const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
   const double t_delta_x = dx != 0.0 ? std::abs(1.0 / dx) : inf;
@@ -200,17 +206,20 @@ double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m)
   const double max_cells = max_range_m / fres;
   while (true) {
     double t;
+    bool x_face;
     if (t_max_x < t_max_y) {
       t = t_max_x;
       t_max_x += t_delta_x;
       ix += step_x;
+      x_face = true;
     } else {
       t = t_max_y;
       t_max_y += t_delta_y;
       iy += step_y;
+      x_face = false;
     }
-    if (t >= max_cells || !inside(ix, iy)) return max_range_m;
-    if (FineOccupied(ix, iy)) return t * fres;
+    if (t >= max_cells || !inside(ix, iy)) return miss;
+    if (FineOccupied(ix, iy)) return Hit{t * fres, true, x_face};
   }
 }
 

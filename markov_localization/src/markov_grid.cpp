@@ -26,6 +26,11 @@ std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   if (!(m.sigma_xy_per_rad >= 0.0)) errors.push_back("motion.sigma_xy_per_rad must be >= 0");
   if (!(m.sigma_theta_per_m >= 0.0)) errors.push_back("motion.sigma_theta_per_m must be >= 0");
   if (!(m.sigma_theta_per_rad >= 0.0)) errors.push_back("motion.sigma_theta_per_rad must be >= 0");
+  for (const auto& e : ValidateParameters(p.lost)) errors.push_back("lost." + e);
+  const bool threshold_valid = p.threshold_fraction > 0.0 && p.threshold_fraction < 1.0;
+  if (p.lost.enabled && p.selective_update && threshold_valid &&
+      !(p.lost.relocalization_mass > p.threshold_fraction))
+    errors.push_back("lost.relocalization_mass must exceed threshold_fraction");
   return errors;
 }
 
@@ -37,7 +42,7 @@ Motion MotionBetween(const Pose2& from, const Pose2& to) {
 
 MarkovGrid::MarkovGrid(const MapModel& map, const SensorModel& sensor,
                        const MarkovGridParameters& params)
-    : map_(map), sensor_(sensor), params_(params) {
+    : map_(map), sensor_(sensor), params_(params), detector_(params.lost) {
   auto errors = ValidateParameters(params);
   if (errors.empty()) {
     nt_ = static_cast<int>(std::lround(2.0 * M_PI / params.angular_resolution_rad));
@@ -85,11 +90,15 @@ void MarkovGrid::SetUniform() {
   }
   rotation_ = 0;
   rotation_residual_ = 0.0;
+  detector_.Reset();
+  lost_ = false;
 }
 
 void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad) {
   sigma_xy_m = std::max(sigma_xy_m, 0.1 * map_.resolution());
   sigma_theta_rad = std::max(sigma_theta_rad, 0.1 * angular_resolution());
+  detector_.Reset();
+  lost_ = false;
   rotation_ = 0;
   rotation_residual_ = 0.0;
   double total = 0.0;
@@ -311,6 +320,19 @@ void MarkovGrid::Normalize() {
   }
 }
 
+void MarkovGrid::MixUniform(double mass) {
+  mass = std::clamp(mass, 0.0, 1.0);
+  const float keep = static_cast<float>(1.0 - mass);
+  const float add = static_cast<float>(mass / static_cast<double>(NumStates()));
+  const auto& mask = map_.state_mask();
+  for (int j = 0; j < nt_; ++j) {
+    if (!active_[j]) WakeLayer(j);
+    float* data = LayerData(j);
+    for (std::size_t c = 0; c < LayerSize(); ++c) data[c] = mask[c] ? keep * data[c] + add : 0.0f;
+  }
+  Normalize();
+}
+
 void MarkovGrid::MaterializeLayer(int j) {
   // Stored values times alpha_pi are the probabilities; write them out (tiny ones become 0).
   float* data = LayerData(j);
@@ -395,6 +417,7 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
   }
   const double alpha = unlikely_factor / total;
   stats.normalizer = alpha;
+  stats.log_likelihood_per_beam = -std::log(alpha) / nb;
   const float a_likely = static_cast<float>(1.0 / total);
   const float a_unlikely = static_cast<float>(alpha);
   const auto& mask = map_.state_mask();
@@ -431,6 +454,11 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
         moved_x_m_[j] = moved_y_m_[j] = moved_var_m2_[j] = 0.0;
       }
     }
+  }
+  lost_ = detector_.Update(stats.log_likelihood_per_beam);
+  if (lost_) {
+    MixUniform(params_.lost.relocalization_mass);
+    stats.lost_detected = true;
   }
   return stats;
 }

@@ -16,6 +16,10 @@ std::vector<std::string> ValidateParameters(const SensorModelParameters& p) {
     errors.push_back("sensor_offset_m must be in [0, 2) m");
   if (!(p.max_range_m > 0.0 && p.max_range_m <= 100.0))
     errors.push_back("max_range_m must be in (0, 100] m");
+  if (!(p.beam_width_rad >= 0.0 && p.beam_width_rad < M_PI))
+    errors.push_back("beam_width_rad must be in [0, pi) rad");
+  if (!(p.critical_angle_rad > 0.0 && p.critical_angle_rad <= M_PI / 2 + 1e-12))
+    errors.push_back("critical_angle_rad must be in (0, pi/2] rad");
   if (!(p.range_bin_m > 0.0))
     errors.push_back("range_bin_m must be > 0 m");
   else if (p.max_range_m / p.range_bin_m > 254.0)
@@ -40,6 +44,33 @@ std::vector<double> SonarRingAngles(int count) {
   return angles;
 }
 
+namespace {
+
+// The echo of one ray: the first surface if it is met within the critical angle; otherwise the
+// pulse reflects and the echo is the whole path to a second surface that scatters (a corner), or
+// none (max range).
+double EchoRange(const MapModel& map, const Vec2& from, double angle, double max_range,
+                 double critical_angle) {
+  const MapModel::Hit first = map.RayCastHit(from, angle, max_range);
+  if (!first.hit) return max_range;
+  const double cos_critical = std::cos(critical_angle) - 1e-9;
+  const double dx = std::cos(angle), dy = std::sin(angle);
+  if ((first.x_face ? std::abs(dx) : std::abs(dy)) >= cos_critical) return first.range_m;
+  const double left = max_range - first.range_m;
+  if (left <= 0.0) return max_range;
+  // Reflect off the face, starting just before it (still in free space).
+  const double back = std::max(0.0, first.range_m - 1e-6);
+  const Vec2 at = from + back * Vec2(dx, dy);
+  const double reflected = first.x_face ? std::atan2(dy, -dx) : std::atan2(-dy, dx);
+  const MapModel::Hit second = map.RayCastHit(at, reflected, left);
+  if (!second.hit) return max_range;
+  const double rx = std::cos(reflected), ry = std::sin(reflected);
+  if ((second.x_face ? std::abs(rx) : std::abs(ry)) < cos_critical) return max_range;
+  return std::min(max_range, first.range_m + second.range_m);
+}
+
+}  // namespace
+
 SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorModelParameters& params)
     : params_(params), num_headings_(num_headings) {
   auto errors = ValidateParameters(params);
@@ -62,7 +93,6 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   // Expected ranges by ray casting from each state cell's centre, for each heading bin.
   num_cells_ = map.NumCells();
   expected_.assign(num_cells_ * num_headings, static_cast<std::uint8_t>(max_bin));
-  std::vector<double> histogram(num_bins_, 0.0);
   for (int d = 0; d < num_headings; ++d) {
     const double angle = d * heading_res;
     const Vec2 offset(params.sensor_offset_m * std::cos(angle),
@@ -71,13 +101,33 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
     for (int iy = 0; iy < map.height(); ++iy) {
       for (int ix = 0; ix < map.width(); ++ix) {
         if (!map.IsState(ix, iy)) continue;
-        const double range =
-            map.RayCast(map.CellCentre(ix, iy) + offset, angle, params.max_range_m);
+        const double range = EchoRange(map, map.CellCentre(ix, iy) + offset, angle,
+                                       params.max_range_m, params.critical_angle_rad);
         const int bin = RangeBin(range);
         row[map.Index(ix, iy)] = static_cast<std::uint8_t>(bin);
-        histogram[bin] += 1.0;
       }
     }
+  }
+  // A beam with an opening angle reads the nearest echo in its cone: the shortest of the rays
+  // of the heading bins within +-beam_width / 2.
+  const int half_cone =
+      static_cast<int>(std::floor(0.5 * params.beam_width_rad / heading_res + 1e-9));
+  if (half_cone > 0) {
+    const std::vector<std::uint8_t> rays = expected_;
+    for (int d = 0; d < num_headings; ++d) {
+      std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+      for (int k = -half_cone; k <= half_cone; ++k) {
+        const int dk = ((d + k) % num_headings + num_headings) % num_headings;
+        const std::uint8_t* ray = rays.data() + static_cast<std::size_t>(dk) * num_cells_;
+        for (std::size_t c = 0; c < num_cells_; ++c) row[c] = std::min(row[c], ray[c]);
+      }
+    }
+  }
+  std::vector<double> histogram(num_bins_, 0.0);
+  for (int d = 0; d < num_headings; ++d) {
+    const std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+    for (std::size_t c = 0; c < num_cells_; ++c)
+      if (map.state_mask()[c]) histogram[row[c]] += 1.0;
   }
 
   // P(z | e): the mixture, integrated over each bin and normalized over the bins.

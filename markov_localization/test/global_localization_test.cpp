@@ -114,7 +114,9 @@ TEST(SelectiveUpdate, SameAnswerAsFullUpdateWhileTouchingFewerStates) {
 
 TEST(SelectiveUpdate, KidnapWakesTheDeactivatedParts) {
   Bonn bonn;
-  MarkovGrid grid(bonn.map, *bonn.sensor, bonn.GridParams(true));
+  MarkovGridParameters params = bonn.GridParams(true);
+  params.lost.enabled = false;  // the paper's rule alone: alpha_pi > 1
+  MarkovGrid grid(bonn.map, *bonn.sensor, params);
   std::mt19937 rng(11);
   // Confidently (and wrongly) believing to be in room A, while really in room B facing its
   // cupboard.
@@ -131,6 +133,30 @@ TEST(SelectiveUpdate, KidnapWakesTheDeactivatedParts) {
   const auto c = PosCertainty(BeliefSnapshot::Of(grid), CertaintyParameters{});
   EXPECT_LT((c.estimate.Position() - truth.Position()).norm(), 0.5)
       << c.estimate.x << " " << c.estimate.y;
+}
+
+TEST(LostDetector, AKidnapIsDetectedAndTheRobotRelocalized) {
+  Bonn bonn;
+  MarkovGrid grid(bonn.map, *bonn.sensor, bonn.GridParams(true));
+  std::mt19937 rng(5);
+  const Pose2 before{17.5, 5.0, -M_PI / 2}, after{13.5, 14.0, M_PI / 2};
+  grid.SetGaussian(before, 0.2, 0.05);
+  for (int i = 0; i < 30; ++i) {
+    const auto stats =
+        grid.SensorUpdate(testing::SimulateScan(bonn.map, bonn.sp, before, 0.05, rng));
+    ASSERT_FALSE(stats.lost_detected) << "false alarm at scan " << i;
+  }
+  int detected_at = -1, relocalized_at = -1;
+  for (int i = 0; i < 20 && relocalized_at < 0; ++i) {
+    const auto stats =
+        grid.SensorUpdate(testing::SimulateScan(bonn.map, bonn.sp, after, 0.05, rng));
+    if (stats.lost_detected && detected_at < 0) detected_at = i;
+    const auto c = PosCertainty(BeliefSnapshot::Of(grid), CertaintyParameters{});
+    if (c.certainty > 0.8 && (c.estimate.Position() - after.Position()).norm() < 0.5)
+      relocalized_at = i;
+  }
+  EXPECT_EQ(detected_at, 0) << "the first scan after the kidnap must say lost";
+  EXPECT_GE(relocalized_at, 0) << "not relocalized within 20 scans";
 }
 
 }  // namespace

@@ -175,6 +175,7 @@ TEST(MarkovGrid, Eq3AndEq4GiveOneBelief) {
   const SensorModel sensor(map, 4, OneBeam());
   auto params = FourHeadings(true);
   params.threshold_fraction = 0.9;  // theta = 0.9 / 20: cells below it take the average
+  params.lost.enabled = false;      // eq. (4) alone
   MarkovGrid grid(map, sensor, params);
   grid.SetGaussian(Pose2{2.5, 1.5, 0.0}, 1.0, 1.0);
   std::vector<double> prior(20);

@@ -70,6 +70,15 @@ class MapModel {
   /// `max_range_m` when none is nearer (cells outside the grid end the beam at max range).
   double RayCast(const Vec2& from, double angle_rad, double max_range_m) const;
 
+  /// A beam's first obstacle: distance (m) and the face of the raster cell it entered (the
+  /// surface normal is along x for an x face, along y otherwise); hit false at max range.
+  struct Hit {
+    double range_m = 0.0;
+    bool hit = false;
+    bool x_face = false;
+  };
+  Hit RayCastHit(const Vec2& from, double angle_rad, double max_range_m) const;
+
  private:
   void ComputeStates(double clearance_m, const std::vector<std::uint8_t>& unknown);
   bool FineOccupied(int fx, int fy) const {

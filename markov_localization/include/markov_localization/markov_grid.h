@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "markov_localization/lost_detector.h"
 #include "markov_localization/map_model.h"
 #include "markov_localization/sensor_model.h"
 #include "spott_map/world.h"
@@ -38,6 +39,8 @@ struct MarkovGridParameters {
   /// kidnap. The floor holds at most floor_fraction of the mass.
   double floor_fraction = 1e-8;
   MotionModelParameters motion;
+  /// Kidnap detection and recovery (see lost_detector.h): not in the paper, needed on sonar.
+  LostDetectorParameters lost;
 };
 
 std::vector<std::string> ValidateParameters(const MarkovGridParameters& params);
@@ -58,6 +61,11 @@ struct SensorUpdateStats {
   int active_parts = 0;              ///< Orientation parts updated.
   int parts_woken = 0;               ///< Parts whose alpha_pi exceeded 1 in this update.
   double normalizer = 1.0;           ///< alpha of eq. (4).
+  /// log(P(s | belief) / P~(s)) / beams = -log(alpha) / beams (nats): how well the belief
+  /// predicted the scan, per beam.
+  double log_likelihood_per_beam = 0.0;
+  /// The scan said the robot is lost: relocalization_mass of uniform probability was mixed in.
+  bool lost_detected = false;
 };
 
 class MarkovGrid {
@@ -80,6 +88,12 @@ class MarkovGrid {
   void SetUniform();
   /// A Gaussian around `pose` (tracking start, /initialpose).
   void SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad);
+  /// P <- (1 - mass) P + mass / |L| over every state, all parts active (their stored movement
+  /// applied). With mass / |L| above theta the next sensor update evaluates every state.
+  void MixUniform(double mass);
+  /// Whether the last sensor update detected that the robot is lost.
+  bool lost() const { return lost_; }
+  const LostDetector& lost_detector() const { return detector_; }
 
   /// Eq. (1) with the odometry noise model: each orientation part is shifted by the motion as
   /// seen from its heading (split bilinearly between cells), blurred by the motion's noise and
@@ -135,6 +149,8 @@ class MarkovGrid {
   std::vector<double> moved_x_m_;   // a_pi: accumulated world displacement (m) ...
   std::vector<double> moved_y_m_;
   std::vector<double> moved_var_m2_;  // ... and accumulated position noise variance (m^2).
+  LostDetector detector_;
+  bool lost_ = false;
 };
 
 }  // namespace markov_localization

@@ -18,8 +18,17 @@ struct SensorModelParameters {
   /// Beam directions relative to the robot's heading (rad, counter-clockwise); e.g. a 24-sonar
   /// ring every 15 degrees. Each is rounded to the nearest heading bin of the belief.
   std::vector<double> beam_angles_rad;
-  double sensor_offset_m = 0.0;     ///< Distance of the sensors from the robot's centre (m), >= 0.
-  double max_range_m = 5.0;         ///< Readings at or beyond this are "no echo" (m), > 0.
+  double sensor_offset_m = 0.0;  ///< Distance of the sensors from the robot's centre (m), >= 0.
+  double max_range_m = 5.0;      ///< Readings at or beyond this are "no echo" (m), > 0.
+  /// Full opening angle of each beam (rad), in [0, pi). A sonar answers with the first echo in
+  /// its cone, so the expected range is the shortest ray cast within +-beam_width / 2 (on the
+  /// heading grid); 0 casts a single ray (lasers).
+  double beam_width_rad = 0.0;
+  /// Sonar specular reflection: a surface met at an incidence beyond this angle (rad, from its
+  /// normal) reflects the pulse away; the echo is then lost or comes back from a second surface
+  /// as a long multipath reading (whole path), as in a corner. pi / 2: every surface scatters
+  /// (lasers, infrared). In (0, pi / 2].
+  double critical_angle_rad = M_PI / 2;
   double range_bin_m = 0.1;         ///< Width of a range bin of the tables (m), > 0; <= 254 bins.
   double sigma_hit_m = 0.15;        ///< Std. dev. of a reading around the expected range (m), > 0.
   double lambda_short_per_m = 0.3;  ///< Rate of the unexpected-obstacle term (1/m), > 0.

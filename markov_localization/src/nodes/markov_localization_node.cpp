@@ -61,9 +61,27 @@ std::vector<std::string> Read(ros::NodeHandle& pnh, NodeParameters& p) {
             p.grid.motion.sigma_theta_per_rad);
   pnh.param("sensor/sigma_hit_m", p.sensor.sigma_hit_m, p.sensor.sigma_hit_m);
   pnh.param("sensor/range_bin_m", p.sensor.range_bin_m, p.sensor.range_bin_m);
+  // Sonar physics: the cone comes from the ring message unless set; specular reflection.
+  p.sensor.critical_angle_rad = 0.35;
+  pnh.param("sensor/critical_angle_rad", p.sensor.critical_angle_rad,
+            p.sensor.critical_angle_rad);
+  p.sensor.beam_width_rad = -1.0;
+  pnh.param("sensor/beam_width_rad", p.sensor.beam_width_rad, p.sensor.beam_width_rad);
   pnh.param("certainty/threshold", p.certainty.threshold, p.certainty.threshold);
+  auto& lost = p.grid.lost;
+  pnh.param("lost/enabled", lost.enabled, lost.enabled);
+  pnh.param("lost/fast_rate", lost.fast_rate, lost.fast_rate);
+  pnh.param("lost/slow_rate", lost.slow_rate, lost.slow_rate);
+  pnh.param("lost/lost_ratio", lost.lost_ratio, lost.lost_ratio);
+  pnh.param("lost/hold_scans", lost.hold_scans, lost.hold_scans);
+  pnh.param("lost/relocalization_mass", lost.relocalization_mass, lost.relocalization_mass);
   for (const auto& e : ml::ValidateParameters(p.map)) errors.push_back("map/" + e);
-  for (const auto& e : ml::ValidateParameters(p.grid)) errors.push_back("grid/" + e);
+  for (auto e : ml::ValidateParameters(p.grid)) {
+    // The core names nested parameters "motion.x" / "lost.x"; the node's are "motion/x".
+    const bool nested = e.rfind("motion.", 0) == 0 || e.rfind("lost.", 0) == 0;
+    if (nested) e[e.find('.')] = '/';
+    errors.push_back(nested ? e : "grid/" + e);
+  }
   for (const auto& e : ml::ValidateParameters(p.certainty)) errors.push_back("certainty/" + e);
   return errors;
 }
@@ -117,6 +135,9 @@ class LocalizationNode {
     }
     params_.sensor.sensor_offset_m = ring.mounts.empty() ? 0.0 : offset / ring.mounts.size();
     params_.sensor.max_range_m = ring.max_range;
+    if (params_.sensor.beam_width_rad < 0) params_.sensor.beam_width_rad = ring.field_of_view;
+    if (ring.radiation_type == spott_msgs::RangeRing::INFRARED)
+      params_.sensor.critical_angle_rad = M_PI / 2;  // infrared scatters off every surface
     const int nt = static_cast<int>(std::lround(2 * M_PI / params_.grid.angular_resolution_rad));
     sensor_ = std::make_unique<ml::SensorModel>(map_, nt, params_.sensor);
     grid_ = std::make_unique<ml::MarkovGrid>(map_, *sensor_, params_.grid);
@@ -151,6 +172,16 @@ class LocalizationNode {
     last_odom_ = odom_;
     std::vector<double> ranges(ring.ranges.begin(), ring.ranges.end());
     const auto stats = grid_->SensorUpdate(ranges);
+    ROS_DEBUG("markov_localization: fit per beam %.3f (fast %.3f, slow %.3f)",
+              std::exp(stats.log_likelihood_per_beam), grid_->lost_detector().fast(),
+              grid_->lost_detector().slow());
+    if (stats.lost_detected) {
+      ROS_WARN(
+          "markov_localization: the scans no longer fit the belief (fit %.2f of the usual): "
+          "lost; relocalizing",
+          grid_->lost_detector().fast() / grid_->lost_detector().slow());
+      global_ = true;
+    }
     const double compute_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Publish(ring.header.stamp, stats, compute_s);
@@ -222,7 +253,7 @@ class LocalizationNode {
     s.entropy = ml::Entropy(b);
     s.max_entropy = std::log(static_cast<double>(grid_->NumStates()));
     s.num_modes = modes.size();
-    s.lost = c.certainty < params_.certainty.threshold;
+    s.lost = c.certainty < params_.certainty.threshold || grid_->lost();
     s.estimate.x = e.x;
     s.estimate.y = e.y;
     s.estimate.theta = e.yaw;
