@@ -60,6 +60,9 @@ std::unique_ptr<Models> Models::Load(const std::string& world_file, const Settin
   }
   m->sensor_params.sensor_offset_m = offset / m->ring->mounts.size();
   m->sensor_params.max_range_m = m->ring->max_range;
+  // Sonar physics as the node sets it up: the cone from the ring, specular beyond 0.35 rad.
+  m->sensor_params.beam_width_rad = m->ring->field_of_view;
+  m->sensor_params.critical_angle_rad = settings.critical_angle_rad;
   m->sensor_params.sigma_hit_m = settings.sigma_hit_m;
   m->sensor = std::make_unique<SensorModel>(m->map, settings.heading_bins, m->sensor_params);
   if (settings.calibrate) {

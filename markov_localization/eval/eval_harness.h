@@ -47,6 +47,9 @@ struct Settings {
   double resolution_m = 0.25;
   int heading_bins = 72;
   double sigma_hit_m = 0.25;
+  /// SensorModelParameters::critical_angle_rad: the node's 0.35 rad for sonar (pi/2: a single
+  /// diffuse ray, the core's default before markov_kidnap's sonar physics).
+  double critical_angle_rad = 0.35;
   double speed_mps = 0.5;      ///< Cruise speed of every behaviour (B21 limit 0.9 m/s).
   double physics_hz = 100.0;   ///< robot_sim's default physics rate.
   double sonar_hz = 10.0;      ///< robot_sim's default sensor rate: one update per ring.

@@ -52,6 +52,7 @@ struct Options {
   bool full_update = false;
   double clearance_m = -1;
   bool on_lost_uniform = true;
+  double critical_angle_rad = 0.35;
 };
 
 std::string LoadAverage() {
@@ -66,7 +67,7 @@ int Usage(const char* argv0) {
             << " tracking|global|fig2|symmetric|kidnap [--runs N] [--seed S] [--resolution M]"
                " [--heading-bins K] [--sigma-hit M] [--time-limit S]"
                " [--behaviours wander,wall,active] [--kidnap-deg D] [--kidnap-shift M]"
-               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--on-lost uniform|keep] [--verbose]\n";
+               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--on-lost uniform|keep] [--critical-angle RAD] [--verbose]\n";
   return 2;
 }
 
@@ -116,6 +117,9 @@ Pose2 RandomHallwayPose(const ev::Models& m, ev::Rng& rng) {
 void PrintHeader(const Options& o, const ev::Models& m, const std::string& world_file) {
   std::printf("# markov_localization_eval %s: world %s, B21 sonars only (%zu beams, max %.1f m)\n",
               o.scenario.c_str(), world_file.c_str(), m.ring->mounts.size(), m.ring->max_range);
+  std::printf("# sonar model: cone %.2f rad, critical angle %.2f rad; lost detector %s\n",
+              m.sensor_params.beam_width_rad, m.sensor_params.critical_angle_rad,
+              m.grid_params.lost.enabled ? "on (core defaults)" : "off");
   std::printf("# grid %.2f m x %.1f deg (%zu states; state clearance %.3f m), sigma_hit %.2f m, %s, "
               "speed %.2f m/s, 1 update per ring at %.0f Hz; models built in %.1f s\n",
               m.settings.resolution_m, 360.0 / m.settings.heading_bins,
@@ -522,6 +526,7 @@ int main(int argc, char** argv) {
       else if (a == "--calibrate") o.calibrate = true;
       else if (a == "--full-update") o.full_update = true;
       else if (a == "--clearance") o.clearance_m = std::stod(next());
+      else if (a == "--critical-angle") o.critical_angle_rad = std::stod(next());
       else if (a == "--on-lost") {
         const std::string v = next();
         if (v != "uniform" && v != "keep") {
@@ -574,6 +579,7 @@ int main(int argc, char** argv) {
   s.calibrate = o.calibrate;
   s.selective_update = !o.full_update;
   s.state_clearance_m = o.clearance_m;
+  s.critical_angle_rad = o.critical_angle_rad;
   const auto start = std::chrono::steady_clock::now();
   try {
     const auto models = ev::Models::Load(o.world, s);

@@ -9,18 +9,18 @@ EVAL="$HERE/../../.ws/devel/lib/markov_localization/markov_localization_eval"
 OUT="$HERE/results"
 mkdir -p "$OUT"
 declare -A CMD=(
-  [global_calibrated_20cm]="global --runs 20 --calibrate --resolution 0.2"
-  [global_default_model_20cm]="global --runs 20 --resolution 0.2"
-  [tracking_15cm]="tracking --runs 3 --calibrate"
-  [fig2_20cm]="fig2 --runs 5 --calibrate --resolution 0.2"
-  [symmetric_20cm]="symmetric --runs 10 --calibrate --resolution 0.2"
-  [symmetric_25cm]="symmetric --runs 10 --calibrate --resolution 0.25"
-  [kidnap_20cm]="kidnap --runs 10 --calibrate --resolution 0.2"
-  [global_active_full_update_25cm]="global --runs 10 --calibrate --resolution 0.25 --full-update --behaviours active"
-  [kidnap_full_update_25cm]="kidnap --runs 10 --calibrate --resolution 0.25 --full-update"
+  [global_20cm]="global --runs 20 --resolution 0.2"
+  [tracking_15cm]="tracking --runs 3"
+  [fig2_20cm]="fig2 --runs 5 --resolution 0.2"
+  [symmetric_20cm]="symmetric --runs 10 --resolution 0.2"
+  [symmetric_25cm]="symmetric --runs 10 --resolution 0.25"
+  [kidnap_20cm]="kidnap --runs 10 --resolution 0.2"
+  [kidnap_20cm_keep]="kidnap --runs 10 --resolution 0.2 --on-lost keep"
+  [global_20cm_calibrated]="global --runs 20 --resolution 0.2 --calibrate"
+  [global_active_full_update_25cm]="global --runs 10 --resolution 0.25 --full-update --behaviours active"
 )
-ORDER=(global_calibrated_20cm global_default_model_20cm tracking_15cm fig2_20cm symmetric_20cm
-       symmetric_25cm kidnap_20cm global_active_full_update_25cm kidnap_full_update_25cm)
+ORDER=(global_20cm tracking_15cm fig2_20cm symmetric_20cm symmetric_25cm kidnap_20cm
+       kidnap_20cm_keep global_20cm_calibrated global_active_full_update_25cm)
 [[ $# -gt 0 ]] && ORDER=("$@")
 for name in "${ORDER[@]}"; do
   echo "== $name: markov_localization_eval ${CMD[$name]}" >&2
