@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -72,6 +72,7 @@ std::unique_ptr<Models> Models::Load(const std::string& world_file, const Settin
   }
   m->grid_params.angular_resolution_rad = 2.0 * M_PI / settings.heading_bins;
   m->grid_params.selective_update = settings.selective_update;
+  m->grid_params.lost.enabled = settings.lost_detector;
   m->certainty.threshold = settings.certain;
   m->active = std::make_unique<ActiveLocalizer>(m->map, *m->sensor, ActiveLocalizationParameters{});
   m->build_seconds = Elapsed(start);
@@ -82,8 +83,8 @@ namespace {
 
 // The model's components for expected bin e, as in SensorModel's table: each normalized over
 // the bins. c[0] hit, c[1] short, c[2] max, c[3] rand.
-std::vector<std::array<double, 4>> Components(int num_bins, double bw, double sigma,
-                                              double lambda, int e) {
+std::vector<std::array<double, 4>> Components(int num_bins, double bw, double sigma, double lambda,
+                                              int e) {
   const int max_bin = num_bins - 1;
   std::vector<std::array<double, 4>> c(num_bins);
   double hit_sum = 0, short_sum = 0;
@@ -225,18 +226,19 @@ SensorModelParameters CalibrateSensorModel(const Models& m, int poses, std::uint
         }
       }
     char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "sensor model fitted to %d simulated rings (%.0f readings; %.0f%% no echo, %.0f%% "
-                  "no echo where the map predicts one): sigma_hit %.2f m, z_hit %.3f, z_short "
-                  "%.3f, z_max %.3f, z_rand %.3f; log-likelihood per reading %.3f (core defaults "
-                  "with sigma_hit %.2f m: %.3f)",
-                  used, total, 100 * max_frac / std::max(total, 1.0),
-                  100 * max_when_echo / std::max(expect_echo, 1.0), out.sigma_hit_m, out.z_hit,
-                  out.z_short, out.z_max, out.z_rand,
-                  loglik(out.sigma_hit_m, {out.z_hit, out.z_short, out.z_max, out.z_rand}),
-                  defaults.sigma_hit_m,
-                  loglik(defaults.sigma_hit_m,
-                         {defaults.z_hit, defaults.z_short, defaults.z_max, defaults.z_rand}));
+    std::snprintf(
+        buf, sizeof buf,
+        "sensor model fitted to %d simulated rings (%.0f readings; %.0f%% no echo, %.0f%% "
+        "no echo where the map predicts one): sigma_hit %.2f m, z_hit %.3f, z_short "
+        "%.3f, z_max %.3f, z_rand %.3f; log-likelihood per reading %.3f (core defaults "
+        "with sigma_hit %.2f m: %.3f)",
+        used, total, 100 * max_frac / std::max(total, 1.0),
+        100 * max_when_echo / std::max(expect_echo, 1.0), out.sigma_hit_m, out.z_hit, out.z_short,
+        out.z_max, out.z_rand,
+        loglik(out.sigma_hit_m, {out.z_hit, out.z_short, out.z_max, out.z_rand}),
+        defaults.sigma_hit_m,
+        loglik(defaults.sigma_hit_m,
+               {defaults.z_hit, defaults.z_short, defaults.z_max, defaults.z_rand}));
     *report = buf;
   }
   return out;
@@ -458,7 +460,8 @@ Twist2 GoTo::Command(Episode& e) {
   // Obstacle avoidance: slow down near something ahead, and steer away from the nearer side.
   const double front = MinRange(e.models(), e.ranges(), -16 * kDeg, 16 * kDeg);
   if (verbose_trace) {
-    std::fprintf(stderr, "      go-to t %.1f truth (%.2f, %.2f, %.0f) wp %zu/%zu front %.2f err %.2f\n",
+    std::fprintf(stderr,
+                 "      go-to t %.1f truth (%.2f, %.2f, %.0f) wp %zu/%zu front %.2f err %.2f\n",
                  e.time(), e.truth().x, e.truth().y, e.truth().yaw * 180 / M_PI, next_, wp_.size(),
                  front, err);
   }

@@ -32,8 +32,8 @@ using robot_sim::Twist2;
 template <typename G, typename = void>
 struct HasLostDetector : std::false_type {};
 template <typename G>
-struct HasLostDetector<G, std::void_t<decltype(std::declval<const G&>().lost())>>
-    : std::true_type {};
+struct HasLostDetector<G, std::void_t<decltype(std::declval<const G&>().lost())>> : std::true_type {
+};
 
 template <typename G>
 bool DetectorSaysLost(const G& grid) {
@@ -50,6 +50,7 @@ struct Settings {
   /// SensorModelParameters::critical_angle_rad: the node's 0.35 rad for sonar (pi/2: a single
   /// diffuse ray, the core's default before markov_kidnap's sonar physics).
   double critical_angle_rad = 0.35;
+  bool lost_detector = true;   ///< MarkovGridParameters::lost.enabled (markov_kidnap's detector).
   double speed_mps = 0.5;      ///< Cruise speed of every behaviour (B21 limit 0.9 m/s).
   double physics_hz = 100.0;   ///< robot_sim's default physics rate.
   double sonar_hz = 10.0;      ///< robot_sim's default sensor rate: one update per ring.
@@ -256,6 +257,11 @@ Vec2 Compose(const Pose2& pose, const Vec2& rel);
 Vec2 MapToOdom(const Pose2& estimate, const Pose2& odom, const Vec2& p);
 
 double Elapsed(std::chrono::steady_clock::time_point since);
+
+/// Writes the belief's marginal over theta as a PNG (log scale), the true pose red and the
+/// modes blue (eval_picture.cpp). False when the file cannot be written.
+bool WriteBeliefPicture(const MapModel& map, const BeliefSnapshot& belief, const Pose2& truth,
+                        const std::vector<Mode>& modes, const std::string& path);
 
 /// Logs every go-to step (stderr; debugging only).
 extern bool verbose_trace;

@@ -7,9 +7,17 @@
 //   fig2       the paper's Fig. 2 run: position 1 facing south-west, localize, enter room A
 //   symmetric  a perfectly symmetric world (eval/worlds/symmetric_corridor.yaml)
 //   kidnap     localized and tracking, then kidnapped by a 70-degree rotation
-// Usage: markov_localization_eval SCENARIO [--runs N] [--seed S] [--resolution M]
-//        [--heading-bins K] [--sigma-hit M] [--time-limit S] [--behaviours wander,wall,active]
-//        [--kidnap-deg D] [--kidnap-shift M] [--settle S] [--world FILE] [--verbose]
+// Usage: markov_localization_eval SCENARIO [options]
+//   --runs N (20)  --seed S (1; run i uses seed S + i - 1)  --time-limit S (simulated s)
+//   --resolution M, --heading-bins K (tracking 0.15 / 180, else 0.25 / 72)
+//   --sigma-hit M (max(0.15, resolution))  --critical-angle RAD (0.35, the node's sonar value)
+//   --calibrate (fit the sensor model's mixture to simulated rings first)
+//   --full-update (eq. (2) instead of the selective eq. (4))  --lost-detector on|off (on)
+//   --clearance M (state clearance; default the B21's radius)  --behaviours wander,wall,active
+//   --kidnap-deg D (70)  --kidnap-shift M (0)  --settle S (30)  --on-lost uniform|keep
+//   --world FILE  --picture OUT.png (fig2: the first multi-modal belief after 10 m)
+//   --verbose (each active choice on stderr)  --trace (each go-to step)
+// Prints markdown tables; the header lines give the settings and the load average.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -53,6 +61,8 @@ struct Options {
   double clearance_m = -1;
   bool on_lost_uniform = true;
   double critical_angle_rad = 0.35;
+  bool lost_detector = true;
+  std::string picture;
 };
 
 std::string LoadAverage() {
@@ -67,7 +77,9 @@ int Usage(const char* argv0) {
             << " tracking|global|fig2|symmetric|kidnap [--runs N] [--seed S] [--resolution M]"
                " [--heading-bins K] [--sigma-hit M] [--time-limit S]"
                " [--behaviours wander,wall,active] [--kidnap-deg D] [--kidnap-shift M]"
-               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] [--on-lost uniform|keep] [--critical-angle RAD] [--verbose]\n";
+               " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] "
+               "[--on-lost uniform|keep] [--critical-angle RAD] [--lost-detector on|off] "
+               "[--picture OUT.png] [--verbose]\n";
   return 2;
 }
 
@@ -120,21 +132,24 @@ void PrintHeader(const Options& o, const ev::Models& m, const std::string& world
   std::printf("# sonar model: cone %.2f rad, critical angle %.2f rad; lost detector %s\n",
               m.sensor_params.beam_width_rad, m.sensor_params.critical_angle_rad,
               m.grid_params.lost.enabled ? "on (core defaults)" : "off");
-  std::printf("# grid %.2f m x %.1f deg (%zu states; state clearance %.3f m), sigma_hit %.2f m, %s, "
-              "speed %.2f m/s, 1 update per ring at %.0f Hz; models built in %.1f s\n",
-              m.settings.resolution_m, 360.0 / m.settings.heading_bins,
-              m.map.NumStateCells() * static_cast<std::size_t>(m.settings.heading_bins),
-              m.settings.state_clearance_m, m.sensor_params.sigma_hit_m,
-              m.settings.selective_update ? "selective update eq. (4)" : "full update eq. (2)",
-              m.settings.speed_mps, m.settings.sonar_hz, m.build_seconds);
-  if (!m.calibration_report.empty()) std::printf("# %s\n", m.calibration_report.c_str());
+  std::printf(
+      "# grid %.2f m x %.1f deg (%zu states; state clearance %.3f m), sigma_hit %.2f m, %s, "
+      "speed %.2f m/s, 1 update per ring at %.0f Hz; models built in %.1f s\n",
+      m.settings.resolution_m, 360.0 / m.settings.heading_bins,
+      m.map.NumStateCells() * static_cast<std::size_t>(m.settings.heading_bins),
+      m.settings.state_clearance_m, m.sensor_params.sigma_hit_m,
+      m.settings.selective_update ? "selective update eq. (4)" : "full update eq. (2)",
+      m.settings.speed_mps, m.settings.sonar_hz, m.build_seconds);
+  if (!m.calibration_report.empty())
+    std::printf("# %s\n", m.calibration_report.c_str());
   else
-    std::printf("# sensor model: the core's defaults (z_hit %.2f, z_short %.2f, z_max %.2f, "
-                "z_rand %.2f) with sigma_hit above\n",
-                m.sensor_params.z_hit, m.sensor_params.z_short, m.sensor_params.z_max,
-                m.sensor_params.z_rand);
-  std::printf("# seed %llu, load average at start: %s\n",
-              static_cast<unsigned long long>(o.seed), LoadAverage().c_str());
+    std::printf(
+        "# sensor model: the core's defaults (z_hit %.2f, z_short %.2f, z_max %.2f, "
+        "z_rand %.2f) with sigma_hit above\n",
+        m.sensor_params.z_hit, m.sensor_params.z_short, m.sensor_params.z_max,
+        m.sensor_params.z_rand);
+  std::printf("# seed %llu, load average at start: %s\n", static_cast<unsigned long long>(o.seed),
+              LoadAverage().c_str());
 }
 
 std::string Fmt(double v, const char* f = "%.1f") {
@@ -152,9 +167,11 @@ int Tracking(const Options& o, const ev::Models& m) {
                                    {17.5, 10.0}, {12.5, 10.0}, {12.5, 11.8}, {14.0, 13.5},
                                    {12.5, 11.8}, {12.5, 10.0}, {3.0, 10.0}};
   const Pose2 start{24.0, 10.0, M_PI};
-  std::printf("| run | seed | route | distance (m) | time (s) | mean / max pos error (cm) | "
-              "mean / max heading error (deg) | min certainty | update mean / max (ms) | "
-              "confidently wrong (s) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| run | seed | route | distance (m) | time (s) | mean / max pos error (cm) | "
+      "mean / max heading error (deg) | min certainty | update mean / max (ms) | "
+      "confidently wrong (s) | lost detector fired |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> all_pos, all_yaw, all_ms;
   for (int run = 0; run < o.runs; ++run) {
     const std::uint64_t seed = o.seed + run;
@@ -162,6 +179,7 @@ int Tracking(const Options& o, const ev::Models& m) {
     ev::GoTo go;
     Record rec;
     double sum_pos = 0, max_pos = 0, sum_yaw = 0, max_yaw = 0, min_cert = 1;
+    int alarms = 0;
     std::size_t leg = 0;
     bool started = false;
     while (e.time() < o.time_limit_s && leg < route.size()) {
@@ -178,27 +196,30 @@ int Tracking(const Options& o, const ev::Models& m) {
       sum_pos += s.pos_error, max_pos = std::max(max_pos, s.pos_error);
       sum_yaw += s.yaw_error, max_yaw = std::max(max_yaw, s.yaw_error);
       min_cert = std::min(min_cert, s.certainty);
+      if (s.lost_detector) ++alarms;
       all_pos.push_back(s.pos_error), all_yaw.push_back(s.yaw_error);
       all_ms.push_back(s.update_ms);
     }
     const int n = std::max(1, rec.updates);
-    std::printf("| %d | %llu | %s | %.1f | %.1f | %.1f / %.1f | %.2f / %.2f | %.2f | %.1f / %.1f | "
-                "%.1f |\n",
-                run + 1, static_cast<unsigned long long>(seed),
-                leg >= route.size() ? "completed" : "not completed", e.distance(), e.time(),
-                100 * sum_pos / n, 100 * max_pos, sum_yaw / n / kDeg, max_yaw / kDeg, min_cert,
-                rec.mean_ms(), rec.update_ms_max, rec.wrong_time);
+    std::printf(
+        "| %d | %llu | %s | %.1f | %.1f | %.1f / %.1f | %.2f / %.2f | %.2f | %.1f / %.1f | "
+        "%.1f | %d |\n",
+        run + 1, static_cast<unsigned long long>(seed),
+        leg >= route.size() ? "completed" : "not completed", e.distance(), e.time(),
+        100 * sum_pos / n, 100 * max_pos, sum_yaw / n / kDeg, max_yaw / kDeg, min_cert,
+        rec.mean_ms(), rec.update_ms_max, rec.wrong_time, alarms);
     std::fflush(stdout);
   }
   auto mean = [](const std::vector<double>& v) {
     return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
   };
   std::sort(all_ms.begin(), all_ms.end());
-  std::printf("\nall runs: mean position error %.1f cm, mean heading error %.2f deg, update mean "
-              "%.1f ms, median %.1f ms, 99th percentile %.1f ms (budget at 10 Hz: 100 ms)\n",
-              100 * mean(all_pos), mean(all_yaw) / kDeg, mean(all_ms),
-              all_ms.empty() ? 0.0 : all_ms[all_ms.size() / 2],
-              all_ms.empty() ? 0.0 : all_ms[all_ms.size() * 99 / 100]);
+  std::printf(
+      "\nall runs: mean position error %.1f cm, mean heading error %.2f deg, update mean "
+      "%.1f ms, median %.1f ms, 99th percentile %.1f ms (budget at 10 Hz: 100 ms)\n",
+      100 * mean(all_pos), mean(all_yaw) / kDeg, mean(all_ms),
+      all_ms.empty() ? 0.0 : all_ms[all_ms.size() / 2],
+      all_ms.empty() ? 0.0 : all_ms[all_ms.size() * 99 / 100]);
   return 0;
 }
 
@@ -246,9 +267,9 @@ GlobalResult GlobalRun(const Options& o, const ev::Models& m, const Pose2& start
     e.Tick(b->Command(e));
     rec.Add(e);
     if (o.verbose && static_cast<int>(std::lround(e.time() * 10)) % 100 == 0)
-      std::fprintf(stderr, "  t %.0f s cert %.2f err %.2f m %.0f deg modes? dist %.1f\n",
-                   e.time(), e.status().certainty, e.status().pos_error,
-                   e.status().yaw_error / kDeg, e.distance());
+      std::fprintf(stderr, "  t %.0f s cert %.2f err %.2f m %.0f deg modes? dist %.1f\n", e.time(),
+                   e.status().certainty, e.status().pos_error, e.status().yaw_error / kDeg,
+                   e.distance());
     if (rec.success_time >= 0) break;
   }
   GlobalResult r;
@@ -266,10 +287,11 @@ GlobalResult GlobalRun(const Options& o, const ev::Models& m, const Pose2& start
 }
 
 int Global(const Options& o, const ev::Models& m) {
-  std::printf("| behaviour | run | seed | start (x, y, deg) | success | time to it (s) | "
-              "distance (m) | confidently wrong (s) | final certainty | final error (m) | "
-              "choices of a* | rooms of a* (true frame) | update mean (ms) | wall (s) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| behaviour | run | seed | start (x, y, deg) | success | time to it (s) | "
+      "distance (m) | confidently wrong (s) | final certainty | final error (m) | "
+      "choices of a* | rooms of a* (true frame) | update mean (ms) | wall (s) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::map<std::string, std::vector<GlobalResult>> all;
   for (int run = 0; run < o.runs; ++run) {
     const std::uint64_t seed = o.seed + run;
@@ -278,17 +300,18 @@ int Global(const Options& o, const ev::Models& m) {
     for (const auto& behaviour : o.behaviours) {
       const GlobalResult r = GlobalRun(o, m, start, seed, behaviour);
       all[behaviour].push_back(r);
-      std::printf("| %s | %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %.1f | %.1f | %.2f | %.2f | "
-                  "%d | %s | %.1f | %.0f |\n",
-                  behaviour.c_str(), run + 1, static_cast<unsigned long long>(seed), start.x,
-                  start.y, start.yaw / kDeg, r.success ? "yes" : "no", Fmt(r.time).c_str(),
-                  r.distance, r.wrong, r.final_certainty, r.final_error, r.choices,
-                  r.rooms.c_str(), r.mean_ms, r.wall_s);
+      std::printf(
+          "| %s | %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %.1f | %.1f | %.2f | %.2f | "
+          "%d | %s | %.1f | %.0f |\n",
+          behaviour.c_str(), run + 1, static_cast<unsigned long long>(seed), start.x, start.y,
+          start.yaw / kDeg, r.success ? "yes" : "no", Fmt(r.time).c_str(), r.distance, r.wrong,
+          r.final_certainty, r.final_error, r.choices, r.rooms.c_str(), r.mean_ms, r.wall_s);
       std::fflush(stdout);
     }
   }
-  std::printf("\n| behaviour | success | time to success: median / max (s) | runs confidently "
-              "wrong | total time confidently wrong (s) |\n|---|---|---|---|---|\n");
+  std::printf(
+      "\n| behaviour | success | time to success: median / max (s) | runs confidently "
+      "wrong | total time confidently wrong (s) |\n|---|---|---|---|---|\n");
   for (const auto& behaviour : o.behaviours) {
     const auto& v = all[behaviour];
     std::vector<double> times;
@@ -316,13 +339,16 @@ int Fig2(const Options& o, const ev::Models& m) {
     std::cerr << "world has no position_1 / room_a_target place\n";
     return 1;
   }
-  std::printf("# start: place position_1 (%.2f, %.2f, %.0f deg: facing south-west), then room A "
-              "via place room_a_target (%.1f, %.1f)\n",
-              p1->pose.x, p1->pose.y, p1->pose.yaw / kDeg, target->pose.x, target->pose.y);
-  std::printf("| run | seed | modes after 10 m | certainty after 10 m | time to certain and "
-              "right (s) | rooms of a* (true frame) | choices | reached room A | total time (s) "
-              "| distance (m) | confidently wrong (s) | wall (s) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "# start: place position_1 (%.2f, %.2f, %.0f deg: facing south-west), then room A "
+      "via place room_a_target (%.1f, %.1f)\n",
+      p1->pose.x, p1->pose.y, p1->pose.yaw / kDeg, target->pose.x, target->pose.y);
+  std::printf(
+      "| run | seed | modes after 10 m | certainty after 10 m | time to certain and "
+      "right (s) | rooms of a* (true frame) | choices | reached room A | total time (s) "
+      "| distance (m) | confidently wrong (s) | wall (s) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  bool pictured = false;
   for (int run = 0; run < o.runs; ++run) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint64_t seed = o.seed + run;
@@ -352,8 +378,24 @@ int Fig2(const Options& o, const ev::Models& m) {
       e.Tick(cmd);
       rec.Add(e);
       if (modes_10m < 0 && e.distance() >= 10.0) {  // the paper's position 2: Fig. 3's belief
-        modes_10m = static_cast<int>(e.Modes().size());
+        const auto modes = e.Modes();
+        modes_10m = static_cast<int>(modes.size());
         cert_10m = e.status().certainty;
+        if (!o.picture.empty() && !pictured && modes.size() >= 2) {  // a multi-modal belief
+          pictured = true;
+          const auto b = ml::BeliefSnapshot::Of(e.grid());
+          if (!ev::WriteBeliefPicture(m.map, b, e.truth(), modes, o.picture))
+            std::cerr << "cannot write " << o.picture << "\n";
+          std::printf(
+              "# picture of run %d's belief after 10 m: %s (truth (%.2f, %.2f, %.0f deg), "
+              "entropy %.2f nats of %.2f); modes:",
+              run + 1, o.picture.c_str(), e.truth().x, e.truth().y, e.truth().yaw / kDeg,
+              ml::Entropy(b), std::log(static_cast<double>(b.num_states)));
+          for (const auto& md : modes)
+            std::printf(" (%.2f, %.2f, %.0f deg) %.3f;", md.mean.x, md.mean.y, md.mean.yaw / kDeg,
+                        md.mass);
+          std::printf("\n");
+        }
       }
       // The robot decides by its certainty alone; the harness scores against the truth.
       if (!heading_to_a && e.distance() >= 10.0 && e.status().certainty > m.settings.certain) {
@@ -367,13 +409,13 @@ int Fig2(const Options& o, const ev::Models& m) {
         to_a.Set(wp, e.time(), 120.0);
       }
     }
-    std::printf("| %d | %llu | %d | %.2f | %s (certain at %s) | %s | %d | %s | %.1f | %.1f | "
-                "%.1f | %.0f |\n",
-                run + 1, static_cast<unsigned long long>(seed), modes_10m, cert_10m,
-                Fmt(rec.success_time).c_str(), Fmt(certain_at).c_str(),
-                RoomsOf(m, active.targets_true()).c_str(), active.choices(),
-                reached ? "yes" : "no", e.time(), e.distance(), rec.wrong_time,
-                ev::Elapsed(t0));
+    std::printf(
+        "| %d | %llu | %d | %.2f | %s (certain at %s) | %s | %d | %s | %.1f | %.1f | "
+        "%.1f | %.0f |\n",
+        run + 1, static_cast<unsigned long long>(seed), modes_10m, cert_10m,
+        Fmt(rec.success_time).c_str(), Fmt(certain_at).c_str(),
+        RoomsOf(m, active.targets_true()).c_str(), active.choices(), reached ? "yes" : "no",
+        e.time(), e.distance(), rec.wrong_time, ev::Elapsed(t0));
     std::fflush(stdout);
   }
   return 0;
@@ -382,9 +424,10 @@ int Fig2(const Options& o, const ev::Models& m) {
 // ---------------------------------------------------------------------------------------------
 // symmetric
 int Symmetric(const Options& o, const ev::Models& m) {
-  std::printf("| run | seed | start (x, y, deg) | time (s) | distance (m) | max certainty | time "
-              "certain (s) | confidently wrong (s) | final modes | final certainty |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| run | seed | start (x, y, deg) | time (s) | distance (m) | max certainty | time "
+      "certain (s) | confidently wrong (s) | final modes | final certainty |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n");
   int violations = 0;
   double wrong_total = 0;
   for (int run = 0; run < o.runs; ++run) {
@@ -400,11 +443,12 @@ int Symmetric(const Options& o, const ev::Models& m) {
     }
     if (rec.max_certainty > m.settings.certain) ++violations;
     wrong_total += rec.wrong_time;
-    std::printf("| %d | %llu | (%.2f, %.2f, %.0f) | %.0f | %.1f | %.3f | %.1f | %.1f | %zu | "
-                "%.3f |\n",
-                run + 1, static_cast<unsigned long long>(seed), start.x, start.y,
-                start.yaw / kDeg, e.time(), e.distance(), rec.max_certainty, rec.certain_time,
-                rec.wrong_time, e.Modes().size(), e.status().certainty);
+    std::printf(
+        "| %d | %llu | (%.2f, %.2f, %.0f) | %.0f | %.1f | %.3f | %.1f | %.1f | %zu | "
+        "%.3f |\n",
+        run + 1, static_cast<unsigned long long>(seed), start.x, start.y, start.yaw / kDeg,
+        e.time(), e.distance(), rec.max_certainty, rec.certain_time, rec.wrong_time,
+        e.Modes().size(), e.status().certainty);
     std::fflush(stdout);
   }
   std::printf("\nruns with certainty > %.1f: %d of %d; total time confidently wrong %.1f s\n",
@@ -416,23 +460,24 @@ int Symmetric(const Options& o, const ev::Models& m) {
 // kidnap
 int Kidnap(const Options& o, const ev::Models& m) {
   const bool detector = ev::HasLostDetector<ml::MarkovGrid>::value;
-  std::printf("# kidnap: %.0f deg clockwise rotation in place%s after %.0f s of tracking "
-              "(random wandering from a known start in the corridor); lost = %s; once lost: %s; "
-              "%0.f s allowed after the kidnap\n",
-              o.kidnap_deg,
-              o.kidnap_shift_m != 0 ? (" and " + Fmt(o.kidnap_shift_m, "%.2f") + " m ahead").c_str()
-                                    : "",
-              o.settle_s,
-              detector ? "MarkovGrid::lost() (markov_kidnap's detector)"
-                       : "certainty < 0.8 (the lost detector is not merged)",
-              o.on_lost_uniform ? "uniform belief, ~10 m random motion, then active localization"
-                                : "active localization on the belief as it is",
-              o.time_limit_s);
-  std::printf("| run | seed | start (x, y, deg) | tracking before | certainty < 0.8 after (s) "
-              "| detector lost after (s) | relocalized after (s) | confidently wrong after "
-              "kidnap (s) | certainty < 0.8 before the kidnap (s) | final certainty | final "
-              "error (m, deg) | wall (s) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "# kidnap: %.0f deg clockwise rotation in place%s after %.0f s of tracking "
+      "(random wandering from a known start in the corridor); lost = %s; once lost: %s; "
+      "%0.f s allowed after the kidnap\n",
+      o.kidnap_deg,
+      o.kidnap_shift_m != 0 ? (" and " + Fmt(o.kidnap_shift_m, "%.2f") + " m ahead").c_str() : "",
+      o.settle_s,
+      detector ? "MarkovGrid::lost() (markov_kidnap's detector)"
+               : "certainty < 0.8 (the lost detector is not merged)",
+      o.on_lost_uniform ? "uniform belief, ~10 m random motion, then active localization"
+                        : "active localization on the belief as it is",
+      o.time_limit_s);
+  std::printf(
+      "| run | seed | start (x, y, deg) | tracking before | certainty < 0.8 after (s) "
+      "| detector lost after (s) | relocalized after (s) | confidently wrong after "
+      "kidnap (s) | certainty < 0.8 before the kidnap (s) | final certainty | final "
+      "error (m, deg) | wall (s) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int recovered = 0;
   for (int run = 0; run < o.runs; ++run) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -482,13 +527,13 @@ int Kidnap(const Options& o, const ev::Models& m) {
       }
     }
     if (reloc >= 0) ++recovered;
-    std::printf("| %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %s | %s | %.1f | %.1f | %.2f | "
-                "%.2f, %.0f | %.0f |\n",
-                run + 1, static_cast<unsigned long long>(seed), start.x, start.y,
-                start.yaw / kDeg, tracking ? "yes" : "no", Fmt(below).c_str(),
-                detector ? Fmt(lost).c_str() : "n/a", Fmt(reloc).c_str(), wrong, unsure_before,
-                e.status().certainty, e.status().pos_error, e.status().yaw_error / kDeg,
-                ev::Elapsed(t0));
+    std::printf(
+        "| %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %s | %s | %.1f | %.1f | %.2f | "
+        "%.2f, %.0f | %.0f |\n",
+        run + 1, static_cast<unsigned long long>(seed), start.x, start.y, start.yaw / kDeg,
+        tracking ? "yes" : "no", Fmt(below).c_str(), detector ? Fmt(lost).c_str() : "n/a",
+        Fmt(reloc).c_str(), wrong, unsure_before, e.status().certainty, e.status().pos_error,
+        e.status().yaw_error / kDeg, ev::Elapsed(t0));
     std::fflush(stdout);
   }
   std::printf("\nrecovered (certain and right again) in %d of %d runs\n", recovered, o.runs);
@@ -511,31 +556,55 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     try {
-      if (a == "--runs") o.runs = std::stoi(next());
-      else if (a == "--seed") o.seed = std::stoull(next());
-      else if (a == "--resolution") o.resolution_m = std::stod(next());
-      else if (a == "--heading-bins") o.heading_bins = std::stoi(next());
-      else if (a == "--sigma-hit") o.sigma_hit_m = std::stod(next());
-      else if (a == "--time-limit") o.time_limit_s = std::stod(next());
-      else if (a == "--kidnap-deg") o.kidnap_deg = std::stod(next());
-      else if (a == "--kidnap-shift") o.kidnap_shift_m = std::stod(next());
-      else if (a == "--settle") o.settle_s = std::stod(next());
-      else if (a == "--world") o.world = next();
-      else if (a == "--verbose") o.verbose = true;
-      else if (a == "--trace") o.verbose = ev::verbose_trace = true;
-      else if (a == "--calibrate") o.calibrate = true;
-      else if (a == "--full-update") o.full_update = true;
-      else if (a == "--clearance") o.clearance_m = std::stod(next());
-      else if (a == "--critical-angle") o.critical_angle_rad = std::stod(next());
-      else if (a == "--on-lost") {
+      if (a == "--runs")
+        o.runs = std::stoi(next());
+      else if (a == "--seed")
+        o.seed = std::stoull(next());
+      else if (a == "--resolution")
+        o.resolution_m = std::stod(next());
+      else if (a == "--heading-bins")
+        o.heading_bins = std::stoi(next());
+      else if (a == "--sigma-hit")
+        o.sigma_hit_m = std::stod(next());
+      else if (a == "--time-limit")
+        o.time_limit_s = std::stod(next());
+      else if (a == "--kidnap-deg")
+        o.kidnap_deg = std::stod(next());
+      else if (a == "--kidnap-shift")
+        o.kidnap_shift_m = std::stod(next());
+      else if (a == "--settle")
+        o.settle_s = std::stod(next());
+      else if (a == "--world")
+        o.world = next();
+      else if (a == "--picture")
+        o.picture = next();
+      else if (a == "--verbose")
+        o.verbose = true;
+      else if (a == "--trace")
+        o.verbose = ev::verbose_trace = true;
+      else if (a == "--calibrate")
+        o.calibrate = true;
+      else if (a == "--full-update")
+        o.full_update = true;
+      else if (a == "--clearance")
+        o.clearance_m = std::stod(next());
+      else if (a == "--critical-angle")
+        o.critical_angle_rad = std::stod(next());
+      else if (a == "--lost-detector") {
+        const std::string v = next();
+        if (v != "on" && v != "off") {
+          std::cerr << "--lost-detector must be on or off\n";
+          return 2;
+        }
+        o.lost_detector = v == "on";
+      } else if (a == "--on-lost") {
         const std::string v = next();
         if (v != "uniform" && v != "keep") {
           std::cerr << "--on-lost must be uniform or keep\n";
           return 2;
         }
         o.on_lost_uniform = v == "uniform";
-      }
-      else if (a == "--behaviours") {
+      } else if (a == "--behaviours") {
         o.behaviours.clear();
         std::stringstream ss(next());
         std::string b;
@@ -563,7 +632,10 @@ int main(int argc, char** argv) {
   if (o.heading_bins < 0) o.heading_bins = tracking ? 180 : 72;
   if (o.sigma_hit_m < 0) o.sigma_hit_m = std::max(0.15, o.resolution_m);
   if (o.time_limit_s < 0)
-    o.time_limit_s = tracking ? 600 : o.scenario == "symmetric" ? 120 : o.scenario == "kidnap" ? 240 : 480;
+    o.time_limit_s = tracking                    ? 600
+                     : o.scenario == "symmetric" ? 120
+                     : o.scenario == "kidnap"    ? 240
+                                                 : 480;
   if (o.world.empty())
     o.world = o.scenario == "symmetric" ? std::string(EVAL_WORLDS_DIR) + "/symmetric_corridor.yaml"
                                         : std::string(WORLDS_DIR) + "/bonn_department.yaml";
@@ -580,6 +652,7 @@ int main(int argc, char** argv) {
   s.selective_update = !o.full_update;
   s.state_clearance_m = o.clearance_m;
   s.critical_angle_rad = o.critical_angle_rad;
+  s.lost_detector = o.lost_detector;
   const auto start = std::chrono::steady_clock::now();
   try {
     const auto models = ev::Models::Load(o.world, s);
