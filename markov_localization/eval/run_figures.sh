@@ -31,4 +31,5 @@ for name in "${ORDER[@]}"; do
   { echo "command: markov_localization_eval ${CMD[$name]}  ($(date -u +%FT%TZ))"; echo;
     # shellcheck disable=SC2086
     nice -n 10 "$EVAL" ${CMD[$name]}; } > "$OUT/$name.md" 2> "$OUT/$name.log"
+  [[ -s "$OUT/$name.log" ]] || rm -f "$OUT/$name.log"
 done
