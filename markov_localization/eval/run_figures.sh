@@ -23,11 +23,14 @@ declare -A CMD=(
   [kidnap_full_update_25cm]="kidnap --runs 10 --resolution 0.25 --full-update"
   [global_active_selective_25cm]="global --runs 10 --resolution 0.25 --behaviours active"
   [global_baselines_full_update_25cm]="global --runs 5 --resolution 0.25 --full-update --behaviours wander,wall --time-limit 300"
+  [global_baselines_selective_25cm]="global --runs 5 --resolution 0.25 --behaviours wander,wall --time-limit 300"
+  [global_25cm]="global --runs 20 --resolution 0.25"
 )
 ORDER=(global_20cm tracking_15cm fig2_20cm symmetric_20cm symmetric_25cm kidnap_20cm
        kidnap_20cm_keep global_20cm_calibrated global_active_full_update_25cm
        tracking_15cm_no_detector global_20cm_no_detector kidnap_full_update_25cm
-       global_active_selective_25cm global_baselines_full_update_25cm)
+       global_active_selective_25cm global_baselines_full_update_25cm
+       global_baselines_selective_25cm global_25cm)
 [[ $# -gt 0 ]] && ORDER=("$@")
 for name in "${ORDER[@]}"; do
   echo "== $name: markov_localization_eval ${CMD[$name]}" >&2
