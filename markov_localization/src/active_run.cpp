@@ -18,6 +18,8 @@ std::vector<std::string> ValidateParameters(const ActiveRunParameters& p) {
   if (!(p.estimate_jump_m > 0.0)) errors.push_back("estimate_jump_m must be > 0 m");
   if (!(p.estimate_jump_rad > 0.0)) errors.push_back("estimate_jump_rad must be > 0 rad");
   if (!(p.target_timeout_s > 0.0)) errors.push_back("target_timeout_s must be > 0 s");
+  if (!(p.confirm_s >= 0.0 && std::isfinite(p.confirm_s)))
+    errors.push_back("confirm_s must be >= 0 s");
   return errors;
 }
 
@@ -104,9 +106,14 @@ RunAction ActiveLocalizationRun::Step(const RunInput& in) {
   if (phase_ == RunPhase::kSucceeded) return RunAction::kSucceed;
   if (phase_ == RunPhase::kAborted) return RunAction::kAbort;
   if (in.certainty > threshold_) {
-    phase_ = RunPhase::kSucceeded;
-    reason_.clear();
-    return RunAction::kSucceed;
+    if (above_since_s_ < 0.0) above_since_s_ = in.now_s;
+    if (in.now_s - above_since_s_ >= params_.confirm_s) {
+      phase_ = RunPhase::kSucceeded;
+      reason_.clear();
+      return RunAction::kSucceed;
+    }
+  } else {
+    above_since_s_ = -1.0;
   }
   const double elapsed = in.now_s - start_s_;
   if (timeout_s_ > 0.0 && elapsed >= timeout_s_) {
@@ -123,8 +130,14 @@ RunAction ActiveLocalizationRun::Step(const RunInput& in) {
     case RunPhase::kChoose:
       return RunAction::kChoose;
     case RunPhase::kNavigate: {
-      const double dx = in.map_to_odom.x - frame_at_send_.x;
-      const double dy = in.map_to_odom.y - frame_at_send_.y;
+      // Where the robot is by the current frame and by the frame the target was sent in (far
+      // from the odometry origin a small turn of map -> odom moves its translation a lot).
+      const double c0 = std::cos(frame_at_send_.yaw), s0 = std::sin(frame_at_send_.yaw);
+      const double c1 = std::cos(in.map_to_odom.yaw), s1 = std::sin(in.map_to_odom.yaw);
+      const double dx = (in.map_to_odom.x + c1 * in.odom.x - s1 * in.odom.y) -
+                        (frame_at_send_.x + c0 * in.odom.x - s0 * in.odom.y);
+      const double dy = (in.map_to_odom.y + s1 * in.odom.x + c1 * in.odom.y) -
+                        (frame_at_send_.y + s0 * in.odom.x + c0 * in.odom.y);
       const double dyaw = std::remainder(in.map_to_odom.yaw - frame_at_send_.yaw, 2.0 * M_PI);
       if (std::hypot(dx, dy) > params_.estimate_jump_m ||
           std::abs(dyaw) > params_.estimate_jump_rad) {

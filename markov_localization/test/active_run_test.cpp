@@ -7,8 +7,10 @@
 namespace markov_localization {
 namespace {
 
-RunInput At(double t, double certainty, double distance, Pose2 frame = Pose2{0, 0, 0}) {
+RunInput At(double t, double certainty, double distance, Pose2 frame = Pose2{0, 0, 0},
+            Pose2 odom = Pose2{0, 0, 0}) {
   RunInput in;
+  in.odom = odom;
   in.now_s = t;
   in.certainty = certainty;
   in.odom_distance_m = distance;
@@ -53,7 +55,9 @@ TEST(ActiveRun, WithoutRandomMotionItChoosesAtOnce) {
 }
 
 TEST(ActiveRun, ChoosesDrivesAndRechoosesUntilCertain) {
-  ActiveLocalizationRun run(ActiveRunParameters{}, 0.8, 0.0, false, At(0, 0.5, 0));
+  ActiveRunParameters p;
+  p.confirm_s = 0.0;  // the paper: done at the first scan above the threshold
+  ActiveLocalizationRun run(p, 0.8, 0.0, false, At(0, 0.5, 0));
   ASSERT_EQ(run.Step(At(1, 0.5, 0)), RunAction::kChoose);
   run.OnChoice(true, 4.0, -3.0, At(1, 0.5, 0));
   EXPECT_EQ(run.phase(), RunPhase::kNavigate);
@@ -69,9 +73,25 @@ TEST(ActiveRun, ChoosesDrivesAndRechoosesUntilCertain) {
 }
 
 TEST(ActiveRun, CertaintyDuringTheRandomMotionEndsTheRun) {
-  ActiveLocalizationRun run(ActiveRunParameters{}, 0.9, 0.0, true, At(0, 0.0, 0));
+  ActiveRunParameters p;
+  p.confirm_s = 0.0;
+  ActiveLocalizationRun run(p, 0.9, 0.0, true, At(0, 0.0, 0));
   EXPECT_EQ(run.Step(At(1, 0.89, 3)), RunAction::kWander);
   EXPECT_EQ(run.Step(At(2, 0.91, 4)), RunAction::kSucceed);
+}
+
+TEST(ActiveRun, SuccessNeedsTheCertaintyToStayAboveTheThresholdForConfirmS) {
+  ActiveRunParameters p;
+  p.confirm_s = 2.0;
+  ActiveLocalizationRun run(p, 0.8, 0.0, false, At(0, 0.5, 0));
+  ASSERT_EQ(run.Step(At(1, 0.5, 0)), RunAction::kChoose);
+  run.OnChoice(true, 3, 0, At(1, 0.5, 0));
+  EXPECT_EQ(run.Step(At(2.0, 0.81, 1)), RunAction::kWait);  // above since 2.0
+  EXPECT_EQ(run.Step(At(3.0, 0.85, 1)), RunAction::kWait);
+  EXPECT_EQ(run.Step(At(3.5, 0.60, 1)), RunAction::kWait);  // fell back: the clock restarts
+  EXPECT_EQ(run.Step(At(4.0, 0.90, 1)), RunAction::kWait);  // above since 4.0
+  EXPECT_EQ(run.Step(At(5.9, 0.90, 1)), RunAction::kWait);
+  EXPECT_EQ(run.Step(At(6.0, 0.90, 1)), RunAction::kSucceed);
 }
 
 TEST(ActiveRun, GivesUpAfterNFailedTargetsNamingTheLastReason) {
@@ -139,6 +159,22 @@ TEST(ActiveRun, AJumpOfTheEstimateWhileDrivingMeansChooseAgainWithoutFailure) {
   run.OnChoice(true, 6, 2, At(3.2, 0.5, 2, Pose2{0, 0, 3.0}));
   EXPECT_EQ(run.Step(At(4, 0.5, 3, Pose2{0, 0, -3.0})), RunAction::kWait);  // 0.28 rad, wrapped
   EXPECT_EQ(run.Step(At(5, 0.5, 4, Pose2{0, 0, 1.0})), RunAction::kCancelAndChoose);
+}
+
+TEST(ActiveRun, ASmallTurnOfMapToOdomFarFromTheOdometryOriginIsNoJump) {
+  ActiveLocalizationRun run(ActiveRunParameters{}, 0.8, 0.0, false, At(0, 0.5, 0));
+  ASSERT_EQ(run.Step(At(1, 0.5, 0)), RunAction::kChoose);
+  const Pose2 odom{13.0, 0.0, 0.0};
+  // map -> odom turned by 5 degrees about the robot at (20, 10): its translation moves by
+  // 13 m x 0.087 = 1.1 m, the robot by nothing.
+  const double a = 5.0 * M_PI / 180.0;
+  const Pose2 before{7.0, 10.0, 0.0};
+  const Pose2 after{20.0 - 13.0 * std::cos(a), 10.0 - 13.0 * std::sin(a), a};
+  run.OnChoice(true, 6, 2, At(1, 0.5, 0, before, odom));
+  EXPECT_EQ(run.Step(At(2, 0.5, 1, after, odom)), RunAction::kWait);
+  // The same frames with the robot moved 2.5 m across: a jump.
+  const Pose2 across{after.x, after.y + 2.5, a};
+  EXPECT_EQ(run.Step(At(3, 0.5, 1, across, odom)), RunAction::kCancelAndChoose);
 }
 
 TEST(ActiveRun, ATargetNotReachedInTimeCountsAsAFailure) {

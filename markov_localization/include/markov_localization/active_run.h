@@ -23,12 +23,17 @@ struct ActiveRunParameters {
   /// staying: wander this far (m) and choose again. > 0.
   double rewander_m = 3.0;
   double min_target_distance_m = 0.5;  ///< a* closer than this counts as "stay" (m), >= 0.
-  int max_navigation_failures = 3;     ///< Give up after this many failed targets / stays, >= 1.
-  /// A jump of the estimate (map -> odom) by more than this while driving means the belief
-  /// changed its mind: the target was computed in the wrong frame; cancel and re-choose.
-  double estimate_jump_m = 1.0;     ///< (m), > 0
+  int max_navigation_failures = 5;     ///< Give up after this many failed targets / stays, >= 1.
+  /// A jump of the estimate (the robot's pose through map -> odom now and through map -> odom
+  /// when the target was sent) by more than this while driving means the belief changed its
+  /// mind: the target was computed in the wrong frame; cancel and re-choose.
+  double estimate_jump_m = 2.0;     ///< (m), > 0
   double estimate_jump_rad = 0.5;   ///< (rad), > 0
   double target_timeout_s = 120.0;  ///< Time to reach one target (s), > 0.
+  /// The certainty must stay above the threshold this long before the run ends in success
+  /// (s, >= 0; 0 = at the first scan above it, as the paper). A twin that crosses the threshold
+  /// for a moment while the robot looks through a door does not end the run.
+  double confirm_s = 2.0;
 };
 
 /// Every violation by parameter name; empty when valid.
@@ -51,7 +56,8 @@ struct RunInput {
   double now_s = 0.0;            ///< Time (s), any epoch, non-decreasing.
   double certainty = 0.0;        ///< POS-CERTAINTY of the belief.
   double odom_distance_m = 0.0;  ///< Distance driven since any fixed origin (odometry, m).
-  Pose2 map_to_odom;             ///< The estimate's map -> odom transform (x, y, yaw).
+  Pose2 map_to_odom;             ///< The published estimate's map -> odom transform (x, y, yaw).
+  Pose2 odom;                    ///< The robot's odometry pose.
 };
 
 enum class RunPhase { kWander, kChoose, kNavigate, kSucceeded, kAborted };
@@ -106,6 +112,7 @@ class ActiveLocalizationRun {
   Pose2 frame_at_send_;
   int targets_visited_ = 0;
   int failures_ = 0;
+  double above_since_s_ = -1.0;  ///< When the certainty went above the threshold (< 0: not).
   std::string last_failure_;
 };
 

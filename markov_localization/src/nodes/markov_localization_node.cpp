@@ -25,6 +25,7 @@
 #include "markov_localization/markov_grid.h"
 #include "markov_localization/ros/conversions.h"
 #include "markov_localization/ros/parameters.h"
+#include "markov_localization/sticky_estimate.h"
 #include "spott_map/world_loader.h"
 
 namespace ml = markov_localization;
@@ -49,6 +50,7 @@ class LocalizationNode {
     ring_sub_ = nh.subscribe(params.ring_topic, 5, &LocalizationNode::OnRing, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &LocalizationNode::OnInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
+    sticky_ = ml::StickyEstimate(params_.sticky);
     action_ = std::make_unique<ml::ActiveLocalizeServer>(nh, params_, [this] { SetUniform(); });
     ROS_INFO("markov_localization: %dx%d cells of %.2f m, %zu state cells", map_.width(),
              map_.height(), map_.resolution(), map_.NumStateCells());
@@ -64,11 +66,13 @@ class LocalizationNode {
     }
     grid_->SetGaussian(PoseOf(msg.pose.pose), params_.initial_sigma_xy_m,
                        params_.initial_sigma_theta_rad);
+    sticky_.Reset();
     ROS_INFO("markov_localization: initial pose set");
   }
 
   void SetUniform() {
     if (grid_) grid_->SetUniform();
+    sticky_.Reset();
     pending_initial_.reset();
     ROS_INFO("markov_localization: global localization (uniform belief)");
   }
@@ -151,12 +155,23 @@ class LocalizationNode {
     const auto c = ml::PosCertainty(b, params_.certainty);
     const auto modes = ml::ExtractModes(b, params_.modes);
     const double entropy = ml::Entropy(b);
-    const ml::Pose2 map_to_odom = conv::MapToOdom(c.estimate, *odom_);
+    // The published estimate stays with the mode it followed while twins swap the maximum.
+    bool switched = false;
+    const ml::Pose2 estimate = sticky_.Select(modes, c.estimate, *odom_, &switched);
+    if (switched)
+      ROS_INFO("markov_localization: estimate moves to (%.2f, %.2f, %.0f deg) (%zu modes)",
+               estimate.x, estimate.y, estimate.yaw * 180.0 / M_PI, modes.size());
+    const ml::Pose2 map_to_odom = conv::MapToOdom(estimate, *odom_);
     tf_.sendTransform(conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame,
                                         stamp + ros::Duration(params_.transform_tolerance_s)));
-    pose_pub_.publish(conv::ToPoseWithCovariance(
-        c.estimate, modes.empty() ? Eigen::Matrix3d::Zero().eval() : modes.front().covariance,
-        params_.map_frame, stamp));
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& m : modes)
+      if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) <
+          params_.sticky.match_radius_m) {
+        cov = m.covariance;
+        break;
+      }
+    pose_pub_.publish(conv::ToPoseWithCovariance(estimate, cov, params_.map_frame, stamp));
     modes_pub_.publish(conv::ToPoseArray(modes, params_.map_frame, stamp));
     if (!last_belief_ || (stamp - *last_belief_).toSec() >= 1.0 / params_.belief_rate_hz ||
         stamp < *last_belief_) {
@@ -168,7 +183,9 @@ class LocalizationNode {
     u.stamp = stamp;
     u.certainty = c.certainty;
     u.entropy = entropy;
-    u.estimate = c.estimate;
+    u.estimate = estimate;
+    u.best = c.estimate;
+    u.map = &map_;
     u.map_to_odom = map_to_odom;
     u.odom = *odom_;
     u.odom_distance_m = odom_distance_m_;
@@ -207,6 +224,7 @@ class LocalizationNode {
   std::unique_ptr<ml::ActiveLocalizeServer> action_;
   std::optional<spott_map::Pose2> odom_, last_odom_, pending_initial_;
   std::optional<ros::Time> last_belief_;
+  ml::StickyEstimate sticky_;
   double odom_distance_m_ = 0.0;
   std::vector<double> ranges_;
   ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_pub_;

@@ -3,7 +3,10 @@
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Twist.h>
 
+#include "markov_localization/navigable_target.h"
 #include "markov_localization/ros/conversions.h"
+
+#include <cstdio>
 
 namespace markov_localization {
 
@@ -36,6 +39,7 @@ RunInput ActiveLocalizeServer::InputOf(const LocalizationUpdate& u) const {
   in.certainty = u.certainty;
   in.odom_distance_m = u.odom_distance_m;
   in.map_to_odom = u.map_to_odom;
+  in.odom = u.odom;
   return in;
 }
 
@@ -117,15 +121,42 @@ void ActiveLocalizeServer::Choose(const LocalizationUpdate& u, const RunInput& i
     return;
   }
   const ActiveChoice choice = u.localizer->Choose(*u.modes);
-  run_->OnChoice(choice.found, choice.ax, choice.ay, in);
+  // a* is relative to the robot; the planner drives by tf, i.e. by the published estimate. The
+  // point sent is the nearest one outside the planner's padding.
+  const Vec2 a_star = TargetInWorld(u.estimate, choice.ax, choice.ay);
+  std::optional<Vec2> navigable;
+  if (choice.found)
+    navigable =
+        NavigableTarget(*u.map, a_star, params_.target_clearance_m, params_.target_search_m);
+  if (choice.found && !navigable) {
+    char text[128];
+    std::snprintf(text, sizeof(text), "no point with %.2f m clearance within %.2f m of a*",
+                  params_.target_clearance_m, params_.target_search_m);
+    ROS_INFO("markov_localization: a* = (%.2f, %.2f): %s", a_star.x(), a_star.y(), text);
+    run_->OnChoice(true, choice.ax, choice.ay, in);
+    if (run_->phase() == RunPhase::kNavigate) run_->OnNavigationDone(false, text, in);
+    return;
+  }
+  // The target relative to the robot, after the shift (what the robot will really drive).
+  double ahead = choice.ax, left = choice.ay;
+  if (navigable) {
+    const double c = std::cos(u.estimate.yaw), s = std::sin(u.estimate.yaw);
+    const double dx = navigable->x() - u.estimate.x, dy = navigable->y() - u.estimate.y;
+    ahead = c * dx + s * dy;
+    left = -s * dx + c * dy;
+  }
+  run_->OnChoice(choice.found, ahead, left, in);
   if (run_->phase() != RunPhase::kNavigate) {
     if (run_->phase() == RunPhase::kWander) {
-      ROS_INFO("markov_localization: a* is the robot's own position; random motion again");
+      ROS_INFO(
+          "markov_localization: a* = (%.2f ahead, %.2f left) is where the robot stands; "
+          "random motion again",
+          choice.ax, choice.ay);
       wandering_ = true;
     }
     return;
   }
-  const Vec2 target = TargetInWorld(u.estimate, choice.ax, choice.ay);
+  const Vec2 target = *navigable;
   feedback_.target.x = target.x();
   feedback_.target.y = target.y();
   feedback_.target_relative.x = choice.ax;
@@ -155,17 +186,16 @@ void ActiveLocalizeServer::Choose(const LocalizationUpdate& u, const RunInput& i
       choice.expected_entropy, choice.cost, u.modes->size());
 }
 
-void ActiveLocalizeServer::Finish(bool success, const std::string& reason,
-                                  const LocalizationUpdate& u) {
+void ActiveLocalizeServer::Finish(bool success, std::string reason, const LocalizationUpdate& u) {
   CancelNavigation();
   StopMotion();
   spott_msgs::ActiveLocalizeResult result;
   result.success = success;
   result.reason = reason;
   result.certainty = u.certainty;
-  result.estimate.x = u.estimate.x;
-  result.estimate.y = u.estimate.y;
-  result.estimate.theta = u.estimate.yaw;
+  result.estimate.x = u.best.x;
+  result.estimate.y = u.best.y;
+  result.estimate.theta = u.best.yaw;
   result.targets_visited = run_ ? run_->targets_visited() : 0;
   run_.reset();
   request_.reset();
@@ -206,7 +236,10 @@ void ActiveLocalizeServer::Update(const LocalizationUpdate& u) {
       break;
     }
     case RunAction::kCancelAndChoose:
-      ROS_INFO("markov_localization: re-choosing (estimate jumped or target timed out)");
+      ROS_INFO(
+          "markov_localization: re-choosing (map->odom now %.2f %.2f %.0f deg; estimate "
+          "jumped or target timed out)",
+          u.map_to_odom.x, u.map_to_odom.y, u.map_to_odom.yaw * 180 / M_PI);
       CancelNavigation();
       Choose(u, in);
       break;

@@ -28,12 +28,14 @@ struct LocalizationUpdate {
   ros::Time stamp;
   double certainty = 0.0;
   double entropy = 0.0;
-  Pose2 estimate;     ///< map frame
+  Pose2 estimate;     ///< The published estimate (sticky: see sticky_estimate.h), map frame.
+  Pose2 best;         ///< The refined pose at the global maximum (POS-CERTAINTY's).
   Pose2 map_to_odom;  ///< the transform published with it
   Pose2 odom;         ///< odometry pose of the robot
   double odom_distance_m = 0.0;
   const std::vector<Mode>* modes = nullptr;
   const ActiveLocalizer* localizer = nullptr;
+  const MapModel* map = nullptr;
   const std::vector<double>* beam_angles_rad = nullptr;  ///< relative to the heading
   const std::vector<double>* ranges_m = nullptr;
   double max_range_m = 0.0;
@@ -59,7 +61,7 @@ class ActiveLocalizeServer {
   void Choose(const LocalizationUpdate& u, const RunInput& in);
   void CancelNavigation();
   void StopMotion();
-  void Finish(bool success, const std::string& reason, const LocalizationUpdate& u);
+  void Finish(bool success, std::string reason, const LocalizationUpdate& u);
   RunInput InputOf(const LocalizationUpdate& u) const;
 
   NodeParameters params_;

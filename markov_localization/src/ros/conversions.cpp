@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "markov_localization/sticky_estimate.h"
 #include "spott_map/ros/conversions.h"
 
 namespace markov_localization::ros_conversions {
@@ -67,11 +68,7 @@ geometry_msgs::PoseArray ToPoseArray(const std::vector<Mode>& modes, const std::
   return pa;
 }
 
-Pose2 MapToOdom(const Pose2& e, const Pose2& o) {
-  const double yaw = std::remainder(e.yaw - o.yaw, 2.0 * M_PI);
-  const double c = std::cos(yaw), s = std::sin(yaw);
-  return Pose2{e.x - (c * o.x - s * o.y), e.y - (s * o.x + c * o.y), yaw};
-}
+Pose2 MapToOdom(const Pose2& e, const Pose2& o) { return MapToOdomOf(e, o); }
 
 geometry_msgs::TransformStamped ToTransform(const Pose2& t, const std::string& map_frame,
                                             const std::string& odom_frame, const ros::Time& stamp) {

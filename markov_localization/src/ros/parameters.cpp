@@ -141,11 +141,18 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Double("active_run/estimate_jump_m", run.estimate_jump_m);
   r.Degrees("active_run/estimate_jump_deg", run.estimate_jump_rad);
   r.Double("active_run/target_timeout_s", run.target_timeout_s);
+  r.Double("active_run/confirm_s", run.confirm_s);
   r.Double("active_run/position_tolerance_m", p.position_tolerance_m);
+  r.Double("active_run/target_clearance_m", p.target_clearance_m);
+  r.Double("active_run/target_search_m", p.target_search_m);
   r.String("active_run/navigate_action", p.navigate_action);
   r.String("active_run/global_goal_topic", p.global_goal_topic);
   r.String("active_run/cmd_vel_topic", p.cmd_vel_topic);
   r.Int("active_run/seed", p.seed);
+
+  r.Double("estimate/switch_ratio", p.sticky.switch_ratio);
+  r.Double("estimate/match_radius_m", p.sticky.match_radius_m);
+  r.Degrees("estimate/match_deg", p.sticky.match_rad);
 
   auto& w = p.wander;
   r.Double("wander/max_speed_mps", w.max_speed_mps);
@@ -184,6 +191,13 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   AddCore(v, ValidateParameters(w), "wander");
   if (!(p.position_tolerance_m > 0.0))
     v.push_back("~active_run/position_tolerance_m must be > 0 m");
+  if (!(p.target_clearance_m >= 0.0 && p.target_clearance_m < 2.0))
+    v.push_back("~active_run/target_clearance_m must be in [0, 2) m");
+  if (!(p.target_search_m >= 0.0 && p.target_search_m <= 5.0))
+    v.push_back("~active_run/target_search_m must be in [0, 5] m");
+  if (!(p.sticky.switch_ratio >= 1.0)) v.push_back("~estimate/switch_ratio must be >= 1");
+  if (!(p.sticky.match_radius_m > 0.0)) v.push_back("~estimate/match_radius_m must be > 0 m");
+  if (!(p.sticky.match_rad > 0.0)) v.push_back("~estimate/match_deg must be > 0");
   if (p.navigate_action.empty()) v.push_back("~active_run/navigate_action must not be empty");
   if (p.cmd_vel_topic.empty()) v.push_back("~active_run/cmd_vel_topic must not be empty");
   if (p.seed < 0) v.push_back("~active_run/seed must be >= 0");

@@ -15,6 +15,7 @@
 #include "markov_localization/map_model.h"
 #include "markov_localization/markov_grid.h"
 #include "markov_localization/sensor_model.h"
+#include "markov_localization/sticky_estimate.h"
 #include "markov_localization/wander.h"
 
 namespace markov_localization {
@@ -42,6 +43,11 @@ struct NodeParameters {
   ActiveRunParameters run;
   WanderParameters wander;
   double position_tolerance_m = 0.4;  ///< Navigate goal's success radius (m), > 0.
+  /// a* is moved to the nearest point this far from obstacles (the planner's padding), within
+  /// target_search_m (m).
+  double target_clearance_m = 0.33;
+  double target_search_m = 0.75;
+  StickyEstimateParameters sticky;
   std::string navigate_action = "harmonic_planner/navigate";
   std::string global_goal_topic = "global_goal";  ///< "" = do not publish a global goal.
   std::string cmd_vel_topic = "cmd_vel";          ///< The random motion's commands.
