@@ -13,9 +13,13 @@
 #include <spott_msgs/NavigateAction.h>
 #include <tf2/utils.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
+#include <string>
 
 namespace {
 
@@ -188,6 +192,25 @@ TEST_F(ActiveLocalizeTest, RandomMotionThenTargetsToNavigationThenPreempted) {
   std::lock_guard<std::mutex> lock(l_.mutex);
   EXPECT_LT(std::abs(l_.truth.twist.twist.linear.x), 0.02);
   EXPECT_NE(l_.status.mode, spott_msgs::LocalizationStatus::ACTIVE);
+}
+
+// Bad parameters: the node refuses to start (exit 1) and names each one (ROS_FATAL).
+TEST(MarkovLocalizationNode, BadParametersAreNamedAndTheNodeExits) {
+  const std::string cmd =
+      "rosrun markov_localization markov_localization_node __name:=bad_params "
+      "_world_file:=/nonexistent.yaml _map/resolution_m:=-1 _grid/threshold_fraction:=2.0 "
+      "_sensor/beams:=true _no_such_key:=1 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  char buffer[512];
+  while (fgets(buffer, sizeof(buffer), pipe)) out += buffer;
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << out;
+  EXPECT_NE(out.find("~map/resolution_m must be in (0, 2] m"), std::string::npos) << out;
+  EXPECT_NE(out.find("~grid/threshold_fraction must be in (0, 1)"), std::string::npos) << out;
+  EXPECT_NE(out.find("~sensor/beams must be an integer"), std::string::npos) << out;
+  EXPECT_NE(out.find("~no_such_key is not a parameter of this node"), std::string::npos) << out;
 }
 
 }  // namespace
