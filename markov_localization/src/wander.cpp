@@ -29,6 +29,7 @@ std::vector<std::string> ValidateParameters(const WanderParameters& p) {
   if (!(p.free_range_m > 0.0)) errors.push_back("free_range_m must be > 0 m");
   if (!(p.front_half_angle_rad > 0.0 && p.front_half_angle_rad < M_PI / 2))
     errors.push_back("front_half_angle_rad must be in (0, pi/2)");
+  if (p.stall_steps < 1) errors.push_back("stall_steps must be >= 1");
   return errors;
 }
 
@@ -43,17 +44,19 @@ Wanderer::Wanderer(const WanderParameters& params, std::uint64_t seed)
 }
 
 void Wanderer::DrawHeading(const std::vector<double>& angles, const std::vector<double>& ranges,
-                           double odom_yaw) {
+                           double odom_yaw, bool behind) {
   // Free directions, weighted by how far they are open; none free: the most open one.
   // Only the most open directions count (in a corridor: along it, not diagonally into a wall).
   std::vector<double> weights(angles.size(), 0.0);
   bool any = false;
   std::size_t best = 0;
+  // `behind`: only directions more than 90 degrees from the robot's heading count.
+  auto allowed = [&](std::size_t b) { return !behind || std::abs(Wrap(angles[b])) > M_PI / 2; };
   for (std::size_t b = 0; b < angles.size(); ++b)
-    if (ranges[b] > ranges[best]) best = b;
+    if (allowed(b) && (!allowed(best) || ranges[b] > ranges[best])) best = b;
   const double open = std::max(params_.free_range_m, 0.8 * ranges[best]);
   for (std::size_t b = 0; b < angles.size(); ++b) {
-    if (ranges[b] >= open) {
+    if (allowed(b) && ranges[b] >= open) {
       weights[b] = ranges[b];
       any = true;
     }
@@ -64,6 +67,23 @@ void Wanderer::DrawHeading(const std::vector<double>& angles, const std::vector<
     pick = draw(rng_);
   }
   heading_ = Wrap(odom_yaw + angles[pick]);
+}
+
+WanderCommand Wanderer::Step(const std::vector<double>& angles_rad,
+                             const std::vector<double>& ranges_m, double max_range_m, double odom_x,
+                             double odom_y, double odom_yaw) {
+  if (stalled_ < 0 || std::hypot(odom_x - anchor_x_, odom_y - anchor_y_) > 0.3) {
+    anchor_x_ = odom_x;
+    anchor_y_ = odom_y;
+    stalled_ = 0;
+  } else if (++stalled_ >= params_.stall_steps && !angles_rad.empty() &&
+             angles_rad.size() == ranges_m.size()) {
+    std::vector<double> r(ranges_m.size());
+    for (std::size_t b = 0; b < r.size(); ++b) r[b] = Reading(ranges_m[b], max_range_m);
+    DrawHeading(angles_rad, r, odom_yaw, /*behind=*/true);
+    stalled_ = 0;
+  }
+  return Step(angles_rad, ranges_m, max_range_m, odom_yaw);
 }
 
 WanderCommand Wanderer::Step(const std::vector<double>& angles_rad,

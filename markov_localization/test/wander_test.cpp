@@ -82,6 +82,28 @@ TEST(Wander, AWallAheadStopsTheRobotAndTurnsItToAFreeDirection) {
   EXPECT_NEAR(std::abs(c.angular_rps), WanderParameters{}.max_turn_rps, 1e-9);
 }
 
+TEST(Wander, AfterStallStepsWithoutProgressItTurnsBack) {
+  const auto angles = SonarRingAngles(24);
+  std::vector<double> ranges(24, 0.6);
+  ranges[0] = 5.0;   // ahead: the most open (a doorway it cannot pass)
+  ranges[12] = 3.9;  // behind: open, less so
+  ranges[13] = 3.5;
+  WanderParameters p;
+  p.stall_steps = 10;
+  Wanderer wander(p, 3);
+  // The first ring sets the place; nine more without progress: still ahead.
+  for (int i = 0; i < 10; ++i) wander.Step(angles, ranges, 5.0, 1.0, 2.0, 0.0);
+  ASSERT_TRUE(wander.heading());
+  EXPECT_NEAR(*wander.heading(), 0.0, 0.3);
+  wander.Step(angles, ranges, 5.0, 1.05, 2.0, 0.0);  // 5 cm: no progress, the tenth
+  ASSERT_TRUE(wander.heading());
+  EXPECT_GT(std::abs(*wander.heading()), M_PI / 2);  // a direction behind
+  // Progress resets the count.
+  Wanderer moving(p, 3);
+  for (int i = 0; i < 30; ++i) moving.Step(angles, ranges, 5.0, 0.35 * i, 2.0, 0.0);
+  EXPECT_NEAR(*moving.heading(), 0.0, 0.3);
+}
+
 TEST(Wander, BadParametersAreNamed) {
   WanderParameters p;
   p.slow_distance_m = 0.2;  // below stop_distance_m

@@ -24,6 +24,9 @@ struct WanderParameters {
   double side_distance_m = 0.6;        ///< Side readings closer than this push the robot away (m).
   double free_range_m = 2.0;           ///< A direction whose reading reaches this is free (m), > 0.
   double front_half_angle_rad = 0.35;  ///< Readings within this of the heading are "ahead".
+  /// No 0.3 m of progress in this many steps (rings) means stuck (e.g. turning in a doorway):
+  /// a new heading is drawn among the free directions behind the robot. >= 1.
+  int stall_steps = 60;
 };
 
 std::vector<std::string> ValidateParameters(const WanderParameters& params);
@@ -43,17 +46,22 @@ class Wanderer {
   /// `odom_yaw` the robot's heading in the odometry frame.
   WanderCommand Step(const std::vector<double>& angles_rad, const std::vector<double>& ranges_m,
                      double max_range_m, double odom_yaw);
+  /// The same, with the odometry position (m) for the stall detection.
+  WanderCommand Step(const std::vector<double>& angles_rad, const std::vector<double>& ranges_m,
+                     double max_range_m, double odom_x, double odom_y, double odom_yaw);
 
   /// The heading being followed (odometry frame), once one was drawn.
   std::optional<double> heading() const { return heading_; }
 
  private:
   void DrawHeading(const std::vector<double>& angles, const std::vector<double>& ranges,
-                   double odom_yaw);
+                   double odom_yaw, bool behind = false);
 
   WanderParameters params_;
   std::mt19937_64 rng_;
   std::optional<double> heading_;
+  double anchor_x_ = 0.0, anchor_y_ = 0.0;
+  int stalled_ = -1;  ///< Steps without progress; < 0: no position yet.
 };
 
 }  // namespace markov_localization

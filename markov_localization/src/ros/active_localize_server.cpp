@@ -226,8 +226,8 @@ void ActiveLocalizeServer::Update(const LocalizationUpdate& u) {
   }
   switch (run_->Step(in)) {
     case RunAction::kWander: {
-      const WanderCommand c =
-          wanderer_->Step(*u.beam_angles_rad, *u.ranges_m, u.max_range_m, u.odom.yaw);
+      const WanderCommand c = wanderer_->Step(*u.beam_angles_rad, *u.ranges_m, u.max_range_m,
+                                              u.odom.x, u.odom.y, u.odom.yaw);
       geometry_msgs::Twist t;
       t.linear.x = c.linear_mps;
       t.angular.z = c.angular_rps;

@@ -163,6 +163,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Double("wander/side_distance_m", w.side_distance_m);
   r.Double("wander/free_range_m", w.free_range_m);
   r.Degrees("wander/front_half_angle_deg", w.front_half_angle_rad);
+  r.Int("wander/stall_steps", w.stall_steps);
   r.CheckUnknown();
 
   if (p.world_file.empty()) v.push_back("~world_file must name a world file");
