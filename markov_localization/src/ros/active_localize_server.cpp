@@ -120,6 +120,13 @@ void ActiveLocalizeServer::Choose(const LocalizationUpdate& u, const RunInput& i
     Finish(false, "navigation action '" + params_.navigate_action + "' is not served", u);
     return;
   }
+  if (u.modes->empty()) {
+    Finish(false,
+           "the belief has no modes to choose a target from (still nearly uniform after the "
+           "random motion)",
+           u);
+    return;
+  }
   const ActiveChoice choice = u.localizer->Choose(*u.modes);
   // a* is relative to the robot; the planner drives by tf, i.e. by the published estimate. The
   // point sent is the nearest one outside the planner's padding.
