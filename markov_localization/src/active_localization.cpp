@@ -1,6 +1,7 @@
 #include "markov_localization/active_localization.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -111,15 +112,33 @@ ActiveChoice ActiveLocalizer::Choose(const std::vector<Mode>& all_modes) const {
 
   // Eq. (6) over the modes: if mode m is true, the robot at a senses the ranges expected at
   // f_a(m) (heading: the direction of travel); the posterior over the modes follows eq. (2)
-  // with P(s | l') by the table at f_a(l') for every other mode l'. E_a[H] is the
-  // mode-weighted entropy of that posterior.
+  // with P(s | l') for every other mode l'. E_a[H] is the mode-weighted entropy of that
+  // posterior. The point f_a(l') is continuous: P(s | l') is the bilinear mixture over the four
+  // state cells around it (rounding it to one cell is not equivariant under the building's
+  // symmetries: half-turn twins whose points fall on a cell border were rounded to cells that
+  // are no twins, which made them look distinguishable everywhere, E[H] ~ 0 in a symmetric
+  // corridor). Likewise the heading: a mixture over the heading bins within two bins of
+  // yaw + travel, weighted by the mode's heading spread (at least half a bin), so that twins
+  // whose mean headings differ from an exact half turn by a fraction of their spread do not
+  // look distinguishable. The true scan is the one expected at the nearest cell and bin.
   out.expected_entropy_grid.assign(cells, std::numeric_limits<double>::quiet_NaN());
   const int nt = sensor_.num_headings();
   const double heading_res = 2.0 * M_PI / nt;
   const std::size_t M = modes.size();
-  std::vector<long> cell_of(M);
+  struct Footprint {
+    long cell[4];
+    double weight[4];
+    int count = 0;
+    long nearest = -1;
+  };
+  std::vector<Footprint> foot(M);
   std::vector<int> dir_of(M);
-  std::vector<double> logl(M * M);
+  constexpr int kSpread = 2;  // heading bins on each side
+  std::vector<std::array<double, 2 * kSpread + 1>> dir_weight(M);
+  std::vector<int> dir_centre(M);
+  std::vector<double> logl(M);
+  std::vector<double> cell_ll(4 * (2 * 2 + 1));
+  const double res = map_.resolution();
   double best = inf;
   std::size_t best_a = origin;
   for (int j = 0; j < N; ++j) {
@@ -129,32 +148,77 @@ ActiveChoice ActiveLocalizer::Choose(const std::vector<Mode>& all_modes) const {
         continue;
       const double travel = (i == n && j == n) ? 0.0 : std::atan2(rel(j), rel(i));
       for (std::size_t m = 0; m < M; ++m) {
-        const auto cell = map_.CellOf(TargetInWorld(modes[m].mean, rel(i), rel(j)));
-        cell_of[m] = free_under[a * M + m] && cell
-                         ? static_cast<long>(map_.Index(cell->first, cell->second))
-                         : -1;
-        int k = static_cast<int>(std::lround((modes[m].mean.yaw + travel) / heading_res)) % nt;
-        dir_of[m] = k < 0 ? k + nt : k;
+        Footprint& f = foot[m];
+        f.count = 0;
+        f.nearest = -1;
+        if (free_under[a * M + m]) {
+          const Vec2 p = TargetInWorld(modes[m].mean, rel(i), rel(j));
+          const double fx = (p.x() - map_.origin().x()) / res - 0.5;
+          const double fy = (p.y() - map_.origin().y()) / res - 0.5;
+          const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+          const double tx = fx - x0, ty = fy - y0;
+          double total = 0.0, heaviest = -1.0;
+          for (int k = 0; k < 4; ++k) {
+            const int cx = x0 + (k & 1), cy = y0 + (k >> 1);
+            const double wgt = ((k & 1) ? tx : 1.0 - tx) * ((k >> 1) ? ty : 1.0 - ty);
+            if (wgt <= 0.0 || !map_.Contains(cx, cy) || !map_.IsState(cx, cy)) continue;
+            f.cell[f.count] = static_cast<long>(map_.Index(cx, cy));
+            f.weight[f.count] = wgt;
+            total += wgt;
+            if (wgt > heaviest) {
+              heaviest = wgt;
+              f.nearest = f.cell[f.count];
+            }
+            ++f.count;
+          }
+          for (int k = 0; k < f.count; ++k) f.weight[k] /= total;
+        }
+        // floor(x + 0.5), not lround: rounding must not depend on the sign (twins differ by pi).
+        const double d = (modes[m].mean.yaw + travel) / heading_res;
+        const int k0 = static_cast<int>(std::floor(d + 0.5));
+        dir_of[m] = ((k0 % nt) + nt) % nt;
+        dir_centre[m] = dir_of[m];
+        const double sigma =
+            std::max(0.5, std::sqrt(std::max(0.0, modes[m].covariance(2, 2))) / heading_res);
+        double total = 0.0;
+        for (int q = -kSpread; q <= kSpread; ++q) {
+          const double off = (k0 + q) - d;
+          dir_weight[m][q + kSpread] = std::exp(-0.5 * off * off / (sigma * sigma));
+          total += dir_weight[m][q + kSpread];
+        }
+        for (double& v : dir_weight[m]) v /= total;
       }
       double expected_h = 0.0, weight = 0.0;
       for (std::size_t t = 0; t < M; ++t) {  // the true mode
-        if (cell_of[t] < 0) continue;
+        if (foot[t].nearest < 0) continue;
         double mx = -inf;
         for (std::size_t m = 0; m < M; ++m) {
-          if (cell_of[m] < 0) {
+          if (foot[m].count == 0) {
             logl[m] = -inf;
             continue;
           }
-          double ll = std::log(w[m]);
-          for (int b = 0; b < sensor_.num_beams(); ++b) {
-            const int z =
-                sensor_.ExpectedBin((dir_of[t] + sensor_.beam_offset(b)) % nt, cell_of[t]);
-            const int e =
-                sensor_.ExpectedBin((dir_of[m] + sensor_.beam_offset(b)) % nt, cell_of[m]);
-            ll += std::log(sensor_.Likelihood(e, z));
+          // log sum_{c, q} w_c w_q prod_b P(z_b | expected at cell c, heading bin q)
+          double cmx = -inf;
+          int h = 0;
+          for (int c = 0; c < foot[m].count; ++c) {
+            for (int q = -kSpread; q <= kSpread; ++q, ++h) {
+              const int dir = ((dir_centre[m] + q) % nt + nt) % nt;
+              double ll = std::log(foot[m].weight[c] * dir_weight[m][q + kSpread]);
+              for (int b = 0; b < sensor_.num_beams(); ++b) {
+                const int z =
+                    sensor_.ExpectedBin((dir_of[t] + sensor_.beam_offset(b)) % nt, foot[t].nearest);
+                const int e =
+                    sensor_.ExpectedBin((dir + sensor_.beam_offset(b)) % nt, foot[m].cell[c]);
+                ll += std::log(sensor_.Likelihood(e, z));
+              }
+              cell_ll[h] = ll;
+              cmx = std::max(cmx, ll);
+            }
           }
-          logl[m] = ll;
-          mx = std::max(mx, ll);
+          double sum = 0.0;
+          for (int c = 0; c < h; ++c) sum += std::exp(cell_ll[c] - cmx);
+          logl[m] = std::log(w[m]) + cmx + std::log(sum);
+          mx = std::max(mx, logl[m]);
         }
         double z = 0.0;
         for (std::size_t m = 0; m < M; ++m)

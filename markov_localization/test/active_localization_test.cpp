@@ -5,6 +5,7 @@
 
 #include <iostream>
 #include <map>
+#include <tuple>
 
 #include "markov_localization/active_localization.h"
 #include "test_helpers.h"
@@ -110,6 +111,46 @@ TEST(ActiveLocalization, InvalidParametersAreNamed) {
   ASSERT_EQ(errors.size(), 2u);
   EXPECT_NE(errors[0].find("alpha"), std::string::npos);
   EXPECT_NE(errors[1].find("max_modes"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace markov_localization
+
+namespace markov_localization {
+namespace {
+
+// Half-turn twins anywhere in the corridor (not on cell centres, headings not on the heading
+// grid, or off an exact half turn by a fraction of their spread) must look alike from every
+// corridor target: the choice may not invent information from rounding.
+TEST(ActiveLocalization, TwinsOffTheGridStayIndistinguishableInTheCorridor) {
+  BonnActive bonn;
+  ActiveLocalizer localizer(bonn.map, *bonn.sensor, ActiveLocalizationParameters{});
+  const double sp = ActiveLocalizationParameters{}.target_spacing_m;
+  for (const auto& [x, y, yaw, twin_off] :
+       {std::tuple{21.5, 10.0, M_PI, 0.0}, std::tuple{20.37, 9.83, 3.0, 0.0},
+        std::tuple{22.1, 10.2, M_PI, 0.04}}) {
+    Mode truth = MakeMode(x, y, yaw, 0.5);
+    Mode twin = MakeMode(27.0 - x, 20.0 - y, yaw + M_PI + twin_off, 0.5);
+    truth.covariance(2, 2) = twin.covariance(2, 2) = std::pow(0.08, 2);  // 4.6 degrees
+    const ActiveChoice choice = localizer.Choose({truth, twin});
+    ASSERT_TRUE(choice.found);
+    const int N = choice.size, n = N / 2;
+    double lowest = 1.0;
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i) {
+        const double e = choice.expected_entropy_grid[static_cast<std::size_t>(j) * N + i];
+        const Vec2 p = TargetInWorld(truth.mean, (i - n) * sp, (j - n) * sp);
+        // Corridor targets at least 0.6 m from its walls and 2 m from any door.
+        if (std::isnan(e) || p.y() < 9.6 || p.y() > 10.4 || p.x() < 2 || p.x() > 25) continue;
+        bool near_door = false;
+        for (double dx : {4.5, 7.5, 9.0, 9.5, 12.5, 14.5, 17.5, 18.0, 19.5, 22.5})
+          near_door = near_door || std::abs(p.x() - dx) < 2.0;
+        if (!near_door) lowest = std::min(lowest, e);
+      }
+    // log 2 = 0.69 for exact twins; the rounding to one cell and one heading bin gave ~0.
+    EXPECT_GT(lowest, twin_off == 0.0 ? 0.65 : 0.5)
+        << "twins at (" << x << ", " << y << ") off " << twin_off;
+  }
 }
 
 }  // namespace

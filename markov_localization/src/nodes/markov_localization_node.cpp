@@ -1,16 +1,17 @@
-// Thin ROS layer over the markov_localization core: reads and validates parameters, builds the
-// map from a world file, turns /odom into motions and each sonar ring into a sensor update, and
-// publishes tf map->odom (REP-105), the pose, the modes and the status. /initialpose sets a
-// Gaussian belief; the global_localization service a uniform one.
+// Thin ROS layer over the markov_localization core: reads and validates every parameter
+// (ros/parameters.cpp), builds the map from a world file, turns /odom into motions and each
+// range ring into a sensor update, and publishes tf map->odom (REP-105), the pose, the modes,
+// the status and (throttled) the belief's marginal for rviz. /initialpose sets a Gaussian
+// belief; the global_localization service a uniform one; the active_localize action drives to
+// the target points of active localization (ros/active_localize_server.cpp).
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
-#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/RangeRing.h>
 #include <std_srvs/Empty.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -19,74 +20,18 @@
 #include <memory>
 #include <optional>
 
+#include "../ros/active_localize_server.h"
 #include "markov_localization/certainty.h"
 #include "markov_localization/markov_grid.h"
+#include "markov_localization/ros/conversions.h"
+#include "markov_localization/ros/parameters.h"
+#include "markov_localization/sticky_estimate.h"
 #include "spott_map/world_loader.h"
 
 namespace ml = markov_localization;
+namespace conv = markov_localization::ros_conversions;
 
 namespace {
-
-struct NodeParameters {
-  std::string world_file;
-  std::string ring_topic = "sonar";
-  double transform_tolerance_s = 0.2;
-  double initial_sigma_xy_m = 0.3;
-  double initial_sigma_theta_rad = 0.2;
-  bool start_uniform = true;
-  bool initial_pose_from_world = false;  // start at the world file's robot_start
-  ml::MapModelParameters map;
-  ml::MarkovGridParameters grid;
-  ml::SensorModelParameters sensor;
-  ml::CertaintyParameters certainty;
-  ml::ModeParameters modes;
-  double angular_resolution_deg = 2.0;
-};
-
-std::vector<std::string> Read(ros::NodeHandle& pnh, NodeParameters& p) {
-  std::vector<std::string> errors;
-  pnh.param("world_file", p.world_file, p.world_file);
-  if (p.world_file.empty()) errors.push_back("world_file must name a world file");
-  pnh.param("ring_topic", p.ring_topic, p.ring_topic);
-  pnh.param("transform_tolerance_s", p.transform_tolerance_s, p.transform_tolerance_s);
-  if (!(p.transform_tolerance_s >= 0)) errors.push_back("transform_tolerance_s must be >= 0");
-  pnh.param("start_uniform", p.start_uniform, p.start_uniform);
-  pnh.param("initial_pose_from_world", p.initial_pose_from_world, p.initial_pose_from_world);
-  pnh.param("map/resolution_m", p.map.resolution_m, p.map.resolution_m);
-  pnh.param("map/state_clearance_m", p.map.state_clearance_m, p.map.state_clearance_m);
-  pnh.param("grid/angular_resolution_deg", p.angular_resolution_deg, p.angular_resolution_deg);
-  p.grid.angular_resolution_rad = p.angular_resolution_deg * M_PI / 180.0;
-  pnh.param("grid/selective_update", p.grid.selective_update, p.grid.selective_update);
-  pnh.param("grid/threshold_fraction", p.grid.threshold_fraction, p.grid.threshold_fraction);
-  pnh.param("motion/sigma_xy_per_m", p.grid.motion.sigma_xy_per_m, p.grid.motion.sigma_xy_per_m);
-  pnh.param("motion/sigma_theta_per_rad", p.grid.motion.sigma_theta_per_rad,
-            p.grid.motion.sigma_theta_per_rad);
-  pnh.param("sensor/sigma_hit_m", p.sensor.sigma_hit_m, p.sensor.sigma_hit_m);
-  pnh.param("sensor/range_bin_m", p.sensor.range_bin_m, p.sensor.range_bin_m);
-  // Sonar physics: the cone comes from the ring message unless set; specular reflection.
-  p.sensor.critical_angle_rad = 0.35;
-  pnh.param("sensor/critical_angle_rad", p.sensor.critical_angle_rad, p.sensor.critical_angle_rad);
-  p.sensor.beam_width_rad = -1.0;
-  pnh.param("sensor/beam_width_rad", p.sensor.beam_width_rad, p.sensor.beam_width_rad);
-  pnh.param("certainty/threshold", p.certainty.threshold, p.certainty.threshold);
-  auto& lost = p.grid.lost;
-  pnh.param("lost/enabled", lost.enabled, lost.enabled);
-  pnh.param("lost/fast_rate", lost.fast_rate, lost.fast_rate);
-  pnh.param("lost/slow_rate", lost.slow_rate, lost.slow_rate);
-  pnh.param("lost/lost_ratio", lost.lost_ratio, lost.lost_ratio);
-  pnh.param("lost/scan_lost_ratio", lost.scan_lost_ratio, lost.scan_lost_ratio);
-  pnh.param("lost/hold_scans", lost.hold_scans, lost.hold_scans);
-  pnh.param("lost/relocalization_mass", lost.relocalization_mass, lost.relocalization_mass);
-  for (const auto& e : ml::ValidateParameters(p.map)) errors.push_back("map/" + e);
-  for (auto e : ml::ValidateParameters(p.grid)) {
-    // The core names nested parameters "motion.x" / "lost.x"; the node's are "motion/x".
-    const bool nested = e.rfind("motion.", 0) == 0 || e.rfind("lost.", 0) == 0;
-    if (nested) e[e.find('.')] = '/';
-    errors.push_back(nested ? e : "grid/" + e);
-  }
-  for (const auto& e : ml::ValidateParameters(p.certainty)) errors.push_back("certainty/" + e);
-  return errors;
-}
 
 spott_map::Pose2 PoseOf(const geometry_msgs::Pose& pose) {
   return spott_map::Pose2{pose.position.x, pose.position.y, tf2::getYaw(pose.orientation)};
@@ -94,17 +39,20 @@ spott_map::Pose2 PoseOf(const geometry_msgs::Pose& pose) {
 
 class LocalizationNode {
  public:
-  LocalizationNode(ros::NodeHandle& nh, const NodeParameters& params, spott_map::World world)
+  LocalizationNode(ros::NodeHandle& nh, const ml::NodeParameters& params, spott_map::World world)
       : params_(params) {
     map_ = ml::MapModel::FromWorld(world, params.map);
     if (params.initial_pose_from_world) pending_initial_ = world.robot_start;
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 1, true);
     status_pub_ = nh.advertise<spott_msgs::LocalizationStatus>("localization_status", 1, true);
     modes_pub_ = nh.advertise<geometry_msgs::PoseArray>("localization_modes", 1, true);
+    belief_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("belief", 1, true);
     odom_sub_ = nh.subscribe("odom", 50, &LocalizationNode::OnOdom, this);
     ring_sub_ = nh.subscribe(params.ring_topic, 5, &LocalizationNode::OnRing, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &LocalizationNode::OnInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
+    sticky_ = ml::StickyEstimate(params_.sticky);
+    action_ = std::make_unique<ml::ActiveLocalizeServer>(nh, params_, [this] { SetUniform(); });
     ROS_INFO("markov_localization: %dx%d cells of %.2f m, %zu state cells", map_.width(),
              map_.height(), map_.resolution(), map_.NumStateCells());
   }
@@ -119,48 +67,71 @@ class LocalizationNode {
     }
     grid_->SetGaussian(PoseOf(msg.pose.pose), params_.initial_sigma_xy_m,
                        params_.initial_sigma_theta_rad);
+    sticky_.Reset();
     ROS_INFO("markov_localization: initial pose set");
   }
 
-  bool OnGlobal(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  void SetUniform() {
     if (grid_) grid_->SetUniform();
-    global_ = true;
+    sticky_.Reset();
+    pending_initial_.reset();
     ROS_INFO("markov_localization: global localization (uniform belief)");
+  }
+
+  bool OnGlobal(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+    SetUniform();
     return true;
   }
 
-  void BuildModels(const spott_msgs::RangeRing& ring) {
-    params_.sensor.beam_angles_rad.clear();
-    double offset = 0.0;
-    for (const auto& m : ring.mounts) {
-      params_.sensor.beam_angles_rad.push_back(m.theta);
-      offset += std::hypot(m.x, m.y);
+  // The sensor model needs the ring's geometry: built from the first ring.
+  bool BuildModels(const spott_msgs::RangeRing& ring) {
+    if (params_.ring_geometry ? ring.mounts.size() != ring.ranges.size() || ring.ranges.empty()
+                              : static_cast<int>(ring.ranges.size()) != params_.beams) {
+      ROS_ERROR_THROTTLE(5,
+                         "markov_localization: ~sensor/beams is %d but the ring on '%s' has %zu "
+                         "readings and %zu mounts; rings ignored",
+                         params_.beams, params_.ring_topic.c_str(), ring.ranges.size(),
+                         ring.mounts.size());
+      return false;
     }
-    params_.sensor.sensor_offset_m = ring.mounts.empty() ? 0.0 : offset / ring.mounts.size();
-    params_.sensor.max_range_m = ring.max_range;
-    if (params_.sensor.beam_width_rad < 0) params_.sensor.beam_width_rad = ring.field_of_view;
+    auto& sp = params_.sensor;
+    if (params_.ring_geometry) {
+      sp.beam_angles_rad.clear();
+      double offset = 0.0;
+      for (const auto& m : ring.mounts) {
+        sp.beam_angles_rad.push_back(m.theta);
+        offset += std::hypot(m.x, m.y);
+      }
+      sp.sensor_offset_m = offset / ring.mounts.size();
+    }
+    if (ring.max_range > 0 && ring.max_range < sp.max_range_m) sp.max_range_m = ring.max_range;
+    if (sp.beam_width_rad < 0.0) sp.beam_width_rad = std::max(0.0f, ring.field_of_view);
     if (ring.radiation_type == spott_msgs::RangeRing::INFRARED)
-      params_.sensor.critical_angle_rad = M_PI / 2;  // infrared scatters off every surface
+      sp.critical_angle_rad = M_PI / 2;  // infrared scatters off every surface
     const int nt = static_cast<int>(std::lround(2 * M_PI / params_.grid.angular_resolution_rad));
-    sensor_ = std::make_unique<ml::SensorModel>(map_, nt, params_.sensor);
-    grid_ = std::make_unique<ml::MarkovGrid>(map_, *sensor_, params_.grid);
+    try {
+      sensor_ = std::make_unique<ml::SensorModel>(map_, nt, sp);
+      grid_ = std::make_unique<ml::MarkovGrid>(map_, *sensor_, params_.grid);
+      localizer_ = std::make_unique<ml::ActiveLocalizer>(map_, *sensor_, params_.active);
+    } catch (const std::exception& e) {
+      ROS_ERROR_THROTTLE(5, "markov_localization: cannot use the ring: %s", e.what());
+      sensor_.reset();
+      grid_.reset();
+      return false;
+    }
     if (pending_initial_ && !params_.start_uniform) {
       grid_->SetGaussian(*pending_initial_, params_.initial_sigma_xy_m,
                          params_.initial_sigma_theta_rad);
-      global_ = false;
     }
-    ROS_INFO("markov_localization: sensor model for %zu beams built", ring.mounts.size());
+    ROS_INFO("markov_localization: sensor model for %zu beams (offset %.2f m, max range %.1f m)",
+             sp.beam_angles_rad.size(), sp.sensor_offset_m, sp.max_range_m);
+    return true;
   }
 
   void OnRing(const spott_msgs::RangeRing& ring) {
     if (!odom_) return;
     if (!grid_) {
-      try {
-        BuildModels(ring);
-      } catch (const std::exception& e) {
-        ROS_ERROR_THROTTLE(5, "markov_localization: cannot use ring: %s", e.what());
-        return;
-      }
+      if (!BuildModels(ring)) return;
       last_odom_ = odom_;
     }
     if (static_cast<int>(ring.ranges.size()) != sensor_->num_beams()) {
@@ -172,111 +143,107 @@ class LocalizationNode {
     const ml::Motion motion = ml::MotionBetween(*last_odom_, *odom_);
     if (std::hypot(motion.dx, motion.dy) > 1e-4 || std::abs(motion.dtheta) > 1e-4)
       grid_->MotionUpdate(motion);
+    odom_distance_m_ += std::hypot(motion.dx, motion.dy);
     last_odom_ = odom_;
-    std::vector<double> ranges(ring.ranges.begin(), ring.ranges.end());
-    const auto stats = grid_->SensorUpdate(ranges);
-    ROS_DEBUG("markov_localization: fit per beam %.3f (fast %.3f, slow %.3f)",
-              std::exp(stats.log_likelihood_per_beam), grid_->lost_detector().fast(),
-              grid_->lost_detector().slow());
+    ranges_.assign(ring.ranges.begin(), ring.ranges.end());
+    const auto stats = grid_->SensorUpdate(ranges_);
     if (stats.lost_detected) {
-      ROS_WARN(
-          "markov_localization: the scans no longer fit the belief (fit %.2f of the usual): "
-          "lost; relocalizing",
-          grid_->lost_detector().fast() / grid_->lost_detector().slow());
-      global_ = true;
+      ROS_WARN("markov_localization: the scans no longer fit the belief: lost; relocalizing");
+      sticky_.Reset();
     }
     const double compute_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Publish(ring.header.stamp, stats, compute_s);
+    Publish(ring, stats, compute_s);
   }
 
-  void Publish(const ros::Time& stamp, const ml::SensorUpdateStats& stats, double compute_s) {
-    // The entropy needs a pass over every state: once a second at the ring rate of robot_sim.
-    const bool with_entropy = rings_++ % 10 == 0;
-    const auto summary = ml::Summarize(*grid_, params_.certainty, params_.modes, with_entropy);
-    if (!std::isnan(summary.entropy)) entropy_ = summary.entropy;
+  void Publish(const spott_msgs::RangeRing& ring, const ml::SensorUpdateStats& stats,
+               double compute_s) {
+    const ros::Time& stamp = ring.header.stamp;
+    // Certainty and modes over the states above theta when few (tracking: well under a
+    // millisecond); the dense belief only at the belief grid's rate, for the grid and H_P.
+    const bool belief_due = !last_belief_ ||
+                            (stamp - *last_belief_).toSec() >= 1.0 / params_.belief_rate_hz ||
+                            stamp < *last_belief_;
+    const ml::BeliefSummary summary =
+        ml::Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
     const auto& c = summary.certainty;
     const auto& modes = summary.modes;
-    if (c.certainty > params_.certainty.threshold) global_ = false;
-    // map->odom = (map->base) * (odom->base)^-1
-    const auto& e = c.estimate;
-    const auto& o = *odom_;
-    const double dyaw = e.yaw - o.yaw;
-    const double tx = e.x - (std::cos(dyaw) * o.x - std::sin(dyaw) * o.y);
-    const double ty = e.y - (std::sin(dyaw) * o.x + std::cos(dyaw) * o.y);
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = stamp + ros::Duration(params_.transform_tolerance_s);
-    t.header.frame_id = "map";
-    t.child_frame_id = "odom";
-    t.transform.translation.x = tx;
-    t.transform.translation.y = ty;
-    tf2::Quaternion q;
-    q.setRPY(0, 0, dyaw);
-    t.transform.rotation.x = q.x();
-    t.transform.rotation.y = q.y();
-    t.transform.rotation.z = q.z();
-    t.transform.rotation.w = q.w();
-    tf_.sendTransform(t);
-
-    geometry_msgs::PoseWithCovarianceStamped pose;
-    pose.header.stamp = stamp;
-    pose.header.frame_id = "map";
-    pose.pose.pose.position.x = e.x;
-    pose.pose.pose.position.y = e.y;
-    q.setRPY(0, 0, e.yaw);
-    pose.pose.pose.orientation.x = q.x();
-    pose.pose.pose.orientation.y = q.y();
-    pose.pose.pose.orientation.z = q.z();
-    pose.pose.pose.orientation.w = q.w();
-    if (!modes.empty()) {
-      const auto& cov = modes.front().covariance;
-      const int idx[3] = {0, 1, 5};
-      for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) pose.pose.covariance[idx[r] * 6 + idx[k]] = cov(r, k);
+    // The published estimate stays with the mode it followed while twins swap the maximum.
+    bool switched = false;
+    const ml::Pose2 estimate = sticky_.Select(modes, c.estimate, *odom_, &switched);
+    if (switched)
+      ROS_INFO("markov_localization: estimate moves to (%.2f, %.2f, %.0f deg) (%zu modes)",
+               estimate.x, estimate.y, estimate.yaw * 180.0 / M_PI, modes.size());
+    const ml::Pose2 map_to_odom = conv::MapToOdom(estimate, *odom_);
+    tf_.sendTransform(conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame,
+                                        stamp + ros::Duration(params_.transform_tolerance_s)));
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& m : modes)
+      if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) <
+          params_.sticky.match_radius_m) {
+        cov = m.covariance;
+        break;
+      }
+    pose_pub_.publish(conv::ToPoseWithCovariance(estimate, cov, params_.map_frame, stamp));
+    modes_pub_.publish(conv::ToPoseArray(modes, params_.map_frame, stamp));
+    if (belief_due) {
+      const ml::BeliefSnapshot b = ml::BeliefSnapshot::Of(*grid_);
+      entropy_ = ml::Entropy(b);
+      belief_pub_.publish(conv::BeliefGrid(b, map_.state_mask(), params_.map_frame, stamp));
+      last_belief_ = stamp;
     }
-    pose_pub_.publish(pose);
+    const double entropy = entropy_;
 
-    geometry_msgs::PoseArray pa;
-    pa.header = pose.header;
-    for (const auto& m : modes) {
-      geometry_msgs::Pose p;
-      p.position.x = m.mean.x;
-      p.position.y = m.mean.y;
-      q.setRPY(0, 0, m.mean.yaw);
-      p.orientation.x = q.x();
-      p.orientation.y = q.y();
-      p.orientation.z = q.z();
-      p.orientation.w = q.w();
-      pa.poses.push_back(p);
-    }
-    modes_pub_.publish(pa);
+    ml::LocalizationUpdate u;
+    u.stamp = stamp;
+    u.certainty = c.certainty;
+    u.entropy = entropy;
+    u.estimate = estimate;
+    u.best = c.estimate;
+    u.map = &map_;
+    u.map_to_odom = map_to_odom;
+    u.odom = *odom_;
+    u.odom_distance_m = odom_distance_m_;
+    u.modes = &modes;
+    u.localizer = localizer_.get();
+    u.beam_angles_rad = &params_.sensor.beam_angles_rad;
+    u.ranges_m = &ranges_;
+    u.max_range_m = ring.max_range;
+    action_->Update(u);
 
+    const bool certain = c.certainty > params_.certainty.threshold;
     spott_msgs::LocalizationStatus s;
-    s.header = pose.header;
-    s.mode =
-        global_ ? spott_msgs::LocalizationStatus::GLOBAL : spott_msgs::LocalizationStatus::TRACKING;
+    s.header.frame_id = params_.map_frame;
+    s.header.stamp = stamp;
+    s.mode = action_->active() ? spott_msgs::LocalizationStatus::ACTIVE
+             : certain         ? spott_msgs::LocalizationStatus::TRACKING
+                               : spott_msgs::LocalizationStatus::GLOBAL;
     s.certainty = c.certainty;
-    s.entropy = entropy_;
+    s.entropy = entropy;
     s.max_entropy = std::log(static_cast<double>(grid_->NumStates()));
     s.num_modes = modes.size();
-    s.lost = c.certainty < params_.certainty.threshold || grid_->lost();
-    s.estimate.x = e.x;
-    s.estimate.y = e.y;
-    s.estimate.theta = e.yaw;
+    s.lost = !certain || grid_->lost();
+    s.estimate.x = c.estimate.x;
+    s.estimate.y = c.estimate.y;
+    s.estimate.theta = c.estimate.yaw;
     s.update_time = compute_s;
     s.active_states = stats.states_evaluated;
     status_pub_.publish(s);
   }
 
-  NodeParameters params_;
+  ml::NodeParameters params_;
   ml::MapModel map_;
   std::unique_ptr<ml::SensorModel> sensor_;
   std::unique_ptr<ml::MarkovGrid> grid_;
+  std::unique_ptr<ml::ActiveLocalizer> localizer_;
+  std::unique_ptr<ml::ActiveLocalizeServer> action_;
   std::optional<spott_map::Pose2> odom_, last_odom_, pending_initial_;
-  bool global_ = true;
-  unsigned rings_ = 0;
-  double entropy_ = 0.0;
-  ros::Publisher pose_pub_, status_pub_, modes_pub_;
+  std::optional<ros::Time> last_belief_;
+  ml::StickyEstimate sticky_;
+  double odom_distance_m_ = 0.0;
+  double entropy_ = 0.0;  // H_P at the last belief grid (nats)
+  std::vector<double> ranges_;
+  ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_pub_;
   ros::Subscriber odom_sub_, ring_sub_, initial_sub_;
   ros::ServiceServer global_srv_;
   tf2_ros::TransformBroadcaster tf_;
@@ -287,8 +254,8 @@ class LocalizationNode {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "markov_localization");
   ros::NodeHandle nh, pnh("~");
-  NodeParameters params;
-  const auto errors = Read(pnh, params);
+  ml::NodeParameters params;
+  const auto errors = ml::ReadParameters(pnh, params);
   for (const auto& e : errors) ROS_FATAL("markov_localization: parameter %s", e.c_str());
   if (!errors.empty()) return 1;
   auto loaded = spott_map::LoadWorldFile(params.world_file);

@@ -1,0 +1,52 @@
+// Conversions between the markov_localization core and ROS messages (the node's only message
+// code besides the node itself): the belief's marginal for rviz, the pose, the modes, the
+// map -> odom transform and the Navigate goal of an active-localization target.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/PoseArray.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/time.h>
+#include <spott_msgs/NavigateGoal.h>
+
+#include "markov_localization/certainty.h"
+
+namespace markov_localization::ros_conversions {
+
+/// The marginal over theta, sum_k P(x, y, k), as an occupancy grid on the belief's cells (origin
+/// and resolution of the belief), scaled so that its maximum is 100 (values rounded; 0 where the
+/// marginal is below half a percent of the maximum). Cells that are no state (`state_mask[i]`
+/// == 0, row-major like the map; empty: all are states) are -1 (unknown).
+nav_msgs::OccupancyGrid BeliefGrid(const BeliefSnapshot& belief,
+                                   const std::vector<std::uint8_t>& state_mask,
+                                   const std::string& frame_id, const ros::Time& stamp);
+
+geometry_msgs::Quaternion YawToQuaternion(double yaw);
+
+/// The estimate with the covariance (x, y, yaw) of its mode (rows/columns 0, 1, 5 of the 6 x 6
+/// matrix); `covariance` may be all zero.
+geometry_msgs::PoseWithCovarianceStamped ToPoseWithCovariance(const Pose2& estimate,
+                                                              const Eigen::Matrix3d& covariance,
+                                                              const std::string& frame_id,
+                                                              const ros::Time& stamp);
+
+/// The means of the modes, heaviest first.
+geometry_msgs::PoseArray ToPoseArray(const std::vector<Mode>& modes, const std::string& frame_id,
+                                     const ros::Time& stamp);
+
+/// map -> odom such that (map -> odom) * (odom -> base) = the estimate (REP-105):
+/// T = estimate * odom^-1.
+Pose2 MapToOdom(const Pose2& estimate, const Pose2& odom);
+geometry_msgs::TransformStamped ToTransform(const Pose2& map_to_odom, const std::string& map_frame,
+                                            const std::string& odom_frame, const ros::Time& stamp);
+
+/// A Navigate goal to a target point (no heading: ignore_heading) at NORMAL speed, no direction
+/// bias, success radius `tolerance_m`.
+spott_msgs::NavigateGoal NavigateGoalTo(const Vec2& target, double tolerance_m,
+                                        const std::string& frame_id, const ros::Time& stamp);
+
+}  // namespace markov_localization::ros_conversions

@@ -1,0 +1,63 @@
+// The node's parameters: every key of config/markov_localization.yaml (private namespace), read
+// and validated by name at start-up. Unknown keys under the private namespace are refused too,
+// so that a misspelt name does not silently keep its default.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+
+#include "markov_localization/active_localization.h"
+#include "markov_localization/active_run.h"
+#include "markov_localization/certainty.h"
+#include "markov_localization/map_model.h"
+#include "markov_localization/markov_grid.h"
+#include "markov_localization/sensor_model.h"
+#include "markov_localization/sticky_estimate.h"
+#include "markov_localization/wander.h"
+
+namespace markov_localization {
+
+struct NodeParameters {
+  std::string world_file;  ///< Required: the spott_map world (CAD map).
+  std::string ring_topic = "sonar";
+  std::string map_frame = "map";
+  std::string odom_frame = "odom";
+  double transform_tolerance_s = 0.2;  ///< map->odom is future-dated by this (s), >= 0.
+  bool start_uniform = true;           ///< Uniform belief at start (else ~initialpose waits).
+  /// With start_uniform false: start from the world file's robot_start (the stack does).
+  bool initial_pose_from_world = false;
+  double initial_sigma_xy_m = 0.3;  ///< Spread of the belief set by /initialpose.
+  double initial_sigma_theta_rad = 0.2;
+  double belief_rate_hz = 1.0;  ///< Rate of the `belief` grid (it touches every state), > 0.
+
+  MapModelParameters map;
+  MarkovGridParameters grid;
+  SensorModelParameters sensor;  ///< beam_angles_rad: `beams` evenly spaced (or the ring's).
+  int beams = 24;  ///< Readings per ring when !ring_geometry (else the ring's mounts decide).
+  bool ring_geometry = true;  ///< Beam axes and offset from the ring's mounts.
+  CertaintyParameters certainty;
+  ModeParameters modes;
+  ActiveLocalizationParameters active;
+
+  ActiveRunParameters run;
+  WanderParameters wander;
+  double position_tolerance_m = 0.4;  ///< Navigate goal's success radius (m), > 0.
+  /// a* is moved to the nearest point this far from obstacles (the planner's padding), within
+  /// target_search_m (m).
+  double target_clearance_m = 0.33;
+  double target_search_m = 0.75;
+  StickyEstimateParameters sticky;
+  std::string navigate_action = "harmonic_planner/navigate";
+  std::string global_goal_topic = "global_goal";  ///< "" = do not publish a global goal.
+  std::string cmd_vel_topic = "cmd_vel";          ///< The random motion's commands.
+  int seed = 1;                                   ///< Seeds the random motion, >= 0.
+};
+
+/// Reads every parameter from `pnh` (private namespace) into `p`; returns each violation
+/// naming its parameter ("~grid/threshold_fraction must be in (0, 1)"); empty when valid.
+std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p);
+
+}  // namespace markov_localization

@@ -1,0 +1,120 @@
+// Conversions of the node's ROS layer: the belief grid for rviz, map -> odom, the pose, the
+// modes and the Navigate goal of a target.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <tf2/utils.h>
+
+#include "markov_localization/ros/conversions.h"
+
+namespace markov_localization {
+namespace {
+
+namespace conv = ros_conversions;
+
+// 3 x 2 cells of 0.5 m at origin (10, 20), two heading bins; hand-placed masses.
+BeliefSnapshot SmallBelief() {
+  BeliefSnapshot b;
+  b.nx = 3;
+  b.ny = 2;
+  b.nt = 2;
+  b.origin = Vec2(10.0, 20.0);
+  b.resolution = 0.5;
+  b.p.assign(12, 0.0f);
+  b.p[b.Index(0, 0, 0)] = 0.1f;
+  b.p[b.Index(0, 0, 1)] = 0.1f;    // marginal 0.2
+  b.p[b.Index(2, 1, 1)] = 0.4f;    // marginal 0.4: the maximum
+  b.p[b.Index(1, 1, 0)] = 0.3f;    // 0.3
+  b.p[b.Index(1, 0, 1)] = 0.001f;  // 0.001 -> 0.25 % of the maximum: rounds to 0
+  b.num_states = 12;
+  return b;
+}
+
+TEST(Conversions, BeliefGridIsTheMarginalOverThetaScaledToAMaximumOf100) {
+  const auto grid = conv::BeliefGrid(SmallBelief(), {}, "map", ros::Time(5.0));
+  EXPECT_EQ(grid.header.frame_id, "map");
+  EXPECT_EQ(grid.header.stamp, ros::Time(5.0));
+  EXPECT_EQ(grid.info.width, 3u);
+  EXPECT_EQ(grid.info.height, 2u);
+  EXPECT_FLOAT_EQ(grid.info.resolution, 0.5f);
+  EXPECT_DOUBLE_EQ(grid.info.origin.position.x, 10.0);
+  EXPECT_DOUBLE_EQ(grid.info.origin.position.y, 20.0);
+  ASSERT_EQ(grid.data.size(), 6u);
+  // Row-major, row 0 at the bottom, like the belief's layers.
+  const std::vector<int> expected = {50, 0, 0, 0, 75, 100};
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(grid.data[i], expected[i]) << "cell " << i;
+}
+
+TEST(Conversions, BeliefGridMarksCellsThatAreNoStateUnknown) {
+  const std::vector<std::uint8_t> mask = {1, 0, 1, 1, 1, 1};
+  const auto grid = conv::BeliefGrid(SmallBelief(), mask, "map", ros::Time(0));
+  EXPECT_EQ(grid.data[1], -1);
+  EXPECT_EQ(grid.data[0], 50);
+  EXPECT_EQ(grid.data[5], 100);
+}
+
+TEST(Conversions, BeliefGridOfAnEmptyBeliefIsZero) {
+  BeliefSnapshot b = SmallBelief();
+  std::fill(b.p.begin(), b.p.end(), 0.0f);
+  const auto grid = conv::BeliefGrid(b, {}, "map", ros::Time(0));
+  for (auto v : grid.data) EXPECT_EQ(v, 0);
+}
+
+TEST(Conversions, MapToOdomComposedWithOdomGivesTheEstimate) {
+  const Pose2 estimate{5.0, -2.0, 2.5};
+  const Pose2 odom{1.0, 3.0, -0.7};
+  const Pose2 t = conv::MapToOdom(estimate, odom);
+  // t * odom
+  const double x = t.x + std::cos(t.yaw) * odom.x - std::sin(t.yaw) * odom.y;
+  const double y = t.y + std::sin(t.yaw) * odom.x + std::cos(t.yaw) * odom.y;
+  EXPECT_NEAR(x, 5.0, 1e-12);
+  EXPECT_NEAR(y, -2.0, 1e-12);
+  EXPECT_NEAR(std::remainder(t.yaw + odom.yaw - estimate.yaw, 2 * M_PI), 0.0, 1e-12);
+  // Hand-computed: yaw 3.2 wraps to 3.2 - 2 pi.
+  EXPECT_NEAR(t.yaw, 3.2 - 2 * M_PI, 1e-12);
+
+  const auto msg = conv::ToTransform(t, "map", "odom", ros::Time(7.0));
+  EXPECT_EQ(msg.header.frame_id, "map");
+  EXPECT_EQ(msg.child_frame_id, "odom");
+  EXPECT_DOUBLE_EQ(msg.transform.translation.x, t.x);
+  EXPECT_NEAR(tf2::getYaw(msg.transform.rotation), t.yaw, 1e-12);
+}
+
+TEST(Conversions, PoseCarriesTheModesCovarianceInRowsXYYaw) {
+  Eigen::Matrix3d cov;
+  cov << 0.04, 0.01, 0.002, 0.01, 0.09, 0.003, 0.002, 0.003, 0.05;
+  const auto pose = conv::ToPoseWithCovariance(Pose2{1, 2, -1.0}, cov, "map", ros::Time(1));
+  EXPECT_DOUBLE_EQ(pose.pose.pose.position.x, 1.0);
+  EXPECT_NEAR(tf2::getYaw(pose.pose.pose.orientation), -1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[0], 0.04);          // x x
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[1], 0.01);          // x y
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[5], 0.002);         // x yaw
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[7], 0.09);          // y y
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[5 * 6 + 5], 0.05);  // yaw yaw
+  EXPECT_DOUBLE_EQ(pose.pose.covariance[2 * 6 + 2], 0.0);   // z z: not estimated
+}
+
+TEST(Conversions, ModesBecomePosesHeaviestFirst) {
+  Mode a, b;
+  a.mean = Pose2{1, 2, 0.5};
+  b.mean = Pose2{26, 18, 0.5 - M_PI};
+  const auto pa = conv::ToPoseArray({a, b}, "map", ros::Time(2));
+  ASSERT_EQ(pa.poses.size(), 2u);
+  EXPECT_DOUBLE_EQ(pa.poses[1].position.x, 26.0);
+  EXPECT_NEAR(tf2::getYaw(pa.poses[1].orientation), 0.5 - M_PI, 1e-12);
+}
+
+TEST(Conversions, NavigateGoalIsAPointWithoutHeading) {
+  const auto g = conv::NavigateGoalTo(Vec2(17.5, 4.0), 0.4, "map", ros::Time(3));
+  EXPECT_EQ(g.target.header.frame_id, "map");
+  EXPECT_DOUBLE_EQ(g.target.pose.position.x, 17.5);
+  EXPECT_DOUBLE_EQ(g.target.pose.position.y, 4.0);
+  EXPECT_TRUE(g.ignore_heading);
+  EXPECT_DOUBLE_EQ(g.position_tolerance, 0.4);
+  EXPECT_EQ(g.speed_mode, spott_msgs::NavigateGoal::NORMAL);
+  EXPECT_TRUE(std::isnan(g.direction_bias));
+}
+
+}  // namespace
+}  // namespace markov_localization
