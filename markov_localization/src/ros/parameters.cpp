@@ -120,6 +120,9 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Int("sensor/beams", p.beams);
   r.Bool("sensor/ring_geometry", p.ring_geometry);
   r.Double("sensor/sensor_offset_m", s.sensor_offset_m);
+  // The Polaroid sonar's 6.5 m (capped by the ring's own max_range): at 5 m the corner echoes
+  // and far walls that told room A from room B after a kidnap were cut off.
+  s.max_range_m = 6.5;
   r.Double("sensor/max_range_m", s.max_range_m);
   // Sonar physics (node defaults: the ring's cone, 0.35 rad); see sensor_model.h.
   s.beam_width_rad = -1.0;
