@@ -153,7 +153,14 @@ void LocalPlanner::PlaceGoal() {
     std::optional<spott_map::Segment> seg = border_goal_;
     if (!seg)
       seg = ProjectGoalOntoWindow(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
-    ok = seg && field_.SetGoalSegment(*seg, 0.75 * r);
+    // A border goal whose own cells are all blocked (a door projected at an angle onto a wall
+    // crossing the border, the window shifted by a localization error) widens step by step to
+    // the free border cells nearest it, up to border_goal_half_width_m.
+    ok = false;
+    for (double half = 0.75 * r; seg && !ok; half *= 2.0) {
+      ok = field_.SetGoalSegment(*seg, std::min(half, params_.border_goal_half_width_m));
+      if (half >= params_.border_goal_half_width_m) break;
+    }
     if (!ok) status_.problem = "the projected border goal is blocked";
   }
   if (ok) field_.ColdStart();

@@ -182,6 +182,30 @@ TEST(LocalPlanner, GlobalBorderGoalWinsOverATargetInsideTheWindowUntilCleared) {
   EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.0, 0.1);
 }
 
+// The border goal's own cells are blocked (a wall crosses the border there): the goal widens to
+// the nearest free border cells instead of failing.
+TEST(LocalPlanner, BlockedBorderGoalWidensToTheNearestFreeBorderCells) {
+  LocalPlanner planner(SmallWindow());
+  // A wall across the west border from y = -0.2 to 0.2; with its padding it blocks the border
+  // goal's cells (|y| <= 0.1) and their neighbours.
+  planner.SetMap(MapWithBox(-3.6, -0.2, -3.0, 0.2));
+  planner.CorrectPose({0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(-20.0, 0.0));
+  planner.SetBorderGoal({Vec2(-3.5, -0.1), Vec2(-3.5, 0.1)});
+  for (int i = 0; i < 10; ++i) planner.Cycle();
+  ASSERT_TRUE(planner.status().has_goal) << planner.status().problem;
+  EXPECT_TRUE(planner.status().goal_on_border);
+  // A border goal far beyond the widening limit (the whole west border blocked) still fails.
+  LocalPlanner blocked(SmallWindow());
+  blocked.SetMap(MapWithBox(-3.6, -3.6, -3.0, 3.6));
+  blocked.CorrectPose({0.0, 0.0, 0.0});
+  blocked.SetGoal(Vec2(-20.0, 0.0));
+  blocked.SetBorderGoal({Vec2(-3.5, -0.1), Vec2(-3.5, 0.1)});
+  blocked.Cycle();
+  EXPECT_FALSE(blocked.status().has_goal);
+  EXPECT_EQ(blocked.status().problem, "the projected border goal is blocked");
+}
+
 TEST(LocalPlanner, ProjectionFollowsLineFromRobotToGoal) {
   const spott_map::Box w{Vec2(-3.5, -3.5), Vec2(3.5, 3.5)};
   const auto s = ProjectGoalOntoWindow(Vec2(0, 0), Vec2(10, 5), w, 0.5);
