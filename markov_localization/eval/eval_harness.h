@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "eval_picture.h"
 #include "markov_localization/active_localization.h"
 #include "markov_localization/certainty.h"
 #include "markov_localization/markov_grid.h"
@@ -257,11 +258,6 @@ Vec2 Compose(const Pose2& pose, const Vec2& rel);
 Vec2 MapToOdom(const Pose2& estimate, const Pose2& odom, const Vec2& p);
 
 double Elapsed(std::chrono::steady_clock::time_point since);
-
-/// Writes the belief's marginal over theta as a PNG (log scale), the true pose red and the
-/// modes blue (eval_picture.cpp). False when the file cannot be written.
-bool WriteBeliefPicture(const MapModel& map, const BeliefSnapshot& belief, const Pose2& truth,
-                        const std::vector<Mode>& modes, const std::string& path);
 
 /// Logs every go-to step (stderr; debugging only).
 extern bool verbose_trace;

@@ -1,12 +1,12 @@
 // A picture of a belief (the marginal over theta on a log scale, six decades; walls black,
-// non-states light grey; the true pose red, the modes' means blue), as Cairo PNG. The same
-// drawing as belief_picture.cpp, for beliefs of the evaluation runs.
+// non-states light grey; the true pose red, the modes' means blue), as Cairo PNG: the README's
+// picture (belief_picture.cpp) and the evaluation runs' (eval_main.cpp).
 #include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "eval_harness.h"
+#include "eval_picture.h"
 
 namespace markov_localization {
 namespace eval {
