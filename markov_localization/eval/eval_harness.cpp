@@ -300,12 +300,14 @@ const Status& Episode::Tick(const Twist2& cmd) {
   status_.time = sim_->time();
   const BeliefSnapshot b = BeliefSnapshot::Of(*grid_);
   const PositionCertainty c = PosCertainty(b, models_.certainty);
+  // A fall of the certainty while the fit dropped is lost too (LostDetector::OnCertainty).
+  grid_->ReportCertainty(c.certainty, models_.certainty.threshold);
   status_.certainty = c.certainty;
   status_.estimate = c.estimate;
   status_.truth = truth();
   status_.pos_error = (c.estimate.Position() - truth().Position()).norm();
   status_.yaw_error = std::abs(spott_map::NormalizeAngle(c.estimate.yaw - truth().yaw));
-  status_.lost_detector = DetectorSaysLost(*grid_);
+  status_.lost_detector = grid_->lost();
   return status_;
 }
 

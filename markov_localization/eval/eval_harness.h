@@ -28,22 +28,6 @@ namespace eval {
 using robot_sim::Rng;
 using robot_sim::Twist2;
 
-/// MarkovGrid::lost() exists once branch markov_kidnap's lost detector is merged; until then
-/// "lost" is certainty below the threshold (the integrator's instruction).
-template <typename G, typename = void>
-struct HasLostDetector : std::false_type {};
-template <typename G>
-struct HasLostDetector<G, std::void_t<decltype(std::declval<const G&>().lost())>> : std::true_type {
-};
-
-template <typename G>
-bool DetectorSaysLost(const G& grid) {
-  if constexpr (HasLostDetector<G>::value)
-    return grid.lost();
-  else
-    return false;
-}
-
 struct Settings {
   double resolution_m = 0.25;
   int heading_bins = 72;

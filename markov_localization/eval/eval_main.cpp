@@ -459,16 +459,13 @@ int Symmetric(const Options& o, const ev::Models& m) {
 // ---------------------------------------------------------------------------------------------
 // kidnap
 int Kidnap(const Options& o, const ev::Models& m) {
-  const bool detector = ev::HasLostDetector<ml::MarkovGrid>::value;
   std::printf(
       "# kidnap: %.0f deg clockwise rotation in place%s after %.0f s of tracking "
       "(random wandering from a known start in the corridor); lost = %s; once lost: %s; "
       "%0.f s allowed after the kidnap\n",
       o.kidnap_deg,
       o.kidnap_shift_m != 0 ? (" and " + Fmt(o.kidnap_shift_m, "%.2f") + " m ahead").c_str() : "",
-      o.settle_s,
-      detector ? "MarkovGrid::lost() (markov_kidnap's detector)"
-               : "certainty < 0.8 (the lost detector is not merged)",
+      o.settle_s, "MarkovGrid::lost() (the lost detector, with the certainty reported)",
       o.on_lost_uniform ? "uniform belief, ~10 m random motion, then active localization"
                         : "active localization on the belief as it is",
       o.time_limit_s);
@@ -516,7 +513,7 @@ int Kidnap(const Options& o, const ev::Models& m) {
       if (e.ConfidentlyWrong()) wrong += e.tick_seconds();
       if (below < 0 && s.certainty < m.settings.certain) below = e.time() - tk;
       if (lost < 0 && s.lost_detector) lost = e.time() - tk;
-      if (!relocalizing && (detector ? lost >= 0 : below >= 0)) {
+      if (!relocalizing && lost >= 0) {
         relocalize_from_m = e.distance();
         if (o.on_lost_uniform) e.grid().SetUniform();
         continue;
@@ -531,9 +528,9 @@ int Kidnap(const Options& o, const ev::Models& m) {
         "| %d | %llu | (%.2f, %.2f, %.0f) | %s | %s | %s | %s | %.1f | %.1f | %.2f | "
         "%.2f, %.0f | %.0f |\n",
         run + 1, static_cast<unsigned long long>(seed), start.x, start.y, start.yaw / kDeg,
-        tracking ? "yes" : "no", Fmt(below).c_str(), detector ? Fmt(lost).c_str() : "n/a",
-        Fmt(reloc).c_str(), wrong, unsure_before, e.status().certainty, e.status().pos_error,
-        e.status().yaw_error / kDeg, ev::Elapsed(t0));
+        tracking ? "yes" : "no", Fmt(below).c_str(), Fmt(lost).c_str(), Fmt(reloc).c_str(), wrong,
+        unsure_before, e.status().certainty, e.status().pos_error, e.status().yaw_error / kDeg,
+        ev::Elapsed(t0));
     std::fflush(stdout);
   }
   std::printf("\nrecovered (certain and right again) in %d of %d runs\n", recovered, o.runs);

@@ -12,6 +12,9 @@ std::vector<std::string> ValidateParameters(const LostDetectorParameters& p) {
   if (!(p.lost_ratio > 0.0 && p.lost_ratio < 1.0)) errors.push_back("lost_ratio must be in (0, 1)");
   if (!(p.scan_lost_ratio > 0.0 && p.scan_lost_ratio <= p.lost_ratio))
     errors.push_back("scan_lost_ratio must be in (0, lost_ratio]");
+  const double lost_ratio = p.lost_ratio > 0.0 && p.lost_ratio < 1.0 ? p.lost_ratio : 0.0;
+  if (!(p.certainty_drop_ratio >= lost_ratio && p.certainty_drop_ratio < 1.0))
+    errors.push_back("certainty_drop_ratio must be in [lost_ratio, 1)");
   if (!(p.hold_scans >= 1)) errors.push_back("hold_scans must be >= 1");
   if (!(p.relocalization_mass > 0.0 && p.relocalization_mass < 1.0))
     errors.push_back("relocalization_mass must be in (0, 1)");
@@ -21,6 +24,16 @@ std::vector<std::string> ValidateParameters(const LostDetectorParameters& p) {
 void LostDetector::Reset() {
   fast_ = slow_ = 0.0;
   scans_since_reset_ = 0;
+  was_certain_ = false;
+}
+
+bool LostDetector::OnCertainty(double certainty, double threshold) {
+  const bool dropped = was_certain_ && certainty < threshold;
+  was_certain_ = certainty > threshold;
+  if (!params_.enabled || !dropped || scans_since_reset_ <= params_.hold_scans) return false;
+  if (fast_ >= params_.certainty_drop_ratio * slow_) return false;
+  scans_since_reset_ = 1;  // the hold starts again, as after any detection
+  return true;
 }
 
 bool LostDetector::Update(double log_likelihood_per_beam) {

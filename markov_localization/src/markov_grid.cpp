@@ -364,6 +364,14 @@ void MarkovGrid::Normalize(const double* active_sums) {
   });
 }
 
+bool MarkovGrid::ReportCertainty(double certainty, double threshold) {
+  if (detector_.OnCertainty(certainty, threshold)) {
+    MixUniform(params_.lost.relocalization_mass);
+    lost_ = true;
+  }
+  return lost_;
+}
+
 void MarkovGrid::MixUniform(double mass) {
   mass = std::clamp(mass, 0.0, 1.0);
   const float keep = static_cast<float>(1.0 - mass);

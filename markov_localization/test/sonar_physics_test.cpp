@@ -78,8 +78,8 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   d.Reset();
   for (int i = 0; i < 50; ++i) d.Update(1.0);
   // A fit that sinks to 0.3 of the usual per beam: fast (rate 0.5) / slow (rate 0.05) is
-  // 0.65 / 0.965, 0.475 / 0.932, 0.388 / 0.901, 0.344 / 0.871 = 0.395: lost at the fourth.
-  for (int i = 0; i < 3; ++i) EXPECT_FALSE(d.Update(1.0 + std::log(0.3))) << "scan " << i;
+  // 0.65 / 0.965 = 0.67, then 0.475 / 0.932 = 0.51 < 0.55: lost at the second scan.
+  EXPECT_FALSE(d.Update(1.0 + std::log(0.3)));
   EXPECT_TRUE(d.Update(1.0 + std::log(0.3)));
   for (int i = 0; i < 50; ++i) d.Update(1.0);
   // A kidnap: one scan's fit falls to e^-2 = 0.05 of the usual (< 0.15): lost at once.
@@ -88,6 +88,23 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   // fit has not come back.
   for (int i = 0; i < LostDetectorParameters{}.hold_scans - 1; ++i) EXPECT_FALSE(d.Update(-2.0));
   EXPECT_TRUE(d.Update(-2.0));
+}
+
+TEST(LostDetector, ACertaintyDropWhileTheFitDropsIsLost) {
+  LostDetector d(LostDetectorParameters{});
+  for (int i = 0; i < 50; ++i) {
+    d.Update(1.0);
+    EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  }
+  // The certainty falls with an unchanged fit (an ambiguous place): not lost.
+  d.Update(1.0);
+  EXPECT_FALSE(d.OnCertainty(0.6, 0.8));
+  d.Update(1.0);
+  EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  // A scan at 0.4 x the usual fit (fast 0.7 x: above lost_ratio, below certainty_drop_ratio
+  // 0.7 once slow has moved) with the certainty falling: lost.
+  d.Update(1.0 + std::log(0.35));
+  EXPECT_TRUE(d.OnCertainty(0.5, 0.8));
 }
 
 TEST(LostDetector, NoAlarmDuringTheFirstScansAfterAReset) {

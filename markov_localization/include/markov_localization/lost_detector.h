@@ -22,15 +22,22 @@ struct LostDetectorParameters {
   double fast_rate = 0.5;
   double slow_rate = 0.05;
   /// Lost when fast < lost_ratio * slow, in (0, 1). The averages are of the geometric mean of
-  /// the per-beam likelihood ratio P(s|belief) / P~(s), so 0.4 means every beam fits 0.4 times as
-  /// well as it usually does (the scan 0.4^24 = 3e-10 times). While driving on robot_sim the
-  /// fast average stayed above 0.52 x the slow one (500 scans in bonn_department); a kidnap
-  /// drops a single scan to about 0.07 x.
-  double lost_ratio = 0.4;
+  /// the per-beam likelihood ratio P(s|belief) / P~(s), so 0.55 means every beam fits 0.55
+  /// times as well as it usually does (the scan 0.55^24 = 6e-7 times). Chosen on the evaluation
+  /// (eval/results): 0.7 fired 13-16 times per 90 s tracking run, 0.4 let global localization
+  /// stay convinced of wrong places (active 17 of 20); 0.55 fires 3-5 times per run (without
+  /// moving the estimate) and active global localization succeeds 19 of 20.
+  double lost_ratio = 0.55;
   /// Lost at once when a single scan's fit falls below scan_lost_ratio * slow, in
   /// (0, lost_ratio]: the signature of a kidnap (about 0.07 x on robot_sim; the lowest single
   /// scan while driving was 0.34 x).
   double scan_lost_ratio = 0.15;
+  /// A fall of POS-CERTAINTY from above its threshold to below it within one scan while the
+  /// fast fit is below certainty_drop_ratio * slow is lost too, in [lost_ratio, 1): after a 70
+  /// degree turn in the corridor a single scan fits 0.15-0.55 x, and within a few scans the
+  /// paper's wake-up finds a wrong place that fits again (the caller reports the certainty:
+  /// MarkovGrid::ReportCertainty).
+  double certainty_drop_ratio = 0.7;
   /// Scans after a reset or a detection before the detector may fire (again), >= 1.
   int hold_scans = 10;
   /// Uniform probability mass mixed into the belief when lost, in (0, 1). It must exceed the
@@ -47,6 +54,9 @@ class LostDetector {
   /// One sensor update: `log_likelihood_per_beam` is log(P(s | belief) / P~(s)) divided by the
   /// number of beams (nats). Returns true when the scan says the robot is lost.
   bool Update(double log_likelihood_per_beam);
+  /// After the scan's Update: the belief's POS-CERTAINTY. True when it fell from above
+  /// `threshold` to below it while the fit dropped (see certainty_drop_ratio).
+  bool OnCertainty(double certainty, double threshold);
   /// Forgets the history (a new belief was set: uniform, initial pose, relocalization).
   void Reset();
 
@@ -59,6 +69,7 @@ class LostDetector {
   double fast_ = 0.0;
   double slow_ = 0.0;
   int scans_since_reset_ = 0;
+  bool was_certain_ = false;
 };
 
 }  // namespace markov_localization

@@ -95,7 +95,11 @@ class MarkovGrid {
   /// P <- (1 - mass) P + mass / |L| over every state, all parts active (their stored movement
   /// applied). With mass / |L| above theta the next sensor update evaluates every state.
   void MixUniform(double mass);
-  /// Whether the last sensor update detected that the robot is lost.
+  /// After a sensor update: its POS-CERTAINTY (and the threshold). A fall below the threshold
+  /// while the fit dropped is lost too (LostDetector::OnCertainty): mixes relocalization_mass
+  /// in as SensorUpdate does. Returns lost().
+  bool ReportCertainty(double certainty, double threshold);
+  /// Whether the last sensor update (or ReportCertainty) detected that the robot is lost.
   bool lost() const { return lost_; }
   const LostDetector& lost_detector() const { return detector_; }
 

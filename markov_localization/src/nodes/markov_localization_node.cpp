@@ -168,6 +168,13 @@ class LocalizationNode {
         ml::Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
     const auto& c = summary.certainty;
     const auto& modes = summary.modes;
+    if (!stats.lost_detected && grid_->ReportCertainty(c.certainty, params_.certainty.threshold)) {
+      ROS_WARN(
+          "markov_localization: certainty fell to %.2f as the scans stopped fitting: lost; "
+          "relocalizing",
+          c.certainty);
+      sticky_.Reset();
+    }
     // The published estimate stays with the mode it followed while twins swap the maximum.
     bool switched = false;
     const ml::Pose2 estimate = sticky_.Select(modes, c.estimate, *odom_, &switched);

@@ -108,6 +108,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Double("lost/slow_rate", lost.slow_rate);
   r.Double("lost/lost_ratio", lost.lost_ratio);
   r.Double("lost/scan_lost_ratio", lost.scan_lost_ratio);
+  r.Double("lost/certainty_drop_ratio", lost.certainty_drop_ratio);
   r.Int("lost/hold_scans", lost.hold_scans);
   r.Double("lost/relocalization_mass", lost.relocalization_mass);
   auto& m = p.grid.motion;
