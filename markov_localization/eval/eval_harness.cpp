@@ -47,6 +47,7 @@ std::unique_ptr<Models> Models::Load(const std::string& world_file, const Settin
 
   MapModelParameters mp;
   mp.resolution_m = settings.resolution_m;
+  mp.ray_cast_subdivision = 5;  // as the node (config/markov_localization.yaml)
   mp.state_clearance_m =
       settings.state_clearance_m >= 0 ? settings.state_clearance_m : m->robot.radius_m;
   m->settings.state_clearance_m = mp.state_clearance_m;
