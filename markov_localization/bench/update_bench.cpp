@@ -84,8 +84,8 @@ void Counters(benchmark::State& state, const ml::MarkovGrid& grid) {
   state.counters["amcl_issue_ms"] = 0.5;  // quoted from the issue, not measured here
 }
 
-void BM_FullSensorUpdate(benchmark::State& state) {
-  Setup& s = Pick(state.range(0));
+// Eq. (2) over every state of a uniform belief, once per iteration.
+void FullSensorUpdates(benchmark::State& state, Setup& s) {
   ml::MarkovGridParameters p;
   p.selective_update = false;
   ml::MarkovGrid grid(s.map, *s.sensor, p);
@@ -97,6 +97,11 @@ void BM_FullSensorUpdate(benchmark::State& state) {
     benchmark::DoNotOptimize(grid.SensorUpdate(scan));
   }
   Counters(state, grid);
+}
+
+void BM_FullSensorUpdate(benchmark::State& state) {
+  Setup& s = Pick(state.range(0));
+  FullSensorUpdates(state, s);
   state.counters["target_ms"] = 100;
 }
 
@@ -171,19 +176,7 @@ void Restore() {
 
 void BM_FullSensorUpdateByIsa(benchmark::State& state) {
   Setup& s = Building30();
-  if (UseIsaAndThreads(state, static_cast<int>(state.range(1)))) {
-    ml::MarkovGridParameters p;
-    p.selective_update = false;
-    ml::MarkovGrid grid(s.map, *s.sensor, p);
-    const auto scan = Scan(s, s.inside);
-    for (auto _ : state) {
-      state.PauseTiming();
-      grid.SetUniform();
-      state.ResumeTiming();
-      benchmark::DoNotOptimize(grid.SensorUpdate(scan));
-    }
-    Counters(state, grid);
-  }
+  if (UseIsaAndThreads(state, static_cast<int>(state.range(1)))) FullSensorUpdates(state, s);
   Restore();
 }
 
