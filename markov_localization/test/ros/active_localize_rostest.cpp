@@ -105,6 +105,26 @@ class ActiveLocalizeTest : public ::testing::Test {
   spott_msgs::NavigateActionGoal last_navigate_;
 };
 
+// Only in active_localize_success.test (the whole chain at its defaults): from a uniform
+// belief the action must end certain and within 0.5 m / 10 degrees of the ground truth.
+TEST_F(ActiveLocalizeTest, FromAUniformBeliefEndsCertainAndRight) {
+  client_->sendGoal(Goal(0.8, 400.0, true));
+  ASSERT_TRUE(WaitDone(*client_, 300.0)) << "no result within 300 s of wall time";
+  const auto result = client_->getResult();
+  ASSERT_TRUE(result);
+  ASSERT_TRUE(result->success) << result->reason << " (certainty " << result->certainty << ")";
+  std::lock_guard<std::mutex> lock(l_.mutex);
+  const auto& t = l_.truth.pose.pose;
+  const double error =
+      std::hypot(result->estimate.x - t.position.x, result->estimate.y - t.position.y);
+  const double heading =
+      std::abs(std::remainder(result->estimate.theta - tf2::getYaw(t.orientation), 2 * M_PI));
+  EXPECT_LT(error, 0.5);
+  EXPECT_LT(heading, 10.0 * M_PI / 180.0);
+  std::printf("ActiveLocalize: success after %u targets, error %.2f m / %.1f deg\n",
+              result->targets_visited, error, heading * 180.0 / M_PI);
+}
+
 TEST_F(ActiveLocalizeTest, RefusesBadRequestsAndGoesOn) {
   client_->sendGoal(Goal(0.8, -5.0, true));
   ASSERT_TRUE(WaitDone(*client_, 10.0));

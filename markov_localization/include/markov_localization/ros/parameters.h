@@ -47,7 +47,7 @@ struct NodeParameters {
   double position_tolerance_m = 0.4;  ///< Navigate goal's success radius (m), > 0.
   /// a* is moved to the nearest point this far from obstacles (the planner's padding), within
   /// target_search_m (m).
-  double target_clearance_m = 0.33;
+  double target_clearance_m = 0.4;
   double target_search_m = 0.75;
   StickyEstimateParameters sticky;
   std::string navigate_action = "harmonic_planner/navigate";
