@@ -25,11 +25,15 @@ void LostDetector::Reset() {
   fast_ = slow_ = 0.0;
   scans_since_reset_ = 0;
   was_certain_ = false;
+  certain_scans_ = 0;
 }
 
 bool LostDetector::OnCertainty(double certainty, double threshold) {
-  const bool dropped = was_certain_ && certainty < threshold;
+  // Only a robot that was certain for a while can be kidnapped out of its certainty; dips of a
+  // belief that is just becoming certain (a long hallway) are not a kidnap.
+  const bool dropped = certain_scans_ >= params_.hold_scans && certainty < threshold;
   was_certain_ = certainty > threshold;
+  certain_scans_ = was_certain_ ? certain_scans_ + 1 : 0;
   if (!params_.enabled || !dropped || scans_since_reset_ <= params_.hold_scans) return false;
   if (fast_ >= params_.certainty_drop_ratio * slow_) return false;
   scans_since_reset_ = 1;  // the hold starts again, as after any detection

@@ -99,8 +99,10 @@ TEST(LostDetector, ACertaintyDropWhileTheFitDropsIsLost) {
   // The certainty falls with an unchanged fit (an ambiguous place): not lost.
   d.Update(1.0);
   EXPECT_FALSE(d.OnCertainty(0.6, 0.8));
-  d.Update(1.0);
-  EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  for (int i = 0; i < LostDetectorParameters{}.hold_scans; ++i) {  // certain for a while again
+    d.Update(1.0);
+    EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  }
   // A scan at 0.4 x the usual fit (fast 0.7 x: above lost_ratio, below certainty_drop_ratio
   // 0.7 once slow has moved) with the certainty falling: lost.
   d.Update(1.0 + std::log(0.35));

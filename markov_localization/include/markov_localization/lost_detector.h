@@ -32,7 +32,7 @@ struct LostDetectorParameters {
   /// (0, lost_ratio]: the signature of a kidnap (about 0.07 x on robot_sim; the lowest single
   /// scan while driving was 0.34 x).
   double scan_lost_ratio = 0.15;
-  /// A fall of POS-CERTAINTY from above its threshold to below it within one scan while the
+  /// A fall of POS-CERTAINTY below its threshold after hold_scans scans above it, while the
   /// fast fit is below certainty_drop_ratio * slow is lost too, in [lost_ratio, 1): after a 70
   /// degree turn in the corridor a single scan fits 0.15-0.55 x, and within a few scans the
   /// paper's wake-up finds a wrong place that fits again (the caller reports the certainty:
@@ -70,6 +70,7 @@ class LostDetector {
   double slow_ = 0.0;
   int scans_since_reset_ = 0;
   bool was_certain_ = false;
+  int certain_scans_ = 0;  // consecutive scans above the certainty threshold
 };
 
 }  // namespace markov_localization
