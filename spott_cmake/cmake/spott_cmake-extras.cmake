@@ -1,0 +1,29 @@
+# Build conventions of every SPOTT-ROS package, included by find_package(catkin REQUIRED
+# COMPONENTS spott_cmake ...) in the package's own directory scope (CONTRIBUTING.md).
+set(CMAKE_CXX_STANDARD 17)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+add_compile_options(-Wall -Wextra)
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE RelWithDebInfo)
+endif()
+
+# spott_catkin_package(CORE <core library target> <catkin_package arguments>...)
+# catkin_package() plus an export of the ROS-free core library alone: a consumer that must not
+# link ROS (another core) links ${<pkg>_CORE_LIBRARIES}; ${<pkg>_LIBRARIES} (and
+# ${catkin_LIBRARIES}) keep every exported library, the ROS layer included.
+macro(spott_catkin_package)
+  cmake_parse_arguments(_spott "" "CORE" "" ${ARGN})
+  set(_spott_extras "")
+  if(_spott_CORE)
+    set(_spott_extras "${CMAKE_CURRENT_BINARY_DIR}/${PROJECT_NAME}_core-extras.cmake")
+    file(WRITE "${_spott_extras}"
+         "# ${PROJECT_NAME}'s ROS-free core alone (spott_catkin_package, spott_cmake).\n"
+         "if(TARGET ${_spott_CORE})\n"
+         "  set(${PROJECT_NAME}_CORE_LIBRARIES ${_spott_CORE})\n"
+         "else()\n"
+         "  find_library(${PROJECT_NAME}_CORE_LIBRARIES ${_spott_CORE}\n"
+         "               PATHS \"\${${PROJECT_NAME}_DIR}/../../../lib\" NO_DEFAULT_PATH)\n"
+         "endif()\n")
+  endif()
+  catkin_package(${_spott_UNPARSED_ARGUMENTS} CFG_EXTRAS ${_spott_extras})
+endmacro()
