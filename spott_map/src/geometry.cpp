@@ -25,6 +25,14 @@ Box Box::Inflated(double margin) const {
   return Box{min - Vec2(margin, margin), max + Vec2(margin, margin)};
 }
 
+Box LatticeWindow(const Vec2& centre, int cells, double resolution_m) {
+  const double side = cells * resolution_m;
+  const Vec2 corner = centre - Vec2(0.5 * side, 0.5 * side);
+  const Vec2 origin(std::round(corner.x() / resolution_m) * resolution_m,
+                    std::round(corner.y() / resolution_m) * resolution_m);
+  return Box{origin, origin + Vec2(side, side)};
+}
+
 double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 Vec2 ClosestPointOnSegment(const Vec2& p, const Segment& s) {

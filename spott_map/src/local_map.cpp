@@ -71,9 +71,7 @@ LocalMap::LocalMap(const LocalMapParameters& params) : params_(params) {
 void LocalMap::Recentre(const MapDatabase& db, const Vec2& centre) {
   const double res = params_.resolution_m;
   const int n = params_.cells();
-  // Snap the origin to the global lattice of cells so that successive windows share cells.
-  const Vec2 corner = centre - Vec2(0.5 * n * res, 0.5 * n * res);
-  const Vec2 origin(std::round(corner.x() / res) * res, std::round(corner.y() / res) * res);
+  const Vec2 origin = LatticeWindow(centre, n, res).min;
   raster_ = OccupancyRaster(origin, n, n, res);
   centre_ = origin + Vec2(0.5 * n * res, 0.5 * n * res);
   Refresh(db);

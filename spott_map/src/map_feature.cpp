@@ -40,15 +40,27 @@ double MapFeature::DistanceTo(const Vec2& p) const {
   switch (type) {
     case FeatureType::kPoint:
       return points.empty() ? std::numeric_limits<double>::infinity() : (p - points[0]).norm();
-    case FeatureType::kLineSegment:
+    case FeatureType::kLineSegment: {
       if (points.size() < 2) return std::numeric_limits<double>::infinity();
-      return std::max(0.0, DistancePointSegment(p, Segment{points[0], points[1]}) - 0.5 * size_y);
+      const Segment s{points[0], points[1]};
+      if (size_y <= 0.0) return DistancePointSegment(p, s);
+      const Polygon box = ThickSegmentOutline(s, size_y);  // flat ends, like a wall
+      return PointInPolygon(p, box) ? 0.0 : DistanceToBoundary(p, box);
+    }
     default: {
       const Polygon outline = Outline();
       if (PointInPolygon(p, outline)) return 0.0;
       return DistanceToBoundary(p, outline);
     }
   }
+}
+
+Polygon ThickSegmentOutline(const Segment& s, double thickness) {
+  const Vec2 d = s.b - s.a;
+  const double n = d.norm();
+  const Vec2 side =
+      n > 0.0 ? Vec2(-d.y(), d.x()) * (0.5 * thickness / n) : Vec2(0.0, 0.5 * thickness);
+  return {s.a - side, s.b - side, s.b + side, s.a + side};
 }
 
 MapFeature MakePoint(const std::string& id, const Vec2& p, const std::string& label) {

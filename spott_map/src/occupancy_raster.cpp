@@ -83,6 +83,10 @@ class FeatureShape {
   explicit FeatureShape(const MapFeature& f) : f_(f) {
     if (f.type != FeatureType::kPoint && f.type != FeatureType::kLineSegment) {
       outline_ = f.Outline();
+    } else if (f.type == FeatureType::kLineSegment && f.size_y > 0.0) {
+      // A wall is a box with flat ends (as the simulator builds it): rounded ends would reach
+      // half a thickness into every door opening.
+      outline_ = ThickSegmentOutline(Segment{f.points[0], f.points[1]}, f.size_y);
     }
   }
 
@@ -91,8 +95,8 @@ class FeatureShape {
       case FeatureType::kPoint:
         return (p - f_.points[0]).norm();
       case FeatureType::kLineSegment:
-        return std::max(
-            0.0, DistancePointSegment(p, Segment{f_.points[0], f_.points[1]}) - 0.5 * f_.size_y);
+        if (outline_.empty()) return DistancePointSegment(p, Segment{f_.points[0], f_.points[1]});
+        [[fallthrough]];
       default:
         return PointInPolygon(p, outline_) ? 0.0 : DistanceToBoundary(p, outline_);
     }
@@ -106,8 +110,8 @@ class FeatureShape {
         return (f_.points[0] - clamped).norm();
       }
       case FeatureType::kLineSegment:
-        return std::max(
-            0.0, DistanceBoxSegment(cell, Segment{f_.points[0], f_.points[1]}) - 0.5 * f_.size_y);
+        if (outline_.empty()) return DistanceBoxSegment(cell, Segment{f_.points[0], f_.points[1]});
+        [[fallthrough]];
       default: {
         if (PointInPolygon(0.5 * (cell.min + cell.max), outline_)) return 0.0;
         double best = std::numeric_limits<double>::infinity();
@@ -152,12 +156,15 @@ void RasterizeFeature(const MapFeature& feature, double padding_m, OccupancyRast
       if (d <= half_diagonal) {
         const Box cell{raster.origin() + Vec2(ix * res, iy * res),
                        raster.origin() + Vec2((ix + 1) * res, (iy + 1) * res)};
-        if (shape.DistanceTo(cell) <= 0.0) {
+        // Touching counts (within round-off, so that mirror-image cells of a symmetric
+        // building get the same answer).
+        if (shape.DistanceTo(cell) <= 1e-9) {
           raster.Mark(ix, iy, Cell::kObstacle);
           continue;
         }
       }
-      if (d <= padding_m) raster.Mark(ix, iy, Cell::kPadding);
+      // Free with a clearance of exactly the padding: the robot fits.
+      if (d < padding_m) raster.Mark(ix, iy, Cell::kPadding);
     }
   }
 }

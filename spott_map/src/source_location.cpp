@@ -1,18 +1,11 @@
 #include "spott_map/source_location.h"
 
-#include <sstream>
+#include "spott_text/diagnostic.h"
 
 namespace spott_map {
 
 std::string SourceError::ToString() const {
-  std::ostringstream out;
-  out << (where.file.empty() ? "<input>" : where.file);
-  if (where.line > 0) {
-    out << ':' << where.line;
-    if (where.column > 0) out << ':' << where.column;
-  }
-  out << ": " << message;
-  return out.str();
+  return spott_text::LocationText(where.file, {where.line, where.column}) + ": " + message;
 }
 
 std::string FormatErrors(const std::vector<SourceError>& errors) {

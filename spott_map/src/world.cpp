@@ -4,6 +4,20 @@
 
 namespace spott_map {
 
+const char* const kIdRule =
+    "ids are an ASCII letter or '_' followed by letters, digits and '_' (task commands name "
+    "them)";
+
+bool IsValidId(const std::string& id) {
+  if (id.empty()) return false;
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  if (!letter(id[0]) && id[0] != '_') return false;
+  for (char c : id) {
+    if (!letter(c) && !(c >= '0' && c <= '9') && c != '_') return false;
+  }
+  return true;
+}
+
 Polygon WorldObject::Footprint() const {
   Polygon corners;
   const double c = std::cos(pose.yaw);

@@ -16,6 +16,18 @@ std::string Describe(const char* section, std::size_t index, const std::string& 
   return s;
 }
 
+// Reads the id (or place name) under `key` and checks it against the one id rule (world.h),
+// located at the id itself.
+std::string ReadId(YamlReader& in, const YAML::Node& item, const char* key,
+                   const std::string& what) {
+  const std::string id = in.String(item, key, what, true).value_or("");
+  if (item[key] && item[key].IsScalar() && !IsValidId(id)) {
+    in.Error(item[key], what + ": '" + id + "' is not a valid " +
+                            (std::string(key) == "name" ? "place name" : "id") + ": " + kIdRule);
+  }
+  return id;
+}
+
 // The id of a list item, read leniently so that later messages can name the item.
 std::string PeekId(const YAML::Node& item, const char* key) {
   if (item.IsMap() && item[key] && item[key].IsScalar()) return item[key].Scalar();
@@ -36,7 +48,7 @@ void ReadRooms(YamlReader& in, const YAML::Node& node, World& world) {
     if (!in.ExpectMap(item, what, {"id", "name", "kind", "polygon"})) continue;
     Room room;
     room.where = in.Where(item);
-    room.id = in.String(item, "id", what, true).value_or("");
+    room.id = ReadId(in, item, "id", what);
     room.name = in.String(item, "name", what, false).value_or(room.id);
     if (auto kind = in.String(item, "kind", what, false)) {
       if (auto k = ParseRoomKind(*kind)) {
@@ -64,7 +76,7 @@ void ReadDoors(YamlReader& in, const YAML::Node& node, World& world) {
     }
     Door door;
     door.where = in.Where(item);
-    door.id = in.String(item, "id", what, true).value_or("");
+    door.id = ReadId(in, item, "id", what);
     const YAML::Node between = item["between"];
     bool ok = true;
     if (!between) {
@@ -118,7 +130,7 @@ void ReadWalls(YamlReader& in, const YAML::Node& node, World& world, bool& from_
     if (!in.ExpectMap(item, what, {"id", "from", "to", "thickness"})) continue;
     Wall wall;
     wall.where = in.Where(item);
-    wall.id = in.String(item, "id", what, true).value_or("");
+    wall.id = ReadId(in, item, "id", what);
     auto from = in.Point(item, "from", what, true);
     auto to = in.Point(item, "to", what, true);
     wall.thickness =
@@ -137,7 +149,7 @@ void ReadObjects(YamlReader& in, const YAML::Node& node, World& world) {
     if (!in.ExpectMap(item, what, {"id", "kind", "pose", "size", "height", "label"})) continue;
     WorldObject object;
     object.where = in.Where(item);
-    object.id = in.String(item, "id", what, true).value_or("");
+    object.id = ReadId(in, item, "id", what);
     object.label = in.String(item, "label", what, false).value_or("");
     bool ok = true;
     if (auto kind = in.String(item, "kind", what, true)) {
@@ -171,7 +183,7 @@ void ReadPlaces(YamlReader& in, const YAML::Node& node, World& world) {
     if (!in.ExpectMap(item, what, {"name", "kind", "pose"})) continue;
     Place place;
     place.where = in.Where(item);
-    place.name = in.String(item, "name", what, true).value_or("");
+    place.name = ReadId(in, item, "name", what);
     place.kind = in.String(item, "kind", what, false).value_or("waypoint");
     if (place.kind != "localization" && place.kind != "position" && place.kind != "landmark" &&
         place.kind != "waypoint") {
@@ -195,7 +207,7 @@ void ReadZones(YamlReader& in, const YAML::Node& node, World& world) {
     if (!in.ExpectMap(item, what, {"id", "polygon"})) continue;
     Zone zone;
     zone.where = in.Where(item);
-    zone.id = in.String(item, "id", what, true).value_or("");
+    zone.id = ReadId(in, item, "id", what);
     auto polygon = in.Points(item, "polygon", what, true, 3);
     if (!polygon) continue;
     zone.polygon = *polygon;
@@ -211,7 +223,7 @@ void ReadPaths(YamlReader& in, const YAML::Node& node, World& world) {
     if (!in.ExpectMap(item, what, {"id", "points", "final_yaw"})) continue;
     NamedPath path;
     path.where = in.Where(item);
-    path.id = in.String(item, "id", what, true).value_or("");
+    path.id = ReadId(in, item, "id", what);
     path.final_yaw = in.Number(item, "final_yaw", what, false);
     auto points = in.Points(item, "points", what, true, 1);
     if (!points) continue;

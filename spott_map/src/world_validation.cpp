@@ -25,16 +25,6 @@ std::string PointText(const Vec2& p) {
   return buffer;
 }
 
-bool ValidId(const std::string& id) {
-  if (id.empty()) return false;
-  for (char c : id) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    c == '_' || c == '-';
-    if (!ok) return false;
-  }
-  return true;
-}
-
 class Validator {
  public:
   Validator(World& world, std::vector<SourceError>& errors, std::vector<SourceError>& warnings)
@@ -44,11 +34,9 @@ class Validator {
     std::map<std::string, std::string> seen;  // id -> what first used it
     const auto check = [&](const std::string& id, const SourceLocation& where,
                            const std::string& what) {
-      if (!ValidId(id)) {
-        Error(where, what + " id '" + id +
-                         "' must be letters, digits, '_' or '-' (it is used in task commands)");
-        return;
-      }
+      // The loader checked each id against the rule where it is written (world.h, IsValidId);
+      // generated wall ids follow it.
+      if (!IsValidId(id)) return;
       auto [it, inserted] = seen.emplace(id, what);
       if (!inserted)
         Error(where, "duplicate id '" + id + "' (already used by a " + it->second + ")");
@@ -61,7 +49,7 @@ class Validator {
     for (const NamedPath& p : world_.paths) check(p.id, p.where, "path");
     std::map<std::string, bool> places;
     for (const Place& p : world_.places) {
-      if (p.name.empty()) Error(p.where, "place name must not be empty");
+      if (!IsValidId(p.name)) continue;  // reported by the loader
       if (!places.emplace(p.name, true).second) {
         Error(p.where, "duplicate place name '" + p.name + "'");
       }

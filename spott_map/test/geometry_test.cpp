@@ -22,6 +22,18 @@ TEST(Geometry, ProperCrossingExcludesTouchingAndCollinearOverlap) {
   EXPECT_FALSE(SegmentsCrossProperly(s, Segment{Vec2(3, 0), Vec2(4, 1)}));
 }
 
+TEST(Geometry, LatticeWindowPutsItsCornerOnTheCellLattice) {
+  // 20 cells of 0.2 m centred on (3.05, 5.13): the corner (1.05, 3.13) snaps to (1.0, 3.2).
+  const Box w = LatticeWindow(Vec2(3.05, 5.13), 20, 0.2);
+  EXPECT_NEAR(w.min.x(), 1.0, 1e-12);
+  EXPECT_NEAR(w.min.y(), 3.2, 1e-12);
+  EXPECT_NEAR(w.max.x(), 5.0, 1e-12);
+  EXPECT_NEAR(w.max.y(), 7.2, 1e-12);
+  // A move smaller than half a cell keeps the same window: successive windows share cells.
+  const Box v = LatticeWindow(Vec2(3.08, 5.15), 20, 0.2);
+  EXPECT_TRUE(v.min.isApprox(w.min) && v.max.isApprox(w.max));
+}
+
 TEST(Geometry, SegmentIntersectionPoint) {
   auto p = SegmentIntersection(Segment{Vec2(0, 0), Vec2(4, 4)}, Segment{Vec2(0, 4), Vec2(4, 0)});
   ASSERT_TRUE(p);

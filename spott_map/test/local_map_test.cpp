@@ -52,6 +52,45 @@ TEST(Rasterize, ThickWallAndAreaFeatures) {
   EXPECT_EQ(walls.at(10, 8), Cell::kFree);
 }
 
+// A 0.8 m door (common in homes and offices) between 0.15 m walls, as cim_office's doors are
+// built: walls are boxes with flat ends, and a cell whose centre clears the padding is free, so
+// the Nomad 200 (radius 0.2285 m) and the B21 (0.2625 m), each padded by a localization error
+// of 0.075 m, keep a free column through the opening at 0.1 m cells, wherever the lattice falls.
+TEST(Rasterize, AnEightyCentimetreDoorStaysPassableForTheNomadAndTheB21) {
+  for (const double radius : {0.2285, 0.2625}) {
+    for (const double phase : {0.0, 0.02, 0.05, 0.07}) {
+      OccupancyRaster raster(Vec2(-2.0 + phase, -1.0), 40, 20, 0.1);
+      // The wall y = 0 from x = -2 to 2, with the opening x in [-0.4, 0.4].
+      RasterizeFeature(MakeSegment("w1", Segment{Vec2(-2.0, 0.0), Vec2(-0.4, 0.0)}, "wall", 0.15),
+                       radius + 0.075, raster);
+      RasterizeFeature(MakeSegment("w2", Segment{Vec2(0.4, 0.0), Vec2(2.0, 0.0)}, "wall", 0.15),
+                       radius + 0.075, raster);
+      bool column = false;
+      for (int ix = 0; ix < raster.width() && !column; ++ix) {
+        bool free = true;
+        for (int iy = 0; iy < raster.height(); ++iy) free &= raster.at(ix, iy) == Cell::kFree;
+        column = free;
+      }
+      EXPECT_TRUE(column) << "radius " << radius << ", lattice phase " << phase;
+    }
+  }
+}
+
+TEST(Rasterize, WallEndsAreFlat) {
+  // A 0.15 m thick wall ending at x = -0.02: the cell centre (0.05, 0.05) beyond its end, level
+  // with it, is 0.07 m from the box and free at a padding of 0.06 m (a rounded end, reaching
+  // 0.075 m further, would leave it 0.011 m away: padding).
+  OccupancyRaster raster(Vec2(-1.0, -0.5), 20, 10, 0.1);
+  const MapFeature wall =
+      MakeSegment("w", Segment{Vec2(-1.0, 0.0), Vec2(-0.02, 0.0)}, "wall", 0.15);
+  RasterizeFeature(wall, 0.06, raster);
+  EXPECT_EQ(raster.at(10, 5), Cell::kFree);
+  EXPECT_EQ(raster.at(9, 5), Cell::kObstacle);
+  EXPECT_NEAR(wall.DistanceTo(Vec2(0.05, 0.05)), 0.07, 1e-12);
+  EXPECT_NEAR(wall.DistanceTo(Vec2(-0.5, 0.2)), 0.125, 1e-12);
+  EXPECT_EQ(wall.DistanceTo(Vec2(-0.5, 0.0)), 0.0);
+}
+
 TEST(LocalMap, ClosedDoorIsAnObstacleAndOpeningItFreesTheWay) {
   LocalMapParameters p;
   p.window_size_m = 4.0;

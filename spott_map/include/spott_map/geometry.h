@@ -33,6 +33,12 @@ struct Box {
   Box Inflated(double margin) const;
 };
 
+/// The square window of `cells` x `cells` cells of `resolution_m` centred as near `centre` as the
+/// global lattice of cells allows (its corner on multiples of the resolution), so that successive
+/// windows share cells and the local and global planners place the same window. The one
+/// window-snapping rule of the stack (LocalMap::Recentre, the global planner's WindowTracker).
+Box LatticeWindow(const Vec2& centre, int cells, double resolution_m);
+
 /// z component of the cross product (a x b).
 double Cross(const Vec2& a, const Vec2& b);
 

@@ -44,9 +44,13 @@ struct MapFeature {
   Polygon Outline() const;
   /// Bounding box of the geometry (m).
   Box Bounds() const;
-  /// Distance from `p` to the geometry (0 inside an area feature).
+  /// Distance from `p` to the geometry (0 inside an area feature; a thick segment is a box with
+  /// flat ends).
   double DistanceTo(const Vec2& p) const;
 };
+
+/// The box of a segment of `thickness` (m): flat ends at the segment's ends, as walls are built.
+Polygon ThickSegmentOutline(const Segment& s, double thickness);
 
 MapFeature MakePoint(const std::string& id, const Vec2& p, const std::string& label);
 MapFeature MakeSegment(const std::string& id, const Segment& s, const std::string& label,

@@ -124,6 +124,15 @@ struct World {
   Box Bounds() const;
 };
 
+/// The one rule for the ids of a world (rooms, doors, walls, objects, zones, paths) and the
+/// names of its places, which task commands name (`go in room(office_101)`): an ASCII letter or
+/// '_', then ASCII letters, digits and '_'. The world loader refuses any other id with its
+/// file:line:column; the task-command parser reads exactly these as names.
+bool IsValidId(const std::string& id);
+
+/// The rule in words, for error messages.
+extern const char* const kIdRule;
+
 const char* ToString(RoomKind kind);
 const char* ToString(DoorState state);
 const char* ToString(DoorKind kind);

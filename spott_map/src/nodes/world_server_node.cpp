@@ -2,20 +2,24 @@
 // node graph and keeps the map database current as door states and sensed features arrive.
 //
 // Publishes (latched): map (nav_msgs/OccupancyGrid), room_door_graph, map_features,
-// world_markers. Subscribes: map_updates. Services: ~set_door_state, ~locate_room,
-// ~load_world. Parameters and topics are documented in spott_map/README.md.
+// world_places (named places, zones and paths), world_markers. Subscribes: map_updates.
+// Services: ~set_door_state, ~locate_room, ~lookup_place, ~load_world. Parameters and topics
+// are documented in spott_map/README.md.
 #include <cmath>
 
 #include <ros/ros.h>
 #include <spott_msgs/LoadWorld.h>
 #include <spott_msgs/LocateRoom.h>
+#include <spott_msgs/LookupPlace.h>
 #include <spott_msgs/MapUpdate.h>
 #include <spott_msgs/SetDoorState.h>
+#include <spott_msgs/WorldPlaces.h>
 
 #include "spott_map/local_map.h"
 #include "spott_map/ros/conversions.h"
 #include "spott_map/ros/map_update.h"
 #include "spott_map/world_loader.h"
+#include "spott_ros/parameter_reader.h"
 
 namespace spott_map {
 namespace {
@@ -38,9 +42,11 @@ class WorldServer {
     graph_pub_ = nh.advertise<spott_msgs::RoomDoorGraph>("room_door_graph", 1, true);
     features_pub_ = nh.advertise<spott_msgs::MapFeatureArray>("map_features", 1, true);
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
+    places_pub_ = nh.advertise<spott_msgs::WorldPlaces>("world_places", 1, true);
     updates_sub_ = nh.subscribe("map_updates", 10, &WorldServer::OnMapUpdate, this);
     door_srv_ = pnh.advertiseService("set_door_state", &WorldServer::OnSetDoorState, this);
     locate_srv_ = pnh.advertiseService("locate_room", &WorldServer::OnLocateRoom, this);
+    lookup_srv_ = pnh.advertiseService("lookup_place", &WorldServer::OnLookupPlace, this);
     load_srv_ = pnh.advertiseService("load_world", &WorldServer::OnLoadWorld, this);
     PublishAll();
     ROS_INFO("world_server: serving world '%s' (%zu rooms, %zu doors, %zu walls) from %s",
@@ -73,6 +79,7 @@ class WorldServer {
     graph_pub_.publish(conv::ToMsg(db_.graph(), world_.name, params_.frame_id, now));
     features_pub_.publish(conv::ToMsg(db_.features(), params_.frame_id, now));
     markers_pub_.publish(conv::ToMarkers(db_, params_.frame_id, now));
+    places_pub_.publish(conv::ToPlacesMsg(world_, params_.frame_id, now));
   }
 
   void OnMapUpdate(const spott_msgs::MapUpdate& update) {
@@ -117,6 +124,33 @@ class WorldServer {
     return true;
   }
 
+  bool OnLookupPlace(spott_msgs::LookupPlace::Request& req,
+                     spott_msgs::LookupPlace::Response& res) {
+    res.frame_id = params_.frame_id;
+    if (const Place* p = world_.FindPlace(req.name)) {
+      res.found = true;
+      res.kind = "place";
+      res.place = conv::ToMsg(*p);
+    } else if (const Zone* z = world_.FindZone(req.name)) {
+      res.found = true;
+      res.kind = "zone";
+      res.zone = conv::ToMsg(*z);
+    } else if (const NamedPath* path = world_.FindPath(req.name)) {
+      res.found = true;
+      res.kind = "path";
+      res.path = conv::ToMsg(*path);
+    } else {
+      res.found = false;
+      std::string names;
+      for (const Place& p : world_.places) names += (names.empty() ? "" : ", ") + p.name;
+      for (const Zone& z : world_.zones) names += (names.empty() ? "" : ", ") + z.id;
+      for (const NamedPath& q : world_.paths) names += (names.empty() ? "" : ", ") + q.id;
+      res.message = "world '" + world_.name + "' has no place, zone or path '" + req.name +
+                    "' (it has: " + (names.empty() ? "none" : names) + ")";
+    }
+    return true;
+  }
+
   bool OnLoadWorld(spott_msgs::LoadWorld::Request& req, spott_msgs::LoadWorld::Response& res) {
     WorldLoadResult loaded = LoadWorldFile(req.path);
     res.success = loaded.ok();
@@ -137,29 +171,22 @@ class WorldServer {
   WorldServerParameters params_;
   World world_;
   MapDatabase db_;
-  ros::Publisher map_pub_, graph_pub_, features_pub_, markers_pub_;
+  ros::Publisher map_pub_, graph_pub_, features_pub_, markers_pub_, places_pub_;
   ros::Subscriber updates_sub_;
-  ros::ServiceServer door_srv_, locate_srv_, load_srv_;
+  ros::ServiceServer door_srv_, locate_srv_, lookup_srv_, load_srv_;
 };
 
 // Reads and checks every parameter; each violation names its parameter.
-std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, WorldServerParameters& p) {
-  std::vector<std::string> violations;
-  pnh.param<std::string>("world_file", p.world_file, "");
-  pnh.param<std::string>("frame_id", p.frame_id, p.frame_id);
-  pnh.param("map_resolution", p.map_resolution_m, p.map_resolution_m);
-  pnh.param("feature_tolerance", p.feature_tolerance_m, p.feature_tolerance_m);
-  if (p.world_file.empty()) violations.push_back("~world_file is required (path to a world YAML)");
-  if (p.frame_id.empty()) violations.push_back("~frame_id must not be empty");
-  if (!(p.map_resolution_m > 0.0 && p.map_resolution_m <= 10.0)) {
-    violations.push_back("~map_resolution must be in (0, 10] m (got " +
-                         std::to_string(p.map_resolution_m) + ")");
-  }
-  if (!(p.feature_tolerance_m > 0.0)) {
-    violations.push_back("~feature_tolerance must be > 0 m (got " +
-                         std::to_string(p.feature_tolerance_m) + ")");
-  }
-  return violations;
+void ReadParameters(spott_ros::ParameterReader& r, WorldServerParameters& p) {
+  r.Get("world_file", p.world_file);
+  r.Get("frame_id", p.frame_id);
+  r.Get("map_resolution_m", p.map_resolution_m, "m");
+  r.Get("feature_tolerance_m", p.feature_tolerance_m, "m");
+  if (p.world_file.empty()) r.Fail("world_file is required (path to a world YAML)");
+  if (p.frame_id.empty()) r.Fail("frame_id must not be empty");
+  r.Require(p.map_resolution_m > 0.0 && p.map_resolution_m <= 10.0, "map_resolution_m",
+            "in (0, 10]", p.map_resolution_m);
+  r.Require(p.feature_tolerance_m > 0.0, "feature_tolerance_m", "> 0", p.feature_tolerance_m);
 }
 
 }  // namespace
@@ -169,20 +196,17 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "world_server");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
-  spott_map::WorldServerParameters params;
-  const auto violations = spott_map::ReadParameters(pnh, params);
-  if (!violations.empty()) {
-    for (const auto& v : violations) ROS_FATAL("world_server: %s", v.c_str());
-    return 1;
-  }
-  spott_map::WorldLoadResult loaded = spott_map::LoadWorldFile(params.world_file);
+  const auto params = spott_ros::ReadNodeParameters<spott_map::WorldServerParameters>(
+      pnh, "world_server", spott_map::ReadParameters);
+  if (!params) return 1;
+  spott_map::WorldLoadResult loaded = spott_map::LoadWorldFile(params->world_file);
   for (const auto& w : loaded.warnings) ROS_WARN("world_server: %s", w.ToString().c_str());
   if (!loaded.ok()) {
     ROS_FATAL("world_server: invalid world file:\n%s",
               spott_map::FormatErrors(loaded.errors).c_str());
     return 1;
   }
-  spott_map::WorldServer server(nh, pnh, params, std::move(*loaded.world));
+  spott_map::WorldServer server(nh, pnh, *params, std::move(*loaded.world));
   ros::spin();
   return 0;
 }

@@ -246,6 +246,34 @@ spott_msgs::NamedPlace ToMsg(const Place& place) {
   return m;
 }
 
+spott_msgs::Zone ToMsg(const Zone& zone) {
+  spott_msgs::Zone m;
+  m.id = zone.id;
+  m.polygon = ToPolygon(zone.polygon);
+  return m;
+}
+
+spott_msgs::NamedPath ToMsg(const NamedPath& path) {
+  spott_msgs::NamedPath m;
+  m.id = path.id;
+  for (const Vec2& p : path.points) m.points.push_back(ToPoint(p));
+  m.has_final_heading = path.final_yaw.has_value();
+  m.final_heading = path.final_yaw.value_or(0.0);
+  return m;
+}
+
+spott_msgs::WorldPlaces ToPlacesMsg(const World& world, const std::string& frame_id,
+                                    const ros::Time& stamp) {
+  spott_msgs::WorldPlaces m;
+  m.header.frame_id = frame_id;
+  m.header.stamp = stamp;
+  m.world = world.name;
+  for (const Place& p : world.places) m.places.push_back(ToMsg(p));
+  for (const Zone& z : world.zones) m.zones.push_back(ToMsg(z));
+  for (const NamedPath& p : world.paths) m.paths.push_back(ToMsg(p));
+  return m;
+}
+
 nav_msgs::OccupancyGrid MakeGrid(const Vec2& origin, int width, int height, double resolution_m,
                                  const std::string& frame_id, const ros::Time& stamp) {
   nav_msgs::OccupancyGrid g;
@@ -310,30 +338,6 @@ std::optional<OccupancyRaster> FromOccupancyGrid(const nav_msgs::OccupancyGrid& 
     }
   }
   return raster;
-}
-
-std_msgs::ColorRGBA Colour(float r, float g, float b, float a) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
-
-visualization_msgs::Marker MakeMarker(const std::string& ns, int id, int type,
-                                      const std::string& frame_id, const ros::Time& stamp) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame_id;
-  m.header.stamp = stamp;
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.scale.x = m.scale.y = m.scale.z = 0.1;
-  m.color = Colour(1.0f, 1.0f, 1.0f);
-  return m;
 }
 
 visualization_msgs::MarkerArray ToMarkers(const MapDatabase& db, const std::string& frame_id,

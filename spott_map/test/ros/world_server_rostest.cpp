@@ -5,38 +5,21 @@
 #include <ros/ros.h>
 #include <spott_msgs/LoadWorld.h>
 #include <spott_msgs/LocateRoom.h>
+#include <spott_msgs/LookupPlace.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/MapUpdate.h>
 #include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/SetDoorState.h>
+#include <spott_msgs/WorldPlaces.h>
+
+#include "spott_ros/testing/node_process.h"
 
 #include <functional>
 #include <optional>
 
 namespace {
 
-template <class Msg>
-class Latest {
- public:
-  Latest(ros::NodeHandle& nh, const std::string& topic)
-      : sub_(nh.subscribe(topic, 10, &Latest::On, this)) {}
-  // Waits until a message satisfying `ok` arrives (or has arrived).
-  bool WaitFor(const std::function<bool(const Msg&)>& ok, double seconds = 10.0) {
-    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-    while (ros::ok() && ros::WallTime::now() < end) {
-      ros::spinOnce();
-      if (msg_ && ok(*msg_)) return true;
-      ros::WallDuration(0.01).sleep();
-    }
-    return false;
-  }
-  const Msg& msg() const { return *msg_; }
-
- private:
-  void On(const Msg& m) { msg_ = m; }
-  ros::Subscriber sub_;
-  std::optional<Msg> msg_;
-};
+using spott_ros::testing::Latest;
 
 uint8_t DoorState(const spott_msgs::RoomDoorGraph& g, const std::string& id) {
   for (const auto& d : g.doors) {
@@ -56,18 +39,18 @@ class WorldServerTest : public ::testing::Test {
 TEST_F(WorldServerTest, PublishesTheWorldLatched) {
   Latest<spott_msgs::RoomDoorGraph> graph(nh_, "room_door_graph");
   ASSERT_TRUE(graph.WaitFor([](const auto& g) { return !g.rooms.empty(); }));
-  EXPECT_EQ(graph.msg().world, "two_rooms");
-  EXPECT_EQ(graph.msg().header.frame_id, "map");
-  EXPECT_EQ(graph.msg().rooms.size(), 3u);
-  EXPECT_EQ(graph.msg().doors.size(), 3u);
+  EXPECT_EQ(graph.msg()->world, "two_rooms");
+  EXPECT_EQ(graph.msg()->header.frame_id, "map");
+  EXPECT_EQ(graph.msg()->rooms.size(), 3u);
+  EXPECT_EQ(graph.msg()->doors.size(), 3u);
   Latest<nav_msgs::OccupancyGrid> map(nh_, "map");
   ASSERT_TRUE(map.WaitFor([](const auto& m) { return !m.data.empty(); }));
-  EXPECT_NEAR(map.msg().info.resolution, 0.1, 1e-6);
+  EXPECT_NEAR(map.msg()->info.resolution, 0.1, 1e-6);
   // The world spans 10 x 6 m plus 0.5 m on each side.
-  EXPECT_NEAR(map.msg().info.width * 0.1, 11.0, 0.25);
+  EXPECT_NEAR(map.msg()->info.width * 0.1, 11.0, 0.25);
   Latest<spott_msgs::MapFeatureArray> features(nh_, "map_features");
   ASSERT_TRUE(features.WaitFor([](const auto& f) { return !f.features.empty(); }));
-  EXPECT_EQ(features.msg().features.size(), 9u);  // the generated walls
+  EXPECT_EQ(features.msg()->features.size(), 9u);  // the generated walls
 }
 
 TEST_F(WorldServerTest, DoorStateServiceChangesTheGraphAndRefusesUnknownDoors) {
@@ -126,13 +109,13 @@ TEST_F(WorldServerTest, BadWorldIsRefusedWithItsPositionAndTheOldWorldIsKept) {
   EXPECT_EQ(locate.response.room_id, "lab");
   Latest<spott_msgs::RoomDoorGraph> graph(nh_, "room_door_graph");
   ASSERT_TRUE(graph.WaitFor([](const auto& g) { return !g.rooms.empty(); }));
-  EXPECT_EQ(graph.msg().world, "two_rooms");
+  EXPECT_EQ(graph.msg()->world, "two_rooms");
 }
 
 TEST_F(WorldServerTest, MapUpdatesAddNewFeaturesOnce) {
   Latest<spott_msgs::MapFeatureArray> features(nh_, "map_features");
   ASSERT_TRUE(features.WaitFor([](const auto& f) { return !f.features.empty(); }));
-  const std::size_t before = features.msg().features.size();
+  const std::size_t before = features.msg()->features.size();
   ros::Publisher pub = nh_.advertise<spott_msgs::MapUpdate>("map_updates", 10);
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10);
   while (pub.getNumSubscribers() == 0 && ros::WallTime::now() < end)
@@ -153,7 +136,42 @@ TEST_F(WorldServerTest, MapUpdatesAddNewFeaturesOnce) {
   pub.publish(u);  // again: nothing new
   ros::WallDuration(0.5).sleep();
   ros::spinOnce();
-  EXPECT_EQ(features.msg().features.size(), before + 1);
+  EXPECT_EQ(features.msg()->features.size(), before + 1);
+}
+
+TEST_F(WorldServerTest, ServesPlacesZonesAndPathsByName) {
+  Latest<spott_msgs::WorldPlaces> places(nh_, "world_places");
+  ASSERT_TRUE(places.WaitFor([](const auto& p) { return !p.places.empty(); }));
+  EXPECT_EQ(places.msg()->header.frame_id, "map");
+  EXPECT_EQ(places.msg()->world, "two_rooms");
+  ASSERT_EQ(places.msg()->zones.size(), 1u);
+  ASSERT_EQ(places.msg()->paths.size(), 1u);
+  for (const std::string& name :
+       {places.msg()->places[0].name, places.msg()->zones[0].id, places.msg()->paths[0].id}) {
+    spott_msgs::LookupPlace srv;
+    srv.request.name = name;
+    ASSERT_TRUE(ros::service::call("/world_server/lookup_place", srv));
+    EXPECT_TRUE(srv.response.found) << name;
+    EXPECT_EQ(srv.response.frame_id, "map");
+  }
+  spott_msgs::LookupPlace zone;
+  zone.request.name = places.msg()->zones[0].id;
+  ASSERT_TRUE(ros::service::call("/world_server/lookup_place", zone));
+  EXPECT_EQ(zone.response.kind, "zone");
+  EXPECT_EQ(zone.response.zone.polygon.points.size(), places.msg()->zones[0].polygon.points.size());
+  spott_msgs::LookupPlace none;
+  none.request.name = "nowhere";
+  ASSERT_TRUE(ros::service::call("/world_server/lookup_place", none));
+  EXPECT_FALSE(none.response.found);
+  EXPECT_NE(none.response.message.find(places.msg()->places[0].name), std::string::npos)
+      << none.response.message;
+}
+
+TEST(WorldServerNode, AnUnknownParameterStopsTheNodeNamingIt) {
+  const auto run = spott_ros::testing::RunNode(WORLD_SERVER_EXE,
+                                               "__name:=bad_world_server _map_resolution:=0.1");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("~map_resolution is not a parameter"), std::string::npos) << run.output;
 }
 
 }  // namespace

@@ -13,14 +13,18 @@
 #include <spott_msgs/Door.h>
 #include <spott_msgs/MapFeature.h>
 #include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/NamedPath.h>
 #include <spott_msgs/NamedPlace.h>
 #include <spott_msgs/Room.h>
 #include <spott_msgs/RoomDoorGraph.h>
+#include <spott_msgs/WorldPlaces.h>
+#include <spott_msgs/Zone.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "spott_map/map_database.h"
 #include "spott_map/occupancy_raster.h"
 #include "spott_map/world.h"
+#include "spott_ros/markers.h"
 
 namespace spott_map::ros_conversions {
 
@@ -29,11 +33,9 @@ geometry_msgs::Point ToPoint(const Vec2& p, double z = 0.0);  ///< z (m) above t
 /// origin (m) is the corner of cell (0, 0) in `frame_id`.
 nav_msgs::OccupancyGrid MakeGrid(const Vec2& origin, int width, int height, double resolution_m,
                                  const std::string& frame_id, const ros::Time& stamp);
-/// A marker colour; components in [0, 1].
-std_msgs::ColorRGBA Colour(float r, float g, float b, float a = 1.0f);
-/// A marker to fill in: action ADD, identity orientation, scale 0.1 m, white.
-visualization_msgs::Marker MakeMarker(const std::string& ns, int id, int type,
-                                      const std::string& frame_id, const ros::Time& stamp);
+// The start of every marker (spott_ros/markers.h), for the conversions' callers.
+using spott_ros::Colour;
+using spott_ros::MakeMarker;
 Vec2 FromPoint(const geometry_msgs::Point& p);
 geometry_msgs::Pose2D ToPose2D(const Pose2& p);
 Pose2 FromPose2D(const geometry_msgs::Pose2D& p);
@@ -59,6 +61,11 @@ spott_msgs::RoomDoorGraph ToMsg(const RoomDoorGraph& graph, const std::string& w
 std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& msg, std::string* error);
 
 spott_msgs::NamedPlace ToMsg(const Place& place);
+spott_msgs::Zone ToMsg(const Zone& zone);
+spott_msgs::NamedPath ToMsg(const NamedPath& path);
+/// Every named place, zone and path of `world`.
+spott_msgs::WorldPlaces ToPlacesMsg(const World& world, const std::string& frame_id,
+                                    const ros::Time& stamp);
 
 /// Free cells 0, padding 99 (like costmap_2d's inscribed cost), obstacles 100.
 nav_msgs::OccupancyGrid ToOccupancyGrid(const OccupancyRaster& raster, const std::string& frame_id,
