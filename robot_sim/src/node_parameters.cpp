@@ -21,6 +21,7 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
   rate(p.laser_rate_hz, "laser_rate_hz");
   rate(p.odom_rate_hz, "odom_rate_hz");
   rate(p.profile_rate_hz, "profile_rate_hz");
+  rate(p.battery_rate_hz, "battery_rate_hz");
   if (!(p.real_time_factor >= 0 && p.real_time_factor <= 1e4)) {
     e.push_back("real_time_factor must be in [0, 10000] (0 = as fast as possible)");
   }
@@ -31,7 +32,9 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
     if (f->empty()) e.push_back("frames must not be empty (map_frame, odom_frame, base_frame)");
   }
   for (const std::string& w : ValidateParameters(p.world)) e.push_back(w);
+  for (const std::string& w : ValidateParameters(p.consumers)) e.push_back(w);
   for (const std::string& w : ValidateParameters(p.odometry)) e.push_back(w);
+  for (const std::string& w : ValidateParameters(p.battery)) e.push_back(w);
   return e;
 }
 

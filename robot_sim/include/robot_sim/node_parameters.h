@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "robot_sim/battery.h"
+#include "robot_sim/consumer_pacer.h"
 #include "robot_sim/drive.h"
 #include "robot_sim/sim_world.h"
 
@@ -33,6 +35,11 @@ struct SimNodeParameters {
   /// off whenever a localization node publishes map->odom).
   bool publish_truth_map_to_odom = false;
   std::string octomap_file = "/tmp/robot_sim.bt";  ///< Where ~save_octomap writes.
+  /// The stack's outputs whose lag holds the clock (consumer_pacer.h).
+  PacerParameters consumers;
+  /// The battery's drain model (battery.h) and how often /battery is published, (0, physics].
+  BatteryParameters battery;
+  double battery_rate_hz = 1.0;
 };
 
 /// One message per violated parameter, naming it as in the YAML file.

@@ -1,9 +1,11 @@
 // robot_sim: the simulator node. Steps the ROS-free core at physics_rate_hz of simulated time,
 // publishes /clock (faster than real time when asked), odometry and tf odom->base_link, the
-// sensors, ground truth (evaluation only), and serves the fault services. Topics, services and
-// parameters are documented in robot_sim/README.md and config/robot_sim.yaml.
+// sensors, the battery, ground truth (evaluation only), and serves the fault services. Topics,
+// services and parameters are documented in robot_sim/README.md and config/robot_sim.yaml.
 #include <cmath>
+#include <cstring>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <geometry_msgs/TransformStamped.h>
@@ -17,11 +19,14 @@
 #include <std_msgs/Float64.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <topic_tools/shape_shifter.h>
 
 #include "robot_sim/fault_events.h"
 #include "robot_sim/ros/conversions.h"
 #include "robot_sim/ros/parameters.h"
 #include "spott_map/world_loader.h"
+#include "spott_ros/parameter_reader.h"
+#include "spott_ros/pose_conversions.h"
 
 #include <octomap/OcTree.h>
 
@@ -32,15 +37,21 @@ namespace conv = ros_conversions;
 
 geometry_msgs::TransformStamped ToTransform(const spott_map::Pose2& p, const std::string& frame,
                                             const std::string& child, const ros::Time& stamp) {
-  geometry_msgs::TransformStamped t;
-  t.header.frame_id = frame;
-  t.header.stamp = stamp;
-  t.child_frame_id = child;
-  t.transform.translation.x = p.x;
-  t.transform.translation.y = p.y;
-  t.transform.rotation.z = std::sin(p.yaw / 2);
-  t.transform.rotation.w = std::cos(p.yaw / 2);
-  return t;
+  return spott_ros::ToTransform(spott_ros::MakePose2D(p.x, p.y, p.yaw), frame, child, stamp);
+}
+
+// The header stamp of any message that starts with a std_msgs/Header (seq, stamp, frame_id):
+// the consumers' outputs the pacer watches, whatever their type.
+std::optional<ros::Time> HeaderStamp(const topic_tools::ShapeShifter& msg) {
+  if (msg.size() < 12) return std::nullopt;
+  std::vector<std::uint8_t> bytes(msg.size());
+  ros::serialization::OStream out(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
+  msg.write(out);
+  std::uint32_t sec, nsec;
+  std::memcpy(&sec, bytes.data() + 4, 4);
+  std::memcpy(&nsec, bytes.data() + 8, 4);
+  if (nsec >= 1000000000u) return std::nullopt;
+  return ros::Time(sec, nsec);
 }
 
 class SimNode {
@@ -51,7 +62,9 @@ class SimNode {
         sim_(std::move(sim)),
         robot_(robot),
         schedule_(std::move(schedule)),
-        rng_(static_cast<std::uint64_t>(params_.seed)) {
+        rng_(static_cast<std::uint64_t>(params_.seed)),
+        pacer_(params_.consumers),
+        battery_(params_.battery) {
     const RobotSpec& spec = sim_->spec(robot_);
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("clock", 10);
     odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
@@ -81,6 +94,14 @@ class SimNode {
     services_.push_back(sim_nh.advertiseService("odometry_slip", &SimNode::OnSlip, this));
     services_.push_back(sim_nh.advertiseService("save_octomap", &SimNode::OnSaveOctomap, this));
     services_.push_back(sim_nh.advertiseService("load_world", &SimNode::OnLoadWorld, this));
+    for (std::size_t i = 0; i < params_.consumers.topics.size(); ++i) {
+      consumer_subs_.push_back(nh.subscribe<topic_tools::ShapeShifter>(
+          params_.consumers.topics[i], 5, [this, i](const topic_tools::ShapeShifter::ConstPtr& m) {
+            if (const auto stamp = HeaderStamp(*m)) pacer_.Observe(i, stamp->toSec());
+          }));
+    }
+    rtf_pub_ = nh.advertise<std_msgs::Float64>("sim/real_time_factor", 1);
+    battery_pub_ = nh.advertise<sensor_msgs::BatteryState>("battery", 10);
     (void)pnh;
   }
 
@@ -93,13 +114,33 @@ class SimNode {
     const long sensor_every = every(params_.sensor_rate_hz);
     const long laser_every = every(params_.laser_rate_hz);
     const long profile_every = every(params_.profile_rate_hz);
+    const long battery_every = every(params_.battery_rate_hz);
     PublishClock(ros::Time(0, 0));
     PublishOdometry(ros::Time(0, 0));
     ros::WallTime wall_start = ros::WallTime::now();
     long step = 0;
+    ros::WallTime rtf_wall = wall_start;
+    double rtf_sim = 0.0;
     while (ros::ok()) {
       ros::getGlobalCallbackQueue()->callAvailable();
       const double now_s = step * dt;
+      // The stack lags behind the clock (a busy machine): wait for it instead of stepping on.
+      if (pacer_.Hold(now_s, ros::WallTime::now().toSec())) {
+        ROS_WARN_THROTTLE(10.0, "robot_sim: holding the clock: the stack lags %.2f s behind",
+                          pacer_.lag_s());
+        ros::WallDuration(0.0005).sleep();
+        if (params_.real_time_factor > 0) {  // resume at the asked pace, without a burst
+          wall_start =
+              ros::WallTime::now() - ros::WallDuration(step * dt / params_.real_time_factor);
+        }
+        continue;
+      }
+      for (const std::string& t : pacer_.TakeGivenUp()) {
+        ROS_WARN(
+            "robot_sim: %s is silent for %.1f s of wall time: not waiting for it until it "
+            "publishes again",
+            t.c_str(), params_.consumers.max_hold_s);
+      }
       RunSchedule(now_s);
       if (params_.cmd_vel_timeout_s > 0 && have_command_ &&
           now_s - last_command_s_ > params_.cmd_vel_timeout_s) {
@@ -109,6 +150,7 @@ class SimNode {
                  params_.cmd_vel_timeout_s);
       }
       sim_->Step(dt, rng_);
+      battery_.Step(dt, sim_->Velocity(robot_).v, sim_->Velocity(robot_).w);
       ++step;
       const ros::Time stamp(step * dt);
       PublishClock(stamp);
@@ -116,6 +158,19 @@ class SimNode {
       if (step % sensor_every == 0) PublishSensors(stamp);
       if (step % laser_every == 0) PublishLaser(stamp, laser_every * dt);
       if (step % profile_every == 0) PublishProfiles(stamp);
+      if (step % battery_every == 0) {
+        battery_pub_.publish(conv::ToBatteryState(battery_, params_.base_frame, stamp));
+      }
+      if (step % odom_every == 0) {  // the real-time factor achieved over the last second
+        const ros::WallTime w = ros::WallTime::now();
+        if ((w - rtf_wall).toSec() >= 1.0) {
+          std_msgs::Float64 rtf;
+          rtf.data = (step * dt - rtf_sim) / (w - rtf_wall).toSec();
+          rtf_pub_.publish(rtf);
+          rtf_wall = w;
+          rtf_sim = step * dt;
+        }
+      }
       if (params_.publish_octomap_markers && sim_->world().revision() != markers_revision_) {
         markers_revision_ = sim_->world().revision();
         markers_pub_.publish(
@@ -357,6 +412,11 @@ class SimNode {
       markers_pub_, profile_pub_;
   std::vector<ros::Publisher> ring_pubs_, range_pubs_;
   ros::Subscriber cmd_sub_, turret_sub_, head_sub_;
+  ConsumerPacer pacer_;
+  std::vector<ros::Subscriber> consumer_subs_;
+  ros::Publisher rtf_pub_;
+  Battery battery_;
+  ros::Publisher battery_pub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
 };
@@ -364,10 +424,10 @@ class SimNode {
 int Main(int argc, char** argv) {
   ros::init(argc, argv, "robot_sim");
   ros::NodeHandle nh, pnh("~");
-  SimNodeParameters params;
-  const std::vector<std::string> problems = ros_parameters::Read(pnh, params);
-  for (const std::string& p : problems) ROS_FATAL("robot_sim: parameter %s", p.c_str());
-  if (!problems.empty()) return 1;
+  auto read =
+      spott_ros::ReadNodeParameters<SimNodeParameters>(pnh, "robot_sim", ros_parameters::Read);
+  if (!read) return 1;
+  SimNodeParameters params = *read;
   const std::string pkg = ros::package::getPath("robot_sim");
   if (params.robot_file.empty())
     params.robot_file = pkg + "/config/robots/" + params.robot + ".yaml";

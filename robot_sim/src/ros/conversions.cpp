@@ -116,6 +116,24 @@ spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<
   return msg;
 }
 
+sensor_msgs::BatteryState ToBatteryState(const Battery& battery, const std::string& frame,
+                                         const ros::Time& stamp) {
+  sensor_msgs::BatteryState msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.voltage = static_cast<float>(battery.voltage_v());
+  msg.current = static_cast<float>(-battery.current_a());
+  msg.charge = static_cast<float>(battery.charge_ah());
+  msg.capacity = static_cast<float>(battery.capacity_ah());
+  msg.design_capacity = msg.capacity;
+  msg.percentage = static_cast<float>(battery.percent() / 100.0);
+  msg.power_supply_status = sensor_msgs::BatteryState::POWER_SUPPLY_STATUS_DISCHARGING;
+  msg.power_supply_health = sensor_msgs::BatteryState::POWER_SUPPLY_HEALTH_GOOD;
+  msg.power_supply_technology = sensor_msgs::BatteryState::POWER_SUPPLY_TECHNOLOGY_UNKNOWN;
+  msg.present = true;
+  return msg;
+}
+
 nav_msgs::Odometry ToOdometry(const spott_map::Pose2& pose, const Twist2& twist,
                               const std::string& frame, const std::string& child,
                               const ros::Time& stamp) {

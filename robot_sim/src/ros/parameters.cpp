@@ -1,6 +1,5 @@
 #include "robot_sim/ros/parameters.h"
 
-#include <set>
 #include <sstream>
 
 #include <ros/param.h>
@@ -8,29 +7,6 @@
 namespace robot_sim::ros_parameters {
 
 namespace {
-
-template <typename T>
-void Get(const ros::NodeHandle& pnh, const std::string& name, T& value,
-         std::vector<std::string>& errors, std::set<std::string>& known) {
-  known.insert(name);
-  if (!pnh.hasParam(name)) return;
-  if (!pnh.getParam(name, value)) errors.push_back(name + " has the wrong type");
-}
-
-void GetDouble(const ros::NodeHandle& pnh, const std::string& name, double& value,
-               std::vector<std::string>& errors, std::set<std::string>& known) {
-  known.insert(name);
-  if (!pnh.hasParam(name)) return;
-  XmlRpc::XmlRpcValue v;
-  pnh.getParam(name, v);
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
-    value = static_cast<double>(v);
-  } else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) {
-    value = static_cast<int>(v);
-  } else {
-    errors.push_back(name + " must be a number");
-  }
-}
 
 void Emit(const XmlRpc::XmlRpcValue& v, std::ostringstream& out) {
   switch (v.getType()) {
@@ -85,49 +61,49 @@ void Emit(const XmlRpc::XmlRpcValue& v, std::ostringstream& out) {
 
 }  // namespace
 
-std::vector<std::string> Read(const ros::NodeHandle& pnh, SimNodeParameters& p) {
-  std::vector<std::string> errors;
-  std::set<std::string> known = {"faults", "robot_description"};
-  Get(pnh, "world_file", p.world_file, errors, known);
-  Get(pnh, "robot", p.robot, errors, known);
-  Get(pnh, "robot_file", p.robot_file, errors, known);
-  Get(pnh, "urdf_file", p.urdf_file, errors, known);
-  Get(pnh, "start_pose", p.start_pose, errors, known);
-  Get(pnh, "seed", p.seed, errors, known);
-  GetDouble(pnh, "physics_rate_hz", p.physics_rate_hz, errors, known);
-  GetDouble(pnh, "sensor_rate_hz", p.sensor_rate_hz, errors, known);
-  GetDouble(pnh, "laser_rate_hz", p.laser_rate_hz, errors, known);
-  GetDouble(pnh, "odom_rate_hz", p.odom_rate_hz, errors, known);
-  GetDouble(pnh, "profile_rate_hz", p.profile_rate_hz, errors, known);
-  GetDouble(pnh, "real_time_factor", p.real_time_factor, errors, known);
-  GetDouble(pnh, "cmd_vel_timeout_s", p.cmd_vel_timeout_s, errors, known);
-  Get(pnh, "map_frame", p.map_frame, errors, known);
-  Get(pnh, "odom_frame", p.odom_frame, errors, known);
-  Get(pnh, "base_frame", p.base_frame, errors, known);
-  GetDouble(pnh, "wall_height_m", p.world.wall_height_m, errors, known);
-  GetDouble(pnh, "door_leaf_thickness_m", p.world.door_leaf_thickness_m, errors, known);
-  GetDouble(pnh, "octomap_resolution_m", p.world.octomap_resolution_m, errors, known);
-  Get(pnh, "unknown_doors_closed", p.world.unknown_doors_closed, errors, known);
-  GetDouble(pnh, "odometry/linear_scale", p.odometry.linear_scale, errors, known);
-  GetDouble(pnh, "odometry/angular_scale", p.odometry.angular_scale, errors, known);
-  GetDouble(pnh, "odometry/drift_rad_per_m", p.odometry.drift_rad_per_m, errors, known);
-  GetDouble(pnh, "odometry/linear_noise", p.odometry.linear_noise, errors, known);
-  GetDouble(pnh, "odometry/angular_noise", p.odometry.angular_noise, errors, known);
-  GetDouble(pnh, "odometry/angular_noise_per_m", p.odometry.angular_noise_per_m, errors, known);
-  Get(pnh, "publish_octomap_markers", p.publish_octomap_markers, errors, known);
-  Get(pnh, "octomap_file", p.octomap_file, errors, known);
-  Get(pnh, "publish_truth_map_to_odom", p.publish_truth_map_to_odom, errors, known);
-  // Unknown names under the node's namespace: most likely typos.
-  std::vector<std::string> names;
-  ros::param::getParamNames(names);
-  const std::string prefix = pnh.getNamespace() + "/";
-  for (const std::string& full : names) {
-    if (full.rfind(prefix, 0) != 0) continue;
-    const std::string name = full.substr(prefix.size());
-    if (!known.count(name)) errors.push_back("unknown parameter '" + name + "'");
-  }
-  for (const std::string& e : ValidateParameters(p)) errors.push_back(e);
-  return errors;
+void Read(spott_ros::ParameterReader& r, SimNodeParameters& p) {
+  r.Accept("faults");  // parsed by ParseFaultSchedule with line numbers (FaultScheduleYaml)
+  r.Get("world_file", p.world_file);
+  r.Get("robot", p.robot);
+  r.Get("robot_file", p.robot_file);
+  r.Get("urdf_file", p.urdf_file);
+  r.Get("start_pose", p.start_pose);
+  r.Get("seed", p.seed);
+  r.Get("physics_rate_hz", p.physics_rate_hz, "Hz");
+  r.Get("sensor_rate_hz", p.sensor_rate_hz, "Hz");
+  r.Get("laser_rate_hz", p.laser_rate_hz, "Hz");
+  r.Get("odom_rate_hz", p.odom_rate_hz, "Hz");
+  r.Get("profile_rate_hz", p.profile_rate_hz, "Hz");
+  r.Get("real_time_factor", p.real_time_factor);
+  r.Get("cmd_vel_timeout_s", p.cmd_vel_timeout_s, "s");
+  r.Get("map_frame", p.map_frame);
+  r.Get("odom_frame", p.odom_frame);
+  r.Get("base_frame", p.base_frame);
+  r.Get("wall_height_m", p.world.wall_height_m, "m");
+  r.Get("door_leaf_thickness_m", p.world.door_leaf_thickness_m, "m");
+  r.Get("octomap_resolution_m", p.world.octomap_resolution_m, "m");
+  r.Get("unknown_doors_closed", p.world.unknown_doors_closed);
+  r.Get("odometry/linear_scale", p.odometry.linear_scale);
+  r.Get("odometry/angular_scale", p.odometry.angular_scale);
+  r.Get("odometry/drift_rad_per_m", p.odometry.drift_rad_per_m, "rad/m");
+  r.Get("odometry/linear_noise", p.odometry.linear_noise);
+  r.Get("odometry/angular_noise", p.odometry.angular_noise);
+  r.Get("odometry/angular_noise_per_m", p.odometry.angular_noise_per_m);
+  r.Get("publish_octomap_markers", p.publish_octomap_markers);
+  r.Get("octomap_file", p.octomap_file);
+  r.Get("publish_truth_map_to_odom", p.publish_truth_map_to_odom);
+  r.Get("consumers/topics", p.consumers.topics);
+  r.Get("consumers/max_lag_s", p.consumers.max_lag_s, "s");
+  r.Get("consumers/max_hold_s", p.consumers.max_hold_s, "s");
+  r.Get("battery_rate_hz", p.battery_rate_hz, "Hz");
+  r.Get("battery/capacity_wh", p.battery.capacity_wh, "Wh");
+  r.Get("battery/initial_percent", p.battery.initial_percent, "%");
+  r.Get("battery/idle_power_w", p.battery.idle_power_w, "W");
+  r.Get("battery/power_per_mps_w", p.battery.power_per_mps_w, "W s/m");
+  r.Get("battery/power_per_rps_w", p.battery.power_per_rps_w, "W s/rad");
+  r.Get("battery/full_voltage_v", p.battery.full_voltage_v, "V");
+  r.Get("battery/empty_voltage_v", p.battery.empty_voltage_v, "V");
+  for (const std::string& e : ValidateParameters(p)) r.Fail(e);
 }
 
 std::string FaultScheduleYaml(const ros::NodeHandle& pnh) {

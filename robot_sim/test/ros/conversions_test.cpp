@@ -48,6 +48,25 @@ TEST(ConversionsTest, BumperSegmentsAreCentredEvery18Degrees) {
   EXPECT_TRUE(msg.pressed[5]);
 }
 
+TEST(ConversionsTest, BatteryStateCarriesAFractionAndADischargeCurrent) {
+  BatteryParameters p;
+  p.capacity_wh = 100.0;
+  p.initial_percent = 40.0;
+  p.idle_power_w = 24.0;
+  p.full_voltage_v = 26.0;
+  p.empty_voltage_v = 22.0;
+  const Battery b(p);  // drawing its idle 24 W
+  const auto msg = conv::ToBatteryState(b, "base_link", ros::Time(2.0));
+  EXPECT_NEAR(msg.percentage, 0.4, 1e-6);  // [0, 1], not percent
+  EXPECT_NEAR(msg.voltage, 22.0 + 0.4 * 4.0, 1e-4);
+  EXPECT_LT(msg.current, 0.0f);  // discharging
+  EXPECT_NEAR(msg.current, -24.0 / msg.voltage, 1e-4);
+  EXPECT_NEAR(msg.capacity, 100.0 / 24.0, 1e-5);
+  EXPECT_EQ(msg.power_supply_status, sensor_msgs::BatteryState::POWER_SUPPLY_STATUS_DISCHARGING);
+  EXPECT_TRUE(msg.present);
+  EXPECT_EQ(msg.header.frame_id, "base_link");
+}
+
 TEST(ConversionsTest, OdometryCarriesPoseAndTwist) {
   const auto msg =
       conv::ToOdometry({1, 2, M_PI / 2}, {0.3, 0.1}, "odom", "base_link", ros::Time(1));

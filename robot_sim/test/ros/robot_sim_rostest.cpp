@@ -22,6 +22,8 @@
 #include <spott_msgs/SensorFault.h>
 #include <spott_msgs/SetDoorState.h>
 
+#include "spott_ros/testing/node_process.h"
+
 namespace {
 
 constexpr double kRadius = 0.2285;
@@ -167,6 +169,9 @@ TEST_F(SimFixture, QuadrisProfilesFollowTheHead) {
   const ros::Time after = ros::Time::now();
   ASSERT_TRUE(WaitFor([&] { return profile_.header.stamp > after; }, 30.0));
   EXPECT_NEAR(profile_.ranges[31], 1.1785, 0.02);
+  // A message published before the simulator's subscription is connected is lost (a busy
+  // machine makes the handshake slow): wait for it.
+  ASSERT_TRUE(WaitFor([&] { return head_.getNumSubscribers() > 0; }, 30.0));
   sensor_msgs::JointState point;
   point.name = {"quadris_1_pan_joint"};
   point.position = {M_PI / 2};
@@ -276,6 +281,15 @@ TEST_F(SimFixture, OdometryDivergesByTheConfiguredDriftOverASquare) {
   const double expected = 0.01 * turned_ + 0.002 * travelled_;
   EXPECT_NEAR(std::remainder(odom_turn - truth_turn, 2 * M_PI), expected, 0.005);
   EXPECT_GT(expected, 0.075);
+}
+
+TEST(RobotSimParameters, BadParametersAreRefusedByName) {
+  const auto run = spott_ros::testing::RunNode(
+      ROBOT_SIM_EXE, "__name:=bad_sim _physics_rate_hz:=fast _sensor_rate_hetz:=10");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  for (const char* key : {"~physics_rate_hz", "~sensor_rate_hetz is not a parameter"}) {
+    EXPECT_NE(run.output.find(key), std::string::npos) << key << " in:\n" << run.output;
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/BatteryState.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/Range.h>
 #include <spott_msgs/AddObstacle.h>
@@ -18,6 +19,7 @@
 #include <spott_msgs/SetDoorState.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "robot_sim/battery.h"
 #include "robot_sim/fault_events.h"
 #include "robot_sim/robot_spec.h"
 #include "robot_sim/sim_world.h"
@@ -43,6 +45,10 @@ spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<
 nav_msgs::Odometry ToOdometry(const spott_map::Pose2& pose, const Twist2& twist,
                               const std::string& frame, const std::string& child,
                               const ros::Time& stamp);
+/// The battery (percentage in [0, 1] as sensor_msgs/BatteryState has it; current negative while
+/// discharging; charge and capacity in Ah at the nominal voltage).
+sensor_msgs::BatteryState ToBatteryState(const Battery& battery, const std::string& frame,
+                                         const ros::Time& stamp);
 /// Occupied OctoMap leaves as cube lists (one per leaf size), coloured by height.
 visualization_msgs::MarkerArray ToVoxelMarkers(const std::vector<VoxelLeaf>& leaves,
                                                const std::string& frame, const ros::Time& stamp);

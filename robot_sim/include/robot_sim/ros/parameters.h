@@ -7,13 +7,14 @@
 #include <ros/node_handle.h>
 
 #include "robot_sim/node_parameters.h"
+#include "spott_ros/parameter_reader.h"
 
 namespace robot_sim::ros_parameters {
 
-/// Reads every parameter under `pnh` into `p` (defaults stay where a parameter is unset) and
-/// returns one message per problem: a wrong type, an unknown name (a typo would otherwise be
-/// silently ignored), then every violation ValidateParameters finds.
-std::vector<std::string> Read(const ros::NodeHandle& pnh, SimNodeParameters& p);
+/// Reads every parameter of config/robot_sim.yaml into `p` (defaults stay where a parameter is
+/// unset) and records every problem in `r`: a wrong type, then every violation
+/// ValidateParameters finds; r.Finish() adds the unknown names.
+void Read(spott_ros::ParameterReader& r, SimNodeParameters& p);
 
 /// The `faults` parameter (a list of events, see fault_events.h) as YAML text for
 /// ParseFaultSchedule; "" when unset.
