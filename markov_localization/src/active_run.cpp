@@ -1,4 +1,5 @@
 #include "markov_localization/active_run.h"
+#include "markov_localization/validation.h"
 
 #include <cmath>
 #include <cstdio>
@@ -70,11 +71,7 @@ ActiveLocalizationRun::ActiveLocalizationRun(const ActiveRunParameters& params, 
   auto errors = ValidateParameters(params);
   if (!(threshold > 0.0 && threshold < 1.0)) errors.push_back("threshold must be in (0, 1)");
   if (!(timeout_s >= 0.0)) errors.push_back("timeout_s must be >= 0");
-  if (!errors.empty()) {
-    std::ostringstream out;
-    for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
-    throw std::invalid_argument(out.str());
-  }
+  ThrowIfInvalid(errors);
   if (random_motion_first && params_.random_motion_m > 0.0)
     StartWander(params_.random_motion_m, start);
 }

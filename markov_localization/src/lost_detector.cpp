@@ -1,6 +1,7 @@
 #include "markov_localization/lost_detector.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace markov_localization {
 
@@ -21,6 +22,13 @@ std::vector<std::string> ValidateParameters(const LostDetectorParameters& p) {
   return errors;
 }
 
+std::string LostDetector::Describe(const char* what, double fit) const {
+  char text[160];
+  std::snprintf(text, sizeof text, "%s (per-beam fit %.3g = %.2f x its usual %.3g)", what, fit,
+                slow_ > 0.0 ? fit / slow_ : 0.0, slow_);
+  return text;
+}
+
 void LostDetector::Reset() {
   fast_ = slow_ = 0.0;
   scans_since_reset_ = 0;
@@ -36,6 +44,7 @@ bool LostDetector::OnCertainty(double certainty, double threshold) {
   certain_scans_ = was_certain_ ? certain_scans_ + 1 : 0;
   if (!params_.enabled || !dropped || scans_since_reset_ <= params_.hold_scans) return false;
   if (fast_ >= params_.certainty_drop_ratio * slow_) return false;
+  reason_ = Describe("the certainty fell below its threshold while the fit dropped", fast_);
   scans_since_reset_ = 1;  // the hold starts again, as after any detection
   return true;
 }
@@ -56,6 +65,8 @@ bool LostDetector::Update(double log_likelihood_per_beam) {
   // Lost. The averages are kept: if the relocalization does not restore the usual fit the
   // detector fires again after the hold, while a lasting change of scene (clutter) is absorbed
   // by the slow average.
+  reason_ =
+      collapsed ? Describe("one scan's fit collapsed", r) : Describe("the scans' fit fell", fast_);
   scans_since_reset_ = 1;
   return true;
 }

@@ -1,4 +1,5 @@
 #include "markov_localization/map_model.h"
+#include "markov_localization/validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,14 +13,6 @@
 
 namespace markov_localization {
 
-namespace {
-std::string Join(const std::vector<std::string>& errors) {
-  std::ostringstream out;
-  for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
-  return out.str();
-}
-}  // namespace
-
 std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
   std::vector<std::string> errors;
   if (!(p.resolution_m > 0.0 && p.resolution_m <= 2.0))
@@ -30,12 +23,21 @@ std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
     errors.push_back("door_thickness_m must be in (0, 1] m");
   if (p.ray_cast_subdivision < 1 || p.ray_cast_subdivision > 8)
     errors.push_back("ray_cast_subdivision must be in [1, 8]");
+  if (p.occupied_threshold < 1 || p.occupied_threshold > 100)
+    errors.push_back("occupied_threshold must be in [1, 100]");
+  if (p.free_threshold < 0 || p.free_threshold > p.occupied_threshold)
+    errors.push_back("free_threshold must be in [0, occupied_threshold]");
   return errors;
 }
 
 MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParameters& params) {
+  return FromDatabase(world, spott_map::MapDatabase::FromWorld(world), params);
+}
+
+MapModel MapModel::FromDatabase(const spott_map::World& world, const spott_map::MapDatabase& db,
+                                const MapModelParameters& params) {
   const auto errors = ValidateParameters(params);
-  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  ThrowIfInvalid(errors);
   const spott_map::Box bounds = world.Bounds().Inflated(2.0 * params.resolution_m);
   const Vec2 size = bounds.max - bounds.min;
   if (!(size.x() > 0.0 && size.y() > 0.0))
@@ -52,7 +54,6 @@ MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParame
     throw std::invalid_argument("world '" + world.name + "' is too large for resolution_m");
   const int sub = params.ray_cast_subdivision;
   spott_map::OccupancyRaster raster(origin, width * sub, height * sub, params.resolution_m / sub);
-  const auto db = spott_map::MapDatabase::FromWorld(world);
   spott_map::RasterizeDatabase(db, 0.0, params.door_thickness_m, raster);
 
   MapModel map;
@@ -61,6 +62,7 @@ MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParame
   map.height_ = height;
   map.resolution_ = params.resolution_m;
   map.subdivision_ = sub;
+  map.surface_inside_cells_ = true;  // the geometry meets the fine cells it marks
   map.fine_width_ = width * sub;
   map.fine_height_ = height * sub;
   map.fine_occupied_.assign(static_cast<std::size_t>(map.fine_width_) * map.fine_height_, 0);
@@ -86,36 +88,88 @@ MapModel MapModel::FromWorld(const spott_map::World& world, const MapModelParame
 MapModel MapModel::FromOccupancy(const Vec2& origin, int width, int height, double resolution_m,
                                  const std::vector<std::int8_t>& data, int occupied_threshold,
                                  double state_clearance_m) {
+  OccupancyMap grid;
+  grid.origin = origin;
+  grid.width = width;
+  grid.height = height;
+  grid.resolution_m = resolution_m;
+  grid.data = data;
+  MapModelParameters p;
+  p.resolution_m = resolution_m;
+  p.state_clearance_m = state_clearance_m;
+  p.ray_cast_subdivision = 1;
+  p.occupied_threshold = occupied_threshold;
+  p.free_threshold = occupied_threshold;  // no intermediate unknown values
   std::vector<std::string> errors;
   if (width <= 0 || height <= 0) errors.push_back("width and height must be positive");
-  if (!(resolution_m > 0.0 && resolution_m <= 2.0))
-    errors.push_back("resolution_m must be in (0, 2] m");
   if (width > 0 && height > 0 &&
       data.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
     errors.push_back("data has " + std::to_string(data.size()) + " cells, expected width*height");
-  if (occupied_threshold < 1 || occupied_threshold > 100)
-    errors.push_back("occupied_threshold must be in [1, 100]");
-  if (!(state_clearance_m >= 0.0 && state_clearance_m <= 2.0))
-    errors.push_back("state_clearance_m must be in [0, 2] m");
-  if (!errors.empty()) throw std::invalid_argument(Join(errors));
+  ThrowIfInvalid(errors);
+  return FromOccupancy(grid, p);
+}
+
+MapModel MapModel::FromOccupancy(const OccupancyMap& grid, const MapModelParameters& params) {
+  std::vector<std::string> errors = ValidateParameters(params);
+  for (const auto& e : ValidateOccupancyMap(grid)) errors.push_back("occupancy grid: " + e);
+  // A rotated grid would rotate the belief's frame against the map frame; AMCL ignores the
+  // rotation silently, which is worse. Refused with the reason.
+  if (std::abs(std::remainder(grid.origin_yaw, 2.0 * M_PI)) > 1e-6)
+    errors.push_back("occupancy grid: origin yaw " + std::to_string(grid.origin_yaw) +
+                     " rad is not supported (only maps whose rows run along the map frame's x "
+                     "axis; rotate the image)");
+  ThrowIfInvalid(errors);
+  const double src = grid.resolution_m, res = params.resolution_m;
+  const int sub = params.ray_cast_subdivision;
+  const double fres = res / sub;
+  // The belief's grid in the occupancy grid's own (rotated) frame: same corner, same extent.
+  const int width = static_cast<int>(std::ceil(grid.width * src / res - 1e-9));
+  const int height = static_cast<int>(std::ceil(grid.height * src / res - 1e-9));
+  if (static_cast<double>(width) * height > 4.0e7)
+    throw std::invalid_argument("occupancy grid too large for resolution_m");
   MapModel map;
-  map.origin_ = origin;
+  map.origin_ = grid.origin;
   map.width_ = width;
   map.height_ = height;
-  map.resolution_ = resolution_m;
-  map.occupied_.assign(data.size(), 0);
-  std::vector<std::uint8_t> unknown(data.size(), 0);
-  for (std::size_t i = 0; i < data.size(); ++i) {
-    if (data[i] < 0 || data[i] > 100)
-      unknown[i] = 1;
-    else
-      map.occupied_[i] = data[i] >= occupied_threshold;
+  map.resolution_ = res;
+  map.subdivision_ = sub;
+  map.fine_width_ = width * sub;
+  map.fine_height_ = height * sub;
+  map.fine_occupied_.assign(static_cast<std::size_t>(map.fine_width_) * map.fine_height_, 0);
+  map.occupied_.assign(static_cast<std::size_t>(width) * height, 0);
+  // The grid's cell faces are fine-cell faces when the grid's cell is a whole number of fine
+  // cells; otherwise a face lies inside the fine cell it marks.
+  const double ratio = src / fres;
+  map.surface_inside_cells_ = std::abs(ratio - std::round(ratio)) > 1e-6 || ratio < 1.0 - 1e-6;
+  auto mark = [&](int fx, int fy) {
+    if (fx < 0 || fy < 0 || fx >= map.fine_width_ || fy >= map.fine_height_) return;
+    map.fine_occupied_[static_cast<std::size_t>(fy) * map.fine_width_ + fx] = 1;
+    map.occupied_[map.Index(fx / sub, fy / sub)] = 1;
+  };
+  // Fine cells whose square overlaps an obstacle cell [i src, (i+1) src) (open overlap: a fine
+  // cell that only touches it is free). The same frame, so the intervals are exact.
+  auto first_overlap = [&](double lo) { return static_cast<int>(std::floor(lo / fres + 1e-9)); };
+  auto last_overlap = [&](double hi) { return static_cast<int>(std::ceil(hi / fres - 1e-9)) - 1; };
+  for (int j = 0; j < grid.height; ++j) {
+    for (int i = 0; i < grid.width; ++i) {
+      if (grid.at(i, j) < params.occupied_threshold) continue;
+      const int fx0 = first_overlap(i * src), fx1 = last_overlap((i + 1) * src);
+      const int fy0 = first_overlap(j * src), fy1 = last_overlap((j + 1) * src);
+      for (int fy = fy0; fy <= fy1; ++fy)
+        for (int fx = fx0; fx <= fx1; ++fx) mark(fx, fy);
+    }
   }
-  map.subdivision_ = 1;
-  map.fine_width_ = width;
-  map.fine_height_ = height;
-  map.fine_occupied_ = map.occupied_;
-  map.ComputeStates(state_clearance_m, unknown);
+  // A belief cell is a state candidate when its centre lies in a free cell of the grid.
+  std::vector<std::uint8_t> excluded(map.occupied_.size(), 1);
+  for (int iy = 0; iy < height; ++iy)
+    for (int ix = 0; ix < width; ++ix) {
+      const int i = static_cast<int>(std::floor((ix + 0.5) * res / src));
+      const int j = static_cast<int>(std::floor((iy + 0.5) * res / src));
+      if (i < 0 || j < 0 || i >= grid.width || j >= grid.height) continue;
+      const int v = grid.at(i, j);
+      excluded[map.Index(ix, iy)] = !(v >= 0 && v < params.free_threshold);
+    }
+  map.ComputeStates(params.state_clearance_m, excluded);
   if (map.num_state_cells_ == 0)
     throw std::invalid_argument("occupancy grid leaves no free cell for the robot");
   return map;
@@ -160,6 +214,14 @@ void MapModel::ComputeStates(double clearance_m, const std::vector<std::uint8_t>
   for (auto s : state_) num_state_cells_ += s;
 }
 
+bool MapModel::FineOccupiedAt(const Vec2& p) const {
+  const double fres = resolution_ / subdivision_;
+  const int fx = static_cast<int>(std::floor((p.x() - origin_.x()) / fres));
+  const int fy = static_cast<int>(std::floor((p.y() - origin_.y()) / fres));
+  if (fx < 0 || fy < 0 || fx >= fine_width_ || fy >= fine_height_) return false;
+  return FineOccupied(fx, fy);
+}
+
 Vec2 MapModel::CellCentre(int ix, int iy) const {
   return origin_ + Vec2((ix + 0.5) * resolution_, (iy + 0.5) * resolution_);
 }
@@ -194,9 +256,9 @@ MapModel::Hit MapModel::RayCastHit(const Vec2& from, double angle_rad, double ma
   auto inside = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < fine_width_ && y < fine_height_;
   };
-  Hit miss{max_range_m, false, false};
+  Hit miss{max_range_m, 0.0, false, false};
   if (!inside(ix, iy)) return miss;
-  if (FineOccupied(ix, iy)) return Hit{0.0, true, std::abs(dx) >= std::abs(dy)};
+  if (FineOccupied(ix, iy)) return Hit{0.0, 0.0, true, std::abs(dx) >= std::abs(dy)};
   const double inf = std::numeric_limits<double>::infinity();
   const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
   const double t_delta_x = dx != 0.0 ? std::abs(1.0 / dx) : inf;
@@ -219,7 +281,10 @@ MapModel::Hit MapModel::RayCastHit(const Vec2& from, double angle_rad, double ma
       x_face = false;
     }
     if (t >= max_cells || !inside(ix, iy)) return miss;
-    if (FineOccupied(ix, iy)) return Hit{t * fres, true, x_face};
+    if (FineOccupied(ix, iy)) {
+      const double exit = std::min(t_max_x, t_max_y);  // leaving the cell hit
+      return Hit{t * fres, surface_inside_cells_ ? 0.5 * (exit - t) * fres : 0.0, true, x_face};
+    }
   }
 }
 

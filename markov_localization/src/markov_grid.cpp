@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -47,6 +48,12 @@ std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   if (!(m.sigma_theta_per_m >= 0.0)) errors.push_back("motion.sigma_theta_per_m must be >= 0");
   if (!(m.sigma_theta_per_rad >= 0.0)) errors.push_back("motion.sigma_theta_per_rad must be >= 0");
   for (const auto& e : ValidateParameters(p.lost)) errors.push_back("lost." + e);
+  if (!(p.distance_filter_probability > 0.5 && p.distance_filter_probability <= 1.0))
+    errors.push_back("distance_filter_probability must be in (0.5, 1]");
+  if (!(p.distance_filter_sigmas >= 0.0)) errors.push_back("distance_filter_sigmas must be >= 0");
+  if (p.distance_filter_max_parts < 1) errors.push_back("distance_filter_max_parts must be >= 1");
+  if (!(p.distance_filter_max_fraction >= 0.0 && p.distance_filter_max_fraction <= 1.0))
+    errors.push_back("distance_filter_max_fraction must be in [0, 1]");
   const bool threshold_valid = p.threshold_fraction > 0.0 && p.threshold_fraction < 1.0;
   if (p.lost.enabled && p.selective_update && threshold_valid &&
       !(p.lost.relocalization_mass > p.threshold_fraction))
@@ -114,6 +121,7 @@ void MarkovGrid::SetUniform() {
   rotation_residual_ = 0.0;
   detector_.Reset();
   lost_ = false;
+  lost_reason_.clear();
 }
 
 void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad) {
@@ -121,6 +129,7 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
   sigma_theta_rad = std::max(sigma_theta_rad, 0.1 * angular_resolution());
   detector_.Reset();
   lost_ = false;
+  lost_reason_.clear();
   rotation_ = 0;
   rotation_residual_ = 0.0;
   double total = 0.0;
@@ -146,6 +155,33 @@ void MarkovGrid::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_
   }
   if (!(total > 0.0)) {
     SetUniform();
+    return;
+  }
+  for (float& v : belief_) v = static_cast<float>(v / total);
+}
+
+void MarkovGrid::SetBelief(const std::vector<float>& dense) {
+  if (dense.size() != belief_.size())
+    throw std::invalid_argument("SetBelief: " + std::to_string(dense.size()) + " values for " +
+                                std::to_string(belief_.size()) + " cells");
+  rotation_ = 0;
+  rotation_residual_ = 0.0;
+  double total = 0.0;
+  const auto& mask = map_.state_mask();
+  for (int k = 0; k < nt_; ++k) {
+    float* data = LayerData(k);
+    const float* src = dense.data() + static_cast<std::size_t>(k) * LayerSize();
+    for (std::size_t c = 0; c < LayerSize(); ++c) {
+      const float v = mask[c] && std::isfinite(src[c]) && src[c] > 0.0f ? src[c] : 0.0f;
+      data[c] = v;
+      total += v;
+    }
+    active_[k] = 1;
+    alpha_[k] = 1.0;
+    moved_x_m_[k] = moved_y_m_[k] = moved_var_m2_[k] = 0.0;
+  }
+  if (!(total > 0.0)) {
+    ResetUniform("the new belief holds no probability on any state");
     return;
   }
   for (float& v : belief_) v = static_cast<float>(v / total);
@@ -344,8 +380,10 @@ void MarkovGrid::Normalize(const double* active_sums) {
     else
       total += stored_sum_[j] * alpha_[j];
   }
-  if (!(total > 0.0)) {  // every state ruled out: nothing is known any more.
-    SetUniform();
+  if (!(total > 0.0) || !std::isfinite(total)) {  // nothing is known any more: say so
+    ResetUniform(!(total > 0.0) ? "every state was ruled out (the motion moved all mass into "
+                                  "obstacles)"
+                                : "the belief's sum is not finite");
     return;
   }
   const float inv = static_cast<float>(1.0 / total);
@@ -368,6 +406,7 @@ bool MarkovGrid::ReportCertainty(double certainty, double threshold) {
   if (detector_.OnCertainty(certainty, threshold)) {
     MixUniform(params_.lost.relocalization_mass);
     lost_ = true;
+    lost_reason_ = detector_.reason();
   }
   return lost_;
 }
@@ -405,28 +444,231 @@ void MarkovGrid::WakeLayer(int j) {
 }
 
 SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) {
-  const int nb = sensor_.num_beams();
-  if (static_cast<int>(ranges_m.size()) != nb)
-    throw std::invalid_argument("SensorUpdate: " + std::to_string(ranges_m.size()) +
-                                " readings for a sensor model of " + std::to_string(nb) + " beams");
+  return SensorUpdateWith({SensorReading{&sensor_, &ranges_m}});
+}
+
+namespace {
+// The smallest value the product of one group's normalized columns may bring the largest
+// updated cell to: far above FLT_MIN (1.2e-38), so that neither the cells nor 1 / their sum
+// (the normalizing factor, a float) leave the float range.
+constexpr double kMinGroupProduct = 1e-30;
+}  // namespace
+
+SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>& readings) {
+  // Every beam of every reading: its model, row offset and the reading's range bin.
+  struct Beam {
+    const SensorModel* model;
+    int b;
+    int z;
+  };
+  std::vector<Beam> beams;
+  for (const SensorReading& r : readings) {
+    if (!r.sensor || !r.ranges_m)
+      throw std::invalid_argument("SensorUpdate: a reading without sensor model or ranges");
+    const SensorModel& s = *r.sensor;
+    if (s.num_headings() != nt_ || s.num_cells() != LayerSize())
+      throw std::invalid_argument("SensorUpdate: a sensor model built for another map or grid");
+    const int nb = s.num_beams();
+    if (static_cast<int>(r.ranges_m->size()) != nb)
+      throw std::invalid_argument("SensorUpdate: " + std::to_string(r.ranges_m->size()) +
+                                  " readings for a sensor model of " + std::to_string(nb) +
+                                  " beams");
+    for (int b = 0; b < nb; ++b) beams.push_back(Beam{&s, b, s.BeamBin(b, (*r.ranges_m)[b])});
+  }
   SensorUpdateStats stats;
-  const int bins = sensor_.num_bins();
+  stats.beam_used.assign(beams.size(), 1);
+  DistanceFilter(
+      beams.size(), [&](std::size_t i) { return beams[i].model; },
+      [&](std::size_t i) { return beams[i].b; }, [&](std::size_t i) { return beams[i].z; },
+      &stats.beam_used);
+  {
+    std::vector<Beam> kept;
+    for (std::size_t i = 0; i < beams.size(); ++i)
+      if (stats.beam_used[i]) kept.push_back(beams[i]);
+    stats.beams_filtered = static_cast<int>(beams.size() - kept.size());
+    beams.swap(kept);
+  }
+  stats.beams = static_cast<int>(beams.size());
+  if (beams.empty()) return stats;
+  // The lost detector's surprise at the most likely state before the update (see
+  // LostDetectorParameters::surprise).
+  double surprise = std::numeric_limits<double>::quiet_NaN();
+  if (params_.lost.surprise && ActiveParts() <= params_.distance_filter_max_parts) {
+    int best_j = -1;
+    std::size_t best_c = 0;
+    float best = -1.0f;
+    for (int j = 0; j < nt_; ++j) {
+      if (!active_[j]) continue;
+      const float* data = LayerData(j);
+      for (std::size_t sp = 0; sp + 1 < spans_.size(); sp += 2)
+        for (std::uint32_t c = spans_[sp]; c < spans_[sp + 1]; ++c)
+          if (data[c] > best) best = data[c], best_j = j, best_c = c;
+    }
+    if (best_j >= 0) {
+      // The least surprising of the most likely state and its 26 neighbours: the cells and
+      // heading bins quantize the pose, and in a doorway the cell next to the true one sees
+      // the jambs differently (a single-scan "collapse" at every door at 10 cm otherwise).
+      const int k0 = HeadingOfLayer(best_j);
+      const int cx = static_cast<int>(best_c % static_cast<std::size_t>(nx()));
+      const int cy = static_cast<int>(best_c / static_cast<std::size_t>(nx()));
+      for (int dk = -1; dk <= 1; ++dk)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int x = cx + dx, y = cy + dy;
+            if (!map_.Contains(x, y) || !map_.IsState(x, y)) continue;
+            const int k = ((k0 + dk) % nt_ + nt_) % nt_;
+            const std::size_t c = map_.Index(x, y);
+            double sum = 0.0;
+            for (const Beam& b : beams) {
+              const SensorModel& s = *b.model;
+              const int e = s.BeamRow(b.b, (k + s.beam_offset(b.b)) % nt_)[c];
+              sum += std::log(s.Likelihood(e, b.z)) - s.ExpectedLogLikelihood(e);
+            }
+            const double mean = sum / static_cast<double>(beams.size());
+            if (!(surprise >= mean)) surprise = mean;
+          }
+    }
+  }
+  stats.surprise_per_beam = surprise;
   // Per beam, the column of ratios P(z_b | e) / P~(z_b) for the reading's bin z_b, divided by
-  // its largest entry so that the product over 24 beams cannot overflow a float; the common
-  // factor `unlikely_factor` (prod_b 1 / max_e ratio) is what the cells left out by eq. (4)
-  // are multiplied by instead of 1, so the normalized result is eq. (4) exactly.
+  // its largest entry (so no product overflows); 1 / that largest entry is the factor of the
+  // cells left out by eq. (4) instead of 1, so the normalized result is eq. (4) exactly.
   // Stored with kernels::kPermuteBins floats per beam when the table is that small (the AVX-512
   // kernel keeps a column in registers), zero-padded.
+  //
+  // Numerically safe for any number of beams: the beams are applied in groups, each group one
+  // exact update of eq. (2) / (4) with its own normalization (the product of the groups'
+  // normalized updates is the normalized product). A group holds as many beams as keep the
+  // largest updated cell above kMinGroupProduct even if every beam took its column's smallest
+  // entry there: after a normalization the largest updated cell is at least 0.5 / |L| (at most
+  // 0.01 of the mass is set aside, eq. (4)), so the group's product of column minima must stay
+  // above kMinGroupProduct * 2 |L|. A 24-sonar ring is one group in most scans.
+  int bins = 0;
+  for (const auto& b : beams) bins = std::max(bins, b.model->num_bins());
   const int stride = bins <= kernels::kPermuteBins ? kernels::kPermuteBins : bins;
-  std::vector<float> columns(static_cast<std::size_t>(nb) * stride, 0.0f);
-  double log_unlikely_factor = 0.0;
-  for (int b = 0; b < nb; ++b) {
-    const int z = sensor_.RangeBin(ranges_m[b]);
+  std::vector<float> columns(beams.size() * stride, 0.0f);
+  std::vector<double> log_max(beams.size()), log_min(beams.size());
+  for (std::size_t i = 0; i < beams.size(); ++i) {
+    const SensorModel& s = *beams[i].model;
+    const int z = beams[i].z;
     float mx = 0.0f;
-    for (int e = 0; e < bins; ++e) mx = std::max(mx, sensor_.Ratio(e, z));
-    for (int e = 0; e < bins; ++e) columns[b * stride + e] = sensor_.Ratio(e, z) / mx;
-    log_unlikely_factor -= std::log(static_cast<double>(mx));
+    for (int e = 0; e < s.num_bins(); ++e) mx = std::max(mx, s.Ratio(e, z));
+    float mn = 1.0f;
+    for (int e = 0; e < s.num_bins(); ++e) {
+      const float c = s.Ratio(e, z) / mx;
+      columns[i * stride + e] = c;
+      mn = std::min(mn, c);
+    }
+    log_max[i] = std::log(static_cast<double>(mx));
+    log_min[i] = std::log(std::max(static_cast<double>(mn), 1e-30));
   }
+  const double budget =
+      std::log(kMinGroupProduct) + std::log(2.0 * static_cast<double>(NumStates()));
+  double log_alpha = 0.0;  // sum over the groups of log alpha_g
+  std::size_t begin = 0;
+  while (begin < beams.size()) {
+    std::size_t end = begin + 1;
+    double sum = log_min[begin];
+    while (end < beams.size() && sum + log_min[end] >= budget) sum += log_min[end++];
+    double log_unlikely_factor = 0.0;
+    for (std::size_t i = begin; i < end; ++i) log_unlikely_factor -= log_max[i];
+    std::vector<std::pair<const SensorModel*, int>> group;
+    for (std::size_t i = begin; i < end; ++i) group.emplace_back(beams[i].model, beams[i].b);
+    double alpha = 0.0;
+    if (!SensorGroup(columns.data() + begin * stride, stride, group, log_unlikely_factor, &stats,
+                     &alpha)) {
+      return stats;  // reset, with the reason in stats
+    }
+    log_alpha += std::log(alpha);
+    ++stats.groups;
+    begin = end;
+  }
+  stats.log_normalizer = log_alpha;
+  stats.normalizer = std::exp(log_alpha);
+  stats.log_likelihood_per_beam = -log_alpha / static_cast<double>(beams.size());
+  bool woken = false;
+  for (int j = 0; j < nt_; ++j) {
+    if (!active_[j] && alpha_[j] > 1.0) {  // the rest of the belief lost against this part
+      WakeLayer(j);
+      ++stats.parts_woken;
+      woken = true;
+    }
+  }
+  if (woken) Normalize();
+  if (params_.selective_update) {
+    for (int j = 0; j < nt_; ++j) {
+      if (!active_[j]) continue;
+      const float mx =
+          woken || layer_max_[j] < 0.0f ? kernels::Max(LayerData(j), LayerSize()) : layer_max_[j];
+      if (mx < static_cast<float>(threshold_)) {
+        active_[j] = 0;
+        alpha_[j] = 1.0;
+        stored_sum_[j] = LayerSum(j);
+        moved_x_m_[j] = moved_y_m_[j] = moved_var_m2_[j] = 0.0;
+      }
+    }
+  }
+  // The detector's input: the surprise when asked for (NaN while it cannot be computed: the
+  // detector then waits), else the predictive fit.
+  lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam);
+  if (lost_) {
+    lost_reason_ = detector_.reason();
+    MixUniform(params_.lost.relocalization_mass);
+    stats.lost_detected = true;
+    stats.lost_reason = lost_reason_;
+  }
+  return stats;
+}
+
+template <typename ModelOf, typename BeamOf, typename BinOf>
+void MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of, BinOf bin_of,
+                                std::vector<std::uint8_t>* used) const {
+  if (!params_.distance_filter || ActiveParts() > params_.distance_filter_max_parts) return;
+  // P(the reading is more than margin shorter than expected) under the belief, over the
+  // states above theta (the rest hold less than 1% of the mass).
+  const float theta = static_cast<float>(threshold_);
+  std::vector<double> shorter(n, 0.0);
+  std::vector<int> margin_bins(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SensorModel& s = *model_of(i);
+    margin_bins[i] = static_cast<int>(std::ceil(
+        params_.distance_filter_sigmas * s.parameters().sigma_hit_m / s.parameters().range_bin_m -
+        1e-9));
+  }
+  double mass = 0.0;
+  for (int j = 0; j < nt_; ++j) {
+    if (!active_[j]) continue;
+    const int k = HeadingOfLayer(j);
+    const float* data = LayerData(j);
+    std::vector<const std::uint8_t*> rows(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const SensorModel& s = *model_of(i);
+      rows[i] = s.BeamRow(beam_of(i), (k + s.beam_offset(beam_of(i))) % nt_);
+    }
+    for (std::size_t sp = 0; sp + 1 < spans_.size(); sp += 2) {
+      for (std::uint32_t c = spans_[sp]; c < spans_[sp + 1]; ++c) {
+        const float p = data[c];
+        if (p <= theta) continue;
+        mass += p;
+        for (std::size_t i = 0; i < n; ++i)
+          if (bin_of(i) + margin_bins[i] < rows[i][c]) shorter[i] += p;
+      }
+    }
+  }
+  if (!(mass > 0.0)) return;
+  std::size_t left_out = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    left_out += shorter[i] >= params_.distance_filter_probability * mass;
+  if (left_out > params_.distance_filter_max_fraction * n) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (shorter[i] >= params_.distance_filter_probability * mass) (*used)[i] = 0;
+}
+
+bool MarkovGrid::SensorGroup(const float* columns, int stride,
+                             const std::vector<std::pair<const SensorModel*, int>>& beams,
+                             double log_unlikely_factor, SensorUpdateStats* stats,
+                             double* alpha_out) {
+  const int nb = static_cast<int>(beams.size());
   const double unlikely_factor = std::exp(log_unlikely_factor);
   const float theta = params_.selective_update ? static_cast<float>(threshold_) : 0.0f;
   std::vector<int> active_layers;
@@ -434,6 +676,7 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     if (active_[j]) active_layers.push_back(j);
   const int n = static_cast<int>(active_layers.size());
   const int chunks = n >= kMinParallelParts ? kChunks : 1;
+  const std::size_t cells = LayerSize();
   // Each part's sums in its own place, added below in part order whatever thread ran it.
   std::vector<kernels::SensorLayerOut> outs(nt_);
   ForEach(pool_.get(), chunks, [&](int t) {
@@ -441,13 +684,16 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
       const int j = active_layers[i];
       const int k = HeadingOfLayer(j);
-      for (int b = 0; b < nb; ++b)
-        rows[b] = sensor_.ExpectedRow((k + sensor_.beam_offset(b)) % nt_);
+      for (int b = 0; b < nb; ++b) {
+        const SensorModel& s = *beams[b].first;
+        const int beam = beams[b].second;
+        rows[b] = s.BeamRow(beam, (k + s.beam_offset(beam)) % nt_);
+      }
       kernels::SensorLayerIn in;
       in.data = LayerData(j);
-      in.flags = evaluated_.data() + static_cast<std::size_t>(j) * LayerSize();
+      in.flags = evaluated_.data() + static_cast<std::size_t>(j) * cells;
       in.rows = rows.data();
-      in.columns = columns.data();
+      in.columns = columns;
       in.beams = nb;
       in.column_stride = stride;
       in.theta = theta;
@@ -457,72 +703,60 @@ SensorUpdateStats MarkovGrid::SensorUpdate(const std::vector<double>& ranges_m) 
     }
   });
   double likely_total = 0.0, unlikely_total = 0.0;
+  std::size_t evaluated = 0;
   for (int j = 0; j < nt_; ++j) {
     if (!active_[j]) {
       unlikely_total += stored_sum_[j] * alpha_[j];
       continue;
     }
-    ++stats.active_parts;
-    stats.states_evaluated += outs[j].evaluated;
+    evaluated += outs[j].evaluated;
     likely_total += outs[j].likely;
     unlikely_total += outs[j].unlikely;
   }
+  stats->states_evaluated = std::max(stats->states_evaluated, evaluated);
+  stats->active_parts = n;
   // total in the scale of the normalized columns; alpha of eq. (4) is unlikely_factor / total.
   const double total = likely_total + unlikely_factor * unlikely_total;
-  if (!(total > 0.0) || !std::isfinite(total)) {
-    SetUniform();
-    return stats;
+  if (!(total > 0.0) || !std::isfinite(total) || !(1.0 / total < 1e37)) {
+    ResetUniform(!(total > 0.0) ? "every state was ruled out by the scan (likelihood sum 0)"
+                                : "the scan's likelihood sum left the float range");
+    stats->lost_detected = true;
+    stats->lost_reason = lost_reason_;
+    return false;
   }
   const double alpha = unlikely_factor / total;
-  stats.normalizer = alpha;
-  stats.log_likelihood_per_beam = -std::log(alpha) / nb;
   const float a_likely = static_cast<float>(1.0 / total);
   const float a_unlikely = static_cast<float>(alpha);
-  std::vector<float> layer_max(nt_, 0.0f);
+  layer_max_.assign(nt_, -1.0f);
   ForEach(pool_.get(), chunks, [&](int t) {
     for (int i = t * n / chunks; i < (t + 1) * n / chunks; ++i) {
       const int j = active_layers[i];
       // Which factor a cell gets depends on whether it was updated; its value before was
       // <= theta exactly when it was left out. A floor keeps every state recoverable.
-      layer_max[j] = kernels::ScaleLayer(
-          LayerData(j), evaluated_.data() + static_cast<std::size_t>(j) * LayerSize(),
+      layer_max_[j] = kernels::ScaleLayer(
+          LayerData(j), evaluated_.data() + static_cast<std::size_t>(j) * cells,
           map_.state_mask().data(), spans_.data(), spans_.size() / 2, a_likely, a_unlikely, floor_);
     }
   });
-  for (int j = 0; j < nt_; ++j) {
-    if (!active_[j]) {
-      alpha_[j] *= alpha;
-      if (alpha_[j] > 1.0) {  // the rest of the belief lost against this part: wake it.
-        WakeLayer(j);
-        ++stats.parts_woken;
-        layer_max[j] = -1.0f;  // not known after the wake: computed below
-      }
+  for (int j : active_layers) {
+    if (!std::isfinite(layer_max_[j])) {
+      ResetUniform("the sensor update produced a non-finite probability");
+      stats->lost_detected = true;
+      stats->lost_reason = lost_reason_;
+      return false;
     }
   }
-  if (stats.parts_woken > 0) Normalize();
-  if (params_.selective_update) {
-    for (int j = 0; j < nt_; ++j) {
-      if (!active_[j]) continue;
-      const float* data = LayerData(j);
-      float mx = layer_max[j];
-      if (stats.parts_woken > 0 || mx < 0.0f) {  // normalized again: the maximum changed
-        mx = 0.0f;
-        for (std::size_t c = 0; c < LayerSize(); ++c) mx = std::max(mx, data[c]);
-      }
-      if (mx < theta) {
-        active_[j] = 0;
-        alpha_[j] = 1.0;
-        stored_sum_[j] = LayerSum(j);
-        moved_x_m_[j] = moved_y_m_[j] = moved_var_m2_[j] = 0.0;
-      }
-    }
-  }
-  lost_ = detector_.Update(stats.log_likelihood_per_beam);
-  if (lost_) {
-    MixUniform(params_.lost.relocalization_mass);
-    stats.lost_detected = true;
-  }
-  return stats;
+  for (int j = 0; j < nt_; ++j)
+    if (!active_[j]) alpha_[j] *= alpha;
+  *alpha_out = alpha;
+  return true;
+}
+
+void MarkovGrid::ResetUniform(const std::string& reason) {
+  SetUniform();
+  lost_ = true;
+  lost_reason_ = reason;
+  ++resets_;
 }
 
 double MarkovGrid::Probability(int ix, int iy, int k) const {

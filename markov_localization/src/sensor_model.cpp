@@ -14,6 +14,11 @@ std::vector<std::string> ValidateParameters(const SensorModelParameters& p) {
     if (!std::isfinite(a)) errors.push_back("beam_angles_rad holds a non-finite angle");
   if (!(p.sensor_offset_m >= 0.0 && p.sensor_offset_m < 2.0))
     errors.push_back("sensor_offset_m must be in [0, 2) m");
+  if (!p.beam_origins_m.empty() && p.beam_origins_m.size() != p.beam_angles_rad.size())
+    errors.push_back("beam_origins_m must be empty or hold one origin per beam angle");
+  for (const Vec2& o : p.beam_origins_m)
+    if (!(o.allFinite() && o.norm() < 2.0))
+      errors.push_back("beam_origins_m must be finite and within 2 m of the centre");
   if (!(p.max_range_m > 0.0 && p.max_range_m <= 100.0))
     errors.push_back("max_range_m must be in (0, 100] m");
   if (!(p.beam_width_rad >= 0.0 && p.beam_width_rad < M_PI))
@@ -33,6 +38,8 @@ std::vector<std::string> ValidateParameters(const SensorModelParameters& p) {
       errors.push_back(std::string(names[i]) + " must be in [0, 1]");
   if (std::abs(w[0] + w[1] + w[2] + w[3] - 1.0) > 1e-6)
     errors.push_back("z_hit + z_short + z_max + z_rand must be 1");
+  if (!(p.likelihood_exponent > 0.0 && p.likelihood_exponent <= 1.0))
+    errors.push_back("likelihood_exponent must be in (0, 1]");
   if (!(p.z_rand > 0.0 || p.z_max > 0.0))
     errors.push_back("z_rand must be > 0 (or z_max > 0) so that no reading has likelihood 0");
   return errors;
@@ -50,12 +57,13 @@ namespace {
 // pulse reflects and the echo is the whole path to a second surface that scatters (a corner), or
 // none (max range).
 double EchoRange(const MapModel& map, const Vec2& from, double angle, double max_range,
-                 double critical_angle) {
+                 double critical_angle, bool with_depth = false) {
   const MapModel::Hit first = map.RayCastHit(from, angle, max_range);
   if (!first.hit) return max_range;
   const double cos_critical = std::cos(critical_angle) - 1e-9;
   const double dx = std::cos(angle), dy = std::sin(angle);
-  if ((first.x_face ? std::abs(dx) : std::abs(dy)) >= cos_critical) return first.range_m;
+  if ((first.x_face ? std::abs(dx) : std::abs(dy)) >= cos_critical)
+    return std::min(max_range, first.range_m + (with_depth ? first.depth_m : 0.0));
   const double left = max_range - first.range_m;
   if (left <= 0.0) return max_range;
   // Reflect off the face, starting just before it (still in free space).
@@ -66,7 +74,7 @@ double EchoRange(const MapModel& map, const Vec2& from, double angle, double max
   if (!second.hit) return max_range;
   const double rx = std::cos(reflected), ry = std::sin(reflected);
   if ((second.x_face ? std::abs(rx) : std::abs(ry)) < cos_critical) return max_range;
-  return std::min(max_range, first.range_m + second.range_m);
+  return std::min(max_range, first.range_m + second.range_m + (with_depth ? second.depth_m : 0.0));
 }
 
 }  // namespace
@@ -90,14 +98,37 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   const int max_bin = static_cast<int>(std::ceil(params.max_range_m / params.range_bin_m - 1e-9));
   num_bins_ = max_bin + 1;
 
-  // Expected ranges by ray casting from each state cell's centre, for each heading bin.
+  // Beam origins off the axis: the part along the beam corrects the reading, the part across
+  // it selects the cell the table is read at (rounded to whole cells).
   num_cells_ = map.NumCells();
-  expected_.assign(num_cells_ * num_headings, static_cast<std::uint8_t>(max_bin));
+  const int nb = static_cast<int>(params.beam_angles_rad.size());
+  along_m_.assign(nb, 0.0);
+  shift_.assign(static_cast<std::size_t>(nb) * num_headings, 0);
+  std::ptrdiff_t max_shift = 0;
+  if (!params.beam_origins_m.empty()) {
+    for (int b = 0; b < nb; ++b) {
+      const double beta = params.beam_angles_rad[b];
+      const Vec2& o = params.beam_origins_m[b];
+      along_m_[b] = o.x() * std::cos(beta) + o.y() * std::sin(beta) - params.sensor_offset_m;
+      const double across = -o.x() * std::sin(beta) + o.y() * std::cos(beta);
+      for (int d = 0; d < num_headings; ++d) {
+        const double dir = d * heading_res;  // the beam's absolute direction
+        const long sx = std::lround(-across * std::sin(dir) / map.resolution());
+        const long sy = std::lround(across * std::cos(dir) / map.resolution());
+        const std::ptrdiff_t s = static_cast<std::ptrdiff_t>(sy) * map.width() + sx;
+        shift_[static_cast<std::size_t>(b) * num_headings + d] = s;
+        max_shift = std::max<std::ptrdiff_t>(max_shift, s < 0 ? -s : s);
+      }
+    }
+  }
+  // Reads shifted past the first or last cell land in padding that holds the max-range bin.
+  pad_ = static_cast<std::size_t>(max_shift);
+  expected_.assign(num_cells_ * num_headings + 2 * pad_, static_cast<std::uint8_t>(max_bin));
   for (int d = 0; d < num_headings; ++d) {
     const double angle = d * heading_res;
     const Vec2 offset(params.sensor_offset_m * std::cos(angle),
                       params.sensor_offset_m * std::sin(angle));
-    std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+    std::uint8_t* row = expected_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
     for (int iy = 0; iy < map.height(); ++iy) {
       for (int ix = 0; ix < map.width(); ++ix) {
         if (!map.IsState(ix, iy)) continue;
@@ -112,20 +143,21 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   // of the heading bins within +-beam_width / 2.
   const int half_cone =
       static_cast<int>(std::floor(0.5 * params.beam_width_rad / heading_res + 1e-9));
+  half_cone_ = half_cone;
   if (half_cone > 0) {
     const std::vector<std::uint8_t> rays = expected_;
     for (int d = 0; d < num_headings; ++d) {
-      std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+      std::uint8_t* row = expected_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
       for (int k = -half_cone; k <= half_cone; ++k) {
         const int dk = ((d + k) % num_headings + num_headings) % num_headings;
-        const std::uint8_t* ray = rays.data() + static_cast<std::size_t>(dk) * num_cells_;
+        const std::uint8_t* ray = rays.data() + pad_ + static_cast<std::size_t>(dk) * num_cells_;
         for (std::size_t c = 0; c < num_cells_; ++c) row[c] = std::min(row[c], ray[c]);
       }
     }
   }
   std::vector<double> histogram(num_bins_, 0.0);
   for (int d = 0; d < num_headings; ++d) {
-    const std::uint8_t* row = expected_.data() + static_cast<std::size_t>(d) * num_cells_;
+    const std::uint8_t* row = ExpectedRow(d);
     for (std::size_t c = 0; c < num_cells_; ++c)
       if (map.state_mask()[c]) histogram[row[c]] += 1.0;
   }
@@ -174,10 +206,68 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   for (int e = 0; e < num_bins_; ++e)
     for (int z = 0; z < num_bins_; ++z)
       average_[z] += histogram[e] / std::max(total, 1.0) * Likelihood(e, z);
+  expected_log_.assign(num_bins_, 0.0);
+  for (int e = 0; e < num_bins_; ++e)
+    for (int z = 0; z < num_bins_; ++z)
+      expected_log_[e] += Likelihood(e, z) * std::log(Likelihood(e, z));
   ratio_.assign(table_.size(), 0.0f);
   for (int e = 0; e < num_bins_; ++e)
     for (int z = 0; z < num_bins_; ++z)
-      ratio_[e * num_bins_ + z] = static_cast<float>(Likelihood(e, z) / average_[z]);
+      ratio_[e * num_bins_ + z] =
+          static_cast<float>(std::pow(Likelihood(e, z) / average_[z], params.likelihood_exponent));
+}
+
+double SensorModel::ExpectedRange(const MapModel& map, const Pose2& pose, int b) const {
+  const double beam = params_.beam_angles_rad[b];
+  const double axis = pose.yaw + beam;
+  const double heading_res = 2.0 * M_PI / num_headings_;
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  double best = params_.max_range_m;
+  for (int k = -half_cone_; k <= half_cone_; ++k) {
+    const double a = axis + k * heading_res;
+    Vec2 from;
+    if (!params_.beam_origins_m.empty()) {
+      const Vec2& o = params_.beam_origins_m[b];
+      from = pose.Position() + Vec2(c * o.x() - s * o.y(), s * o.x() + c * o.y());
+    } else {
+      from = pose.Position() + params_.sensor_offset_m * Vec2(std::cos(a), std::sin(a));
+    }
+    best = std::min(best, EchoRange(map, from, a, params_.max_range_m, params_.critical_angle_rad,
+                                    /*with_depth=*/true));
+  }
+  return best;
+}
+
+double SensorModel::LogLikelihood(double expected_m, double range_m) const {
+  const int z = RangeBin(range_m);
+  const int max_bin = num_bins_ - 1;
+  const double e = std::clamp(expected_m / params_.range_bin_m, 0.0, static_cast<double>(max_bin));
+  const int e0 = std::min(static_cast<int>(std::floor(e)), max_bin);
+  const int e1 = std::min(e0 + 1, max_bin);
+  const double f = e - e0;
+  return std::log((1.0 - f) * Likelihood(e0, z) + f * Likelihood(e1, z));
+}
+
+double SensorModel::LogLikelihood(double e, double z, double sigma) const {
+  const auto& p = params_;
+  const double w = p.range_bin_m, max = p.max_range_m;
+  const double s2 = sigma * std::sqrt(2.0);
+  const double rand = p.z_rand * w / (max + w);
+  if (!std::isfinite(z) || z >= max - 0.5 * w) {  // no echo: the max-range bin
+    const double beyond = 0.5 * std::erfc((max - 0.5 * w - e) / s2);
+    return std::log(p.z_max + p.z_hit * beyond + rand);
+  }
+  z = std::max(z, 0.0);
+  double prob =
+      p.z_hit * 0.5 * (std::erf((z + 0.5 * w - e) / s2) - std::erf((z - 0.5 * w - e) / s2));
+  const double l = p.lambda_short_per_m;
+  if (z < e && e > 0.0) prob += p.z_short * l * std::exp(-l * z) * w / (1.0 - std::exp(-l * e));
+  return std::log(prob + rand);
+}
+
+int SensorModel::BeamBin(int b, double range_m) const {
+  if (!std::isfinite(range_m) || range_m >= params_.max_range_m) return num_bins_ - 1;
+  return RangeBin(range_m + along_m_[b]);
 }
 
 int SensorModel::RangeBin(double range_m) const {

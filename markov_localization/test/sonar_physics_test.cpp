@@ -77,10 +77,13 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   for (int i = 0; i < 20; ++i) ASSERT_FALSE(d.Update(1.0 + std::log(0.6))) << "scan " << i;
   d.Reset();
   for (int i = 0; i < 50; ++i) d.Update(1.0);
-  // A fit that sinks to 0.3 of the usual per beam: fast (rate 0.5) / slow (rate 0.05) is
-  // 0.65 / 0.965 = 0.67, then 0.475 / 0.932 = 0.51 < 0.55: lost at the second scan.
-  EXPECT_FALSE(d.Update(1.0 + std::log(0.3)));
-  EXPECT_TRUE(d.Update(1.0 + std::log(0.3)));
+  // A fit that sinks to 0.2 of the usual per beam (above scan_lost_ratio 0.15: no collapse):
+  // fast (rate 0.5) / slow (rate 0.05) is 0.6 / 0.96 = 0.63, 0.4 / 0.922 = 0.43,
+  // 0.3 / 0.886 = 0.34, then 0.25 / 0.852 = 0.29 < lost_ratio 0.3: lost at the fourth scan.
+  // (A sink to 0.3 never fires at lost_ratio 0.3: the slow average follows, the ratio's
+  // minimum is 0.38.)
+  for (int i = 0; i < 3; ++i) EXPECT_FALSE(d.Update(1.0 + std::log(0.2))) << "scan " << i;
+  EXPECT_TRUE(d.Update(1.0 + std::log(0.2)));
   for (int i = 0; i < 50; ++i) d.Update(1.0);
   // A kidnap: one scan's fit falls to e^-2 = 0.05 of the usual (< 0.15): lost at once.
   EXPECT_TRUE(d.Update(-2.0));

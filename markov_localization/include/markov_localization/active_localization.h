@@ -5,6 +5,7 @@
 // with the path to a* by hill-climbing in v.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,22 @@ class ActiveLocalizer {
   ActiveChoice Choose(const std::vector<Mode>& modes) const;
 
  private:
+  struct Targets;  // the (2n+1) x (2n+1) lattice of targets around the robot
+  struct Scratch;  // per-mode buffers of eq. (6), reused from target to target
+
+  // The steps of Choose, as the paper gives them: eq. (7) fills `occupancy` and returns which
+  // target is free under which mode; eq. (8) the cost to go; eq. (6) E_a[H] at one target (NaN
+  // when no mode's point there is a state); the hill-climb from a* back to the robot.
+  std::vector<std::uint8_t> OccupancyOfTargets(const Targets& t, const std::vector<Mode>& modes,
+                                               const std::vector<double>& w,
+                                               std::vector<double>& occupancy) const;
+  std::vector<double> CostToGo(const Targets& t, const std::vector<double>& occupancy) const;
+  double ExpectedEntropyAt(const Targets& t, std::size_t a, const std::vector<Mode>& modes,
+                           const std::vector<double>& w,
+                           const std::vector<std::uint8_t>& free_under, Scratch& s) const;
+  static std::vector<Vec2> PathBack(const Targets& t, const std::vector<double>& cost_to_go,
+                                    std::size_t a);
+
   const MapModel& map_;
   const SensorModel& sensor_;
   ActiveLocalizationParameters params_;

@@ -10,7 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include "markov_localization/occupancy_map.h"
 #include "spott_map/geometry.h"
+#include "spott_map/map_database.h"
 #include "spott_map/world.h"
 
 namespace markov_localization {
@@ -28,6 +30,11 @@ struct MapModelParameters {
   /// symmetric at 20 and 25 cm (cell centres on fine-cell centres; the node uses 5); a single
   /// diffuse ray is symmetric with 4 at 15 cm and not with 5 at 20 / 25 cm (see the README).
   int ray_cast_subdivision = 4;
+  /// Occupancy grids (OccupancyMap, nav_msgs/OccupancyGrid): cells of at least this occupancy
+  /// (%) are obstacles, cells below free_threshold are free, the rest and -1 are unknown
+  /// (map_server writes 100, 0 and -1). In [1, 100] and [0, occupied_threshold].
+  int occupied_threshold = 65;
+  int free_threshold = 20;
 };
 
 /// Every violation by parameter name; empty when valid.
@@ -41,12 +48,28 @@ class MapModel {
   /// Throws std::invalid_argument naming the parameter or the problem.
   static MapModel FromWorld(const spott_map::World& world, const MapModelParameters& params);
 
-  /// An occupancy grid, row-major with row 0 at the bottom (nav_msgs/OccupancyGrid): values
-  /// 0..100 are occupancy percentages, -1 unknown. Cells >= `occupied_threshold` are obstacles;
-  /// unknown cells are not states and do not reflect beams. Throws std::invalid_argument.
+  /// An occupancy grid (a /map message, a map_server file) rasterized at the belief's
+  /// resolution params.resolution_m, whatever the grid's own: the belief's cells start at the
+  /// grid's origin corner (and follow its rotation origin_yaw), beams are cast on a raster
+  /// ray_cast_subdivision times finer, where a fine cell is an obstacle when any obstacle cell
+  /// of the grid overlaps its square (walls thinner than a fine cell are never lost). A cell is
+  /// a state when its centre lies in a free cell of the grid and keeps state_clearance_m from
+  /// every fine obstacle; unknown cells are no states and do not reflect beams. Throws
+  /// std::invalid_argument naming the problem.
+  static MapModel FromOccupancy(const OccupancyMap& grid, const MapModelParameters& params);
+
+  /// The same at the grid's own resolution without subdivision; cells below
+  /// `occupied_threshold` are free (no intermediate unknown values).
   static MapModel FromOccupancy(const Vec2& origin, int width, int height, double resolution_m,
                                 const std::vector<std::int8_t>& data, int occupied_threshold,
                                 double state_clearance_m);
+
+  /// The map of a map database (a world whose doors changed or that sensed new features): walls,
+  /// closed doors and the database's sensed features; the grid's geometry is that of
+  /// FromWorld(world, params) (rooms and extent from `world`), so a belief carries over cell
+  /// by cell. Throws std::invalid_argument.
+  static MapModel FromDatabase(const spott_map::World& world, const spott_map::MapDatabase& db,
+                               const MapModelParameters& params);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -69,14 +92,27 @@ class MapModel {
   Vec2 CellCentre(int ix, int iy) const;
   std::optional<std::pair<int, int>> CellOf(const Vec2& p) const;
 
-  /// Distance (m) from `from` along heading `angle_rad` to the first obstacle cell, or
+  /// Whether the fine raster (the beams') has an obstacle in the fine cell holding `p`.
+  bool FineOccupiedAt(const Vec2& p) const;
+  int subdivision() const { return subdivision_; }
+  /// Whether obstacle surfaces lie inside the first fine cell a beam meets (rasterized
+  /// geometry; see Hit::depth_m) rather than on its face (a grid whose cells are the fine
+  /// cells).
+  bool surface_inside_cells() const { return surface_inside_cells_; }
+
+  /// Distance (m) from `from` along heading `angle_rad` to the first obstacle cell's face, or
   /// `max_range_m` when none is nearer (cells outside the grid end the beam at max range).
   double RayCast(const Vec2& from, double angle_rad, double max_range_m) const;
 
-  /// A beam's first obstacle: distance (m) and the face of the raster cell it entered (the
+  /// A beam's first obstacle: distance (m) to the face of the raster cell it entered (the
   /// surface normal is along x for an x face, along y otherwise); hit false at max range.
+  /// `depth_m` is half the beam's path through that cell: an obstacle marks every fine cell
+  /// its geometry meets, so the surface lies somewhere inside the first cell, on average half
+  /// way (without it every expected range is short by up to a fine cell, 1.5 cm on average at
+  /// 3 cm, which biased the pose refinement's laser ranges; the tables' 10 cm bins ignore it).
   struct Hit {
     double range_m = 0.0;
+    double depth_m = 0.0;
     bool hit = false;
     bool x_face = false;
   };
@@ -97,6 +133,7 @@ class MapModel {
   std::size_t num_state_cells_ = 0;
   // The raster beams are cast on: `subdivision_` x finer than the cells above.
   int subdivision_ = 1;
+  bool surface_inside_cells_ = false;
   int fine_width_ = 0;
   int fine_height_ = 0;
   std::vector<std::uint8_t> fine_occupied_;

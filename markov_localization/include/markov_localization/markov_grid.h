@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "markov_localization/lost_detector.h"
@@ -45,6 +46,21 @@ struct MarkovGridParameters {
   MotionModelParameters motion;
   /// Kidnap detection and recovery (see lost_detector.h): not in the paper, needed on sonar.
   LostDetectorParameters lost;
+  /// The distance filter of Fox, Burgard, Thrun and Cremers ("Position estimation for mobile
+  /// robots in dynamic environments", AAAI 1998), by the same group as the paper: a reading
+  /// that the belief expects, with probability >= distance_filter_probability, to be shorter
+  /// than the map's range by more than distance_filter_sigmas x sigma_hit was caused by
+  /// something the map lacks (a person, furniture) and is left out of the update. Applied
+  /// while at most distance_filter_max_parts orientation parts are active (the position is
+  /// roughly known; a uniform belief expects nothing in particular). When more than
+  /// distance_filter_max_fraction of a scan's beams would be left out, none is: that many
+  /// surprises are no longer people in the way but a belief that may be wrong (a kidnap), and
+  /// the lost detector must see the whole misfit.
+  bool distance_filter = true;
+  double distance_filter_max_fraction = 0.25;  ///< In [0, 1].
+  double distance_filter_probability = 0.99;   ///< In (0.5, 1].
+  double distance_filter_sigmas = 2.0;         ///< >= 0
+  int distance_filter_max_parts = 24;          ///< >= 1
 };
 
 std::vector<std::string> ValidateParameters(const MarkovGridParameters& params);
@@ -64,12 +80,30 @@ struct SensorUpdateStats {
   std::size_t states_evaluated = 0;  ///< States whose P(s|l) was computed.
   int active_parts = 0;              ///< Orientation parts updated.
   int parts_woken = 0;               ///< Parts whose alpha_pi exceeded 1 in this update.
-  double normalizer = 1.0;           ///< alpha of eq. (4).
+  int beams = 0;                     ///< Beams of all readings of the update.
+  int groups = 0;                    ///< Groups the beams were applied in (see SensorUpdate).
+  double normalizer = 1.0;           ///< alpha of eq. (4) (product over the groups).
+  double log_normalizer = 0.0;       ///< log alpha (finite for any number of beams).
   /// log(P(s | belief) / P~(s)) / beams = -log(alpha) / beams (nats): how well the belief
   /// predicted the scan, per beam.
   double log_likelihood_per_beam = 0.0;
-  /// The scan said the robot is lost: relocalization_mass of uniform probability was mixed in.
+  /// The scan's mean surprise per beam at the most likely state (nats; NaN when not computed).
+  double surprise_per_beam = 0.0;
+  /// The scan said the robot is lost: relocalization_mass of uniform probability was mixed in
+  /// (the lost detector), or the belief was reset to uniform (nothing fitted any more).
   bool lost_detected = false;
+  std::string lost_reason;  ///< Why, when lost_detected.
+  /// Per beam of the readings (in order): 1 when used, 0 when the distance filter left it out.
+  std::vector<std::uint8_t> beam_used;
+  int beams_filtered = 0;
+};
+
+/// One reading of a range sensor for SensorUpdate: `ranges_m[b]` is the reading of beam b of
+/// `sensor` (NaN or >= max range: no echo). The sensor model must be built on the grid's map
+/// and heading bins. Both pointers must stay valid during the call.
+struct SensorReading {
+  const SensorModel* sensor = nullptr;
+  const std::vector<double>* ranges_m = nullptr;
 };
 
 class MarkovGrid {
@@ -92,6 +126,11 @@ class MarkovGrid {
   void SetUniform();
   /// A Gaussian around `pose` (tracking start, /initialpose).
   void SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad);
+  /// Sets P from a dense belief (index (k * ny + iy) * nx + ix, like Dense()), normalized;
+  /// cells that are not states get 0, every part is active. A belief without mass on any
+  /// state resets to uniform (lost, with the reason). Throws std::invalid_argument on a size
+  /// mismatch.
+  void SetBelief(const std::vector<float>& dense);
   /// P <- (1 - mass) P + mass / |L| over every state, all parts active (their stored movement
   /// applied). With mass / |L| above theta the next sensor update evaluates every state.
   void MixUniform(double mass);
@@ -102,6 +141,11 @@ class MarkovGrid {
   /// Whether the last sensor update (or ReportCertainty) detected that the robot is lost.
   bool lost() const { return lost_; }
   const LostDetector& lost_detector() const { return detector_; }
+  /// Why the robot was last found lost (lost detector, or a reset of a belief that vanished).
+  const std::string& lost_reason() const { return lost_reason_; }
+  /// Resets to uniform forced by a belief that vanished or left the float range (never silent:
+  /// each sets lost() and lost_reason()).
+  int forced_resets() const { return resets_; }
 
   /// Eq. (1) with the odometry noise model: each orientation part is shifted by the motion as
   /// seen from its heading (split bilinearly between cells), blurred by the motion's noise and
@@ -112,6 +156,14 @@ class MarkovGrid {
   /// of the sensor model (NaN or >= max range: no echo). Throws std::invalid_argument when the
   /// number of readings differs from the number of beams.
   SensorUpdateStats SensorUpdate(const std::vector<double>& ranges_m);
+  /// One sensor update with the readings of several sensors (e.g. a sonar ring and a laser
+  /// scan), their beams treated as independent. Safe for any number of beams: the beams are
+  /// applied in groups small enough that no float product underflows (each group an exact
+  /// eq. (2) / (4) with its own normalization); the belief never becomes non-finite. When no
+  /// state fits at all the belief is reset to uniform, lost() is set and lost_reason() and the
+  /// stats say why. Throws std::invalid_argument for a reading of the wrong size or a model
+  /// built for another map or heading count.
+  SensorUpdateStats SensorUpdateWith(const std::vector<SensorReading>& readings);
 
   /// P(l) of state (ix, iy, heading bin k), normalized over all states.
   double Probability(int ix, int iy, int k) const;
@@ -142,6 +194,15 @@ class MarkovGrid {
   void MaterializeLayer(int j);
   void Normalize();
   void Normalize(const double* active_sums);  // sums of the active parts when known
+  // One group of beams of SensorUpdate: eq. (4) and the normalization; false after a reset.
+  bool SensorGroup(const float* columns, int stride,
+                   const std::vector<std::pair<const SensorModel*, int>>& beams,
+                   double log_unlikely_factor, SensorUpdateStats* stats, double* alpha);
+  void ResetUniform(const std::string& reason);  // SetUniform, lost, the reason kept
+  // Marks in `used` the beams the distance filter leaves out (see MarkovGridParameters).
+  template <typename ModelOf, typename BeamOf, typename BinOf>
+  void DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of, BinOf bin_of,
+                      std::vector<std::uint8_t>* used) const;
 
   const MapModel& map_;
   const SensorModel& sensor_;
@@ -162,6 +223,9 @@ class MarkovGrid {
   std::vector<double> moved_var_m2_;  // ... and accumulated position noise variance (m^2).
   LostDetector detector_;
   bool lost_ = false;
+  std::string lost_reason_;
+  int resets_ = 0;
+  std::vector<float> layer_max_;  // each active layer's maximum after the last sensor group
   // Runs [begin, end) of cells (pairs) covering every state cell: the loops skip the rest.
   std::vector<std::uint32_t> spans_;
   // Two threads (the caller and one worker) when the machine has two cores; shared by copies.

@@ -1,31 +1,43 @@
 // Thin ROS layer over the markov_localization core: reads and validates every parameter
-// (ros/parameters.cpp), builds the map from a world file, turns /odom into motions and each
-// range ring into a sensor update, and publishes tf map->odom (REP-105), the pose, the modes,
-// the status and (throttled) the belief's marginal for rviz. /initialpose sets a Gaussian
-// belief; the global_localization service a uniform one; the active_localize action drives to
-// the target points of active localization (ros/active_localize_server.cpp).
+// (ros/parameters.cpp), gets the map (a spott_map world, a map_server file or a latched /map),
+// builds the sensor models from the first sonar ring and laser scan, hands every reading to the
+// core's Localizer (motion gate, updates, lost handling, estimate) and publishes tf map->odom
+// (REP-105), the pose, the modes, the status and (throttled) the belief's marginal for rviz.
+// Map changes (spott_msgs/MapUpdate on a world, a new /map) rebuild the models in a background
+// thread; the belief carries over. /initialpose sets a Gaussian belief; the global_localization
+// service a uniform one; the active_localize action drives to the targets of active
+// localization (ros/active_localize_server.cpp).
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <spott_msgs/BeliefModes.h>
 #include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/MapUpdate.h>
 #include <spott_msgs/RangeRing.h>
 #include <std_srvs/Empty.h>
+#include <tf2/LinearMath/Matrix3x3.h>
+#include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <optional>
 
 #include "../ros/active_localize_server.h"
 #include "markov_localization/certainty.h"
-#include "markov_localization/markov_grid.h"
+#include "markov_localization/localizer.h"
+#include "markov_localization/odometry_buffer.h"
 #include "markov_localization/ros/conversions.h"
 #include "markov_localization/ros/parameters.h"
-#include "markov_localization/sticky_estimate.h"
+#include "spott_map/ros/map_update.h"
 #include "spott_map/world_loader.h"
 
 namespace ml = markov_localization;
@@ -39,41 +51,69 @@ spott_map::Pose2 PoseOf(const geometry_msgs::Pose& pose) {
 
 class LocalizationNode {
  public:
-  LocalizationNode(ros::NodeHandle& nh, const ml::NodeParameters& params, spott_map::World world)
-      : params_(params) {
-    map_ = ml::MapModel::FromWorld(world, params.map);
-    if (params.initial_pose_from_world) pending_initial_ = world.robot_start;
+  LocalizationNode(ros::NodeHandle& nh, const ml::NodeParameters& params,
+                   std::optional<spott_map::World> world)
+      : params_(params), world_(std::move(world)), tf_listener_(tf_buffer_) {
+    if (world_ && params.initial_pose_from_world) pending_initial_ = world_->robot_start;
+    // Which map (README "Maps"): the topic when asked for, else map_file, else the world.
+    if (params.use_map_topic || (params.map_file.empty() && !world_)) {
+      map_sub_ = nh.subscribe(params.map_topic, 1, &LocalizationNode::OnMap, this);
+      ROS_INFO("markov_localization: waiting for the map on '%s'", params.map_topic.c_str());
+    } else if (!params.map_file.empty()) {
+      const ml::MapFileResult file = ml::LoadMapServerMap(params.map_file);
+      if (!file.ok()) throw std::runtime_error(spott_map::FormatErrors(file.errors));
+      map_ =
+          std::make_shared<const ml::MapModel>(ml::MapModel::FromOccupancy(*file.map, params.map));
+      ROS_INFO("markov_localization: map_server map %s (%d x %d cells of %.3f m)%s",
+               params.map_file.c_str(), file.map->width, file.map->height, file.map->resolution_m,
+               world_ ? "; world_file ignored for the map" : "");
+    } else {
+      db_ = spott_map::MapDatabase::FromWorld(*world_);
+      map_ = std::make_shared<const ml::MapModel>(
+          ml::MapModel::FromDatabase(*world_, *db_, params.map));
+      if (!params.map_updates_topic.empty())
+        updates_sub_ =
+            nh.subscribe(params.map_updates_topic, 10, &LocalizationNode::OnMapUpdate, this);
+    }
+    if (map_) LogMap("map");
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 1, true);
     status_pub_ = nh.advertise<spott_msgs::LocalizationStatus>("localization_status", 1, true);
     modes_pub_ = nh.advertise<geometry_msgs::PoseArray>("localization_modes", 1, true);
+    belief_modes_pub_ = nh.advertise<spott_msgs::BeliefModes>("belief_modes", 1, true);
     belief_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("belief", 1, true);
     odom_sub_ = nh.subscribe("odom", 50, &LocalizationNode::OnOdom, this);
-    ring_sub_ = nh.subscribe(params.ring_topic, 5, &LocalizationNode::OnRing, this);
+    if (params.sonar_enabled)
+      ring_sub_ = nh.subscribe(params.ring_topic, 5, &LocalizationNode::OnRing, this);
+    if (params.laser.enabled)
+      scan_sub_ = nh.subscribe(params.laser.topic, 5, &LocalizationNode::OnScan, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &LocalizationNode::OnInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
-    sticky_ = ml::StickyEstimate(params_.sticky);
     action_ = std::make_unique<ml::ActiveLocalizeServer>(nh, params_, [this] { SetUniform(); });
-    ROS_INFO("markov_localization: %dx%d cells of %.2f m, %zu state cells", map_.width(),
-             map_.height(), map_.resolution(), map_.NumStateCells());
   }
 
  private:
-  void OnOdom(const nav_msgs::Odometry& msg) { odom_ = PoseOf(msg.pose.pose); }
+  void LogMap(const char* what) {
+    ROS_INFO("markov_localization: %s: %dx%d cells of %.2f m, %zu state cells", what, map_->width(),
+             map_->height(), map_->resolution(), map_->NumStateCells());
+  }
+
+  void OnOdom(const nav_msgs::Odometry& msg) {
+    odom_ = PoseOf(msg.pose.pose);
+    odometry_.Add(msg.header.stamp.toSec(), *odom_);
+  }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped& msg) {
-    if (!grid_) {
+    if (!localizer_) {
       pending_initial_ = PoseOf(msg.pose.pose);
       return;
     }
-    grid_->SetGaussian(PoseOf(msg.pose.pose), params_.initial_sigma_xy_m,
-                       params_.initial_sigma_theta_rad);
-    sticky_.Reset();
+    localizer_->SetGaussian(PoseOf(msg.pose.pose), params_.initial_sigma_xy_m,
+                            params_.initial_sigma_theta_rad);
     ROS_INFO("markov_localization: initial pose set");
   }
 
   void SetUniform() {
-    if (grid_) grid_->SetUniform();
-    sticky_.Reset();
+    if (localizer_) localizer_->SetUniform();
     pending_initial_.reset();
     ROS_INFO("markov_localization: global localization (uniform belief)");
   }
@@ -83,8 +123,79 @@ class LocalizationNode {
     return true;
   }
 
-  // The sensor model needs the ring's geometry: built from the first ring.
-  bool BuildModels(const spott_msgs::RangeRing& ring) {
+  // ---- maps
+  void OnMap(const nav_msgs::OccupancyGrid& msg) {
+    const ml::OccupancyMap grid = conv::FromOccupancyGrid(msg);
+    try {
+      auto map =
+          std::make_shared<const ml::MapModel>(ml::MapModel::FromOccupancy(grid, params_.map));
+      ROS_INFO("markov_localization: map from '%s' (%d x %d cells of %.3f m)",
+               params_.map_topic.c_str(), grid.width, grid.height, grid.resolution_m);
+      NewMap(std::move(map));
+    } catch (const std::exception& e) {
+      ROS_ERROR("markov_localization: refusing the map on '%s': %s (keeping the current one)",
+                params_.map_topic.c_str(), e.what());
+    }
+  }
+
+  void OnMapUpdate(const spott_msgs::MapUpdate& update) {
+    const auto before = db_->revision();
+    for (const std::string& problem : spott_map::ros_conversions::ApplyMapUpdate(update, 0.1, *db_))
+      ROS_WARN("markov_localization: map update: %s", problem.c_str());
+    if (db_->revision() == before) return;
+    try {
+      NewMap(std::make_shared<const ml::MapModel>(
+          ml::MapModel::FromDatabase(*world_, *db_, params_.map)));
+      ROS_INFO("markov_localization: map update (%zu doors, %zu added features): rebuilding",
+               update.doors.size(), update.added.size());
+    } catch (const std::exception& e) {
+      ROS_ERROR("markov_localization: map update not applied: %s", e.what());
+    }
+  }
+
+  // A new map: before the models exist it is simply the map; afterwards the models are rebuilt
+  // in the background (the ray-cast tables take seconds) and swapped in when ready.
+  void NewMap(std::shared_ptr<const ml::MapModel> map) {
+    if (!localizer_) {
+      map_ = std::move(map);
+      LogMap("map");
+      TryStart();
+      return;
+    }
+    queued_map_ = std::move(map);
+    StartRebuild();
+  }
+
+  void StartRebuild() {
+    if (rebuild_.valid() || !queued_map_) return;
+    auto map = std::move(queued_map_);
+    queued_map_.reset();
+    const auto sensors = sensor_params_;
+    const int nt = models_->num_headings;
+    rebuild_ = std::async(std::launch::async, [map, sensors, nt] {
+      return ml::LocalizationModels::Build(map, sensors, nt);
+    });
+  }
+
+  void PollRebuild() {
+    if (!rebuild_.valid() ||
+        rebuild_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+      return;
+    try {
+      auto models = rebuild_.get();
+      localizer_->ReplaceModels(models);
+      models_ = models;
+      map_ = models->map;
+      active_ = std::make_unique<ml::ActiveLocalizer>(*map_, *models_->sensors[0], params_.active);
+      LogMap("map replaced (belief carried over)");
+    } catch (const std::exception& e) {
+      ROS_ERROR("markov_localization: the new map's models failed: %s (keeping the old)", e.what());
+    }
+    StartRebuild();
+  }
+
+  // ---- sensors: each model is set up from its first message, the localizer once all are.
+  bool SonarGeometry(const spott_msgs::RangeRing& ring) {
     if (params_.ring_geometry ? ring.mounts.size() != ring.ranges.size() || ring.ranges.empty()
                               : static_cast<int>(ring.ranges.size()) != params_.beams) {
       ROS_ERROR_THROTTLE(5,
@@ -94,12 +205,13 @@ class LocalizationNode {
                          ring.mounts.size());
       return false;
     }
-    auto& sp = params_.sensor;
+    ml::SensorModelParameters sp = params_.sensor;
     if (params_.ring_geometry) {
       sp.beam_angles_rad.clear();
       double offset = 0.0;
       for (const auto& m : ring.mounts) {
         sp.beam_angles_rad.push_back(m.theta);
+        sp.beam_origins_m.push_back(ml::Vec2(m.x, m.y));
         offset += std::hypot(m.x, m.y);
       }
       sp.sensor_offset_m = offset / ring.mounts.size();
@@ -108,117 +220,204 @@ class LocalizationNode {
     if (sp.beam_width_rad < 0.0) sp.beam_width_rad = std::max(0.0f, ring.field_of_view);
     if (ring.radiation_type == spott_msgs::RangeRing::INFRARED)
       sp.critical_angle_rad = M_PI / 2;  // infrared scatters off every surface
-    const int nt = static_cast<int>(std::lround(2 * M_PI / params_.grid.angular_resolution_rad));
+    sonar_model_ = sp;
+    return true;
+  }
+
+  bool LaserGeometry(const sensor_msgs::LaserScan& scan) {
+    geometry_msgs::TransformStamped t;
     try {
-      sensor_ = std::make_unique<ml::SensorModel>(map_, nt, sp);
-      grid_ = std::make_unique<ml::MarkovGrid>(map_, *sensor_, params_.grid);
-      localizer_ = std::make_unique<ml::ActiveLocalizer>(map_, *sensor_, params_.active);
-    } catch (const std::exception& e) {
-      ROS_ERROR_THROTTLE(5, "markov_localization: cannot use the ring: %s", e.what());
-      sensor_.reset();
-      grid_.reset();
+      t = tf_buffer_.lookupTransform(params_.laser.base_frame, scan.header.frame_id, ros::Time(0),
+                                     ros::Duration(0.5));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5, "markov_localization: no tf %s -> %s yet: %s",
+                        params_.laser.base_frame.c_str(), scan.header.frame_id.c_str(), e.what());
       return false;
     }
-    if (pending_initial_ && !params_.start_uniform) {
-      grid_->SetGaussian(*pending_initial_, params_.initial_sigma_xy_m,
-                         params_.initial_sigma_theta_rad);
+    laser_beams_ = conv::LaserBeams(static_cast<int>(scan.ranges.size()), params_.laser.max_beams);
+    if (laser_beams_.size() < 2) {
+      ROS_ERROR_THROTTLE(5, "markov_localization: the scan on '%s' has %zu readings; ignored",
+                         params_.laser.topic.c_str(), scan.ranges.size());
+      return false;
     }
-    ROS_INFO("markov_localization: sensor model for %zu beams (offset %.2f m, max range %.1f m)",
-             sp.beam_angles_rad.size(), sp.sensor_offset_m, sp.max_range_m);
+    // Each beam's direction in the base frame (a laser mounted upside down reverses them).
+    const auto& q = t.transform.rotation;
+    const tf2::Matrix3x3 rot(tf2::Quaternion(q.x, q.y, q.z, q.w));
+    ml::SensorModelParameters lp = params_.laser.model;
+    lp.beam_angles_rad.clear();
+    lp.beam_origins_m.clear();
+    for (double a : conv::LaserBeamAngles(scan, laser_beams_)) {
+      const tf2::Vector3 d = rot * tf2::Vector3(std::cos(a), std::sin(a), 0.0);
+      lp.beam_angles_rad.push_back(std::atan2(d.y(), d.x()));
+      lp.beam_origins_m.push_back(ml::Vec2(t.transform.translation.x, t.transform.translation.y));
+    }
+    lp.sensor_offset_m = 0.0;
+    lp.beam_width_rad = 0.0;
+    if (scan.range_max > 0 && scan.range_max < lp.max_range_m) lp.max_range_m = scan.range_max;
+    laser_model_ = lp;
+    laser_readings_ = scan.ranges.size();
+    ROS_INFO("markov_localization: laser '%s': %zu of %zu beams, at (%.2f, %.2f) in %s, max %.1f m",
+             scan.header.frame_id.c_str(), laser_beams_.size(), scan.ranges.size(),
+             t.transform.translation.x, t.transform.translation.y, params_.laser.base_frame.c_str(),
+             lp.max_range_m);
     return true;
+  }
+
+  // Builds the models and the localizer once the map and every enabled sensor's geometry are
+  // known.
+  void TryStart() {
+    if (localizer_ || !map_ || !odom_) return;
+    if (params_.sonar_enabled && !sonar_model_) return;
+    if (params_.laser.enabled && !laser_model_) return;
+    sensor_params_.clear();
+    sonar_index_ = laser_index_ = -1;
+    if (sonar_model_) {
+      sonar_index_ = static_cast<int>(sensor_params_.size());
+      sensor_params_.push_back(*sonar_model_);
+    }
+    if (laser_model_) {
+      laser_index_ = static_cast<int>(sensor_params_.size());
+      sensor_params_.push_back(*laser_model_);
+    }
+    const int nt = static_cast<int>(std::lround(2 * M_PI / params_.grid.angular_resolution_rad));
+    ml::LocalizerParameters lp;
+    lp.grid = params_.grid;
+    lp.gate = params_.gate;
+    lp.certainty = params_.certainty;
+    lp.modes = params_.modes;
+    lp.sticky = params_.sticky;
+    lp.refine = params_.refine;
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      models_ = ml::LocalizationModels::Build(map_, sensor_params_, nt);
+      localizer_ = std::make_unique<ml::Localizer>(models_, lp);
+      active_ = std::make_unique<ml::ActiveLocalizer>(*map_, *models_->sensors[0], params_.active);
+      ROS_INFO("markov_localization: models for %zu sensor(s) built in %.1f s",
+               sensor_params_.size(),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    } catch (const std::exception& e) {
+      ROS_ERROR_THROTTLE(5, "markov_localization: cannot build the models: %s", e.what());
+      localizer_.reset();
+      return;
+    }
+    if (pending_initial_ && !params_.start_uniform)
+      localizer_->SetGaussian(*pending_initial_, params_.initial_sigma_xy_m,
+                              params_.initial_sigma_theta_rad);
   }
 
   void OnRing(const spott_msgs::RangeRing& ring) {
     if (!odom_) return;
-    if (!grid_) {
-      if (!BuildModels(ring)) return;
-      last_odom_ = odom_;
-    }
-    if (static_cast<int>(ring.ranges.size()) != sensor_->num_beams()) {
+    if (!sonar_model_ && !SonarGeometry(ring)) return;
+    TryStart();
+    if (!localizer_) return;
+    if (static_cast<int>(ring.ranges.size()) != models_->sensors[sonar_index_]->num_beams()) {
       ROS_WARN_THROTTLE(5, "markov_localization: ring has %zu readings, expected %d; ignored",
-                        ring.ranges.size(), sensor_->num_beams());
+                        ring.ranges.size(), models_->sensors[sonar_index_]->num_beams());
       return;
     }
-    const auto start = std::chrono::steady_clock::now();
-    const ml::Motion motion = ml::MotionBetween(*last_odom_, *odom_);
-    if (std::hypot(motion.dx, motion.dy) > 1e-4 || std::abs(motion.dtheta) > 1e-4)
-      grid_->MotionUpdate(motion);
-    odom_distance_m_ += std::hypot(motion.dx, motion.dy);
-    last_odom_ = odom_;
     ranges_.assign(ring.ranges.begin(), ring.ranges.end());
-    const auto stats = grid_->SensorUpdate(ranges_);
-    if (stats.lost_detected) {
-      ROS_WARN("markov_localization: the scans no longer fit the belief: lost; relocalizing");
-      sticky_.Reset();
-    }
-    const double compute_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Publish(ring, stats, compute_s);
+    OnReading(sonar_index_, ranges_, ring.header.stamp, sonar_model_->beam_angles_rad,
+              ring.max_range);
   }
 
-  void Publish(const spott_msgs::RangeRing& ring, const ml::SensorUpdateStats& stats,
-               double compute_s) {
-    const ros::Time& stamp = ring.header.stamp;
-    // Certainty and modes over the states above theta when few (tracking: well under a
-    // millisecond); the dense belief only at the belief grid's rate, for the grid and H_P.
+  void OnScan(const sensor_msgs::LaserScan& scan) {
+    if (!odom_) return;
+    if (!laser_model_ && !LaserGeometry(scan)) return;
+    TryStart();
+    if (!localizer_) return;
+    if (scan.ranges.size() != laser_readings_) {
+      ROS_WARN_THROTTLE(5, "markov_localization: scan has %zu readings, expected %zu; ignored",
+                        scan.ranges.size(), laser_readings_);
+      return;
+    }
+    laser_ranges_ = conv::LaserRanges(scan, laser_beams_);
+    OnReading(laser_index_, laser_ranges_, scan.header.stamp, laser_model_->beam_angles_rad,
+              laser_model_->max_range_m);
+  }
+
+  void OnReading(int sensor, const std::vector<double>& ranges, const ros::Time& stamp,
+                 const std::vector<double>& beam_angles, double max_range) {
+    PollRebuild();
+    // The odometry when the reading was taken (odometry_buffer.h), not the newest.
+    reading_odom_ = odometry_.At(stamp.toSec()).value_or(*odom_);
+    const auto start = std::chrono::steady_clock::now();
+    const ml::LocalizerStep step =
+        localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
+    if (step.lost)
+      ROS_WARN("markov_localization: lost: %s; relocalizing", step.lost_reason.c_str());
+    if (step.switched) {
+      const ml::Pose2 e = localizer_->Estimate(reading_odom_);
+      ROS_INFO("markov_localization: estimate moves to (%.2f, %.2f, %.0f deg) (%zu modes)", e.x,
+               e.y, e.yaw * 180.0 / M_PI, localizer_->summary().modes.size());
+    }
+    if (step.updated && !announced_) {
+      announced_ = true;
+      const ml::Pose2 e = localizer_->Estimate(reading_odom_);
+      ROS_INFO("markov_localization: first estimate (%.2f, %.2f, %.0f deg), certainty %.2f", e.x,
+               e.y, e.yaw * 180.0 / M_PI, localizer_->summary().certainty.certainty);
+    }
+    if (step.updated) {
+      last_stats_ = step.stats;
+      last_compute_s_ =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    Publish(stamp, step, beam_angles, ranges, max_range);
+  }
+
+  void Publish(const ros::Time& stamp, const ml::LocalizerStep& step,
+               const std::vector<double>& beam_angles, const std::vector<double>& ranges,
+               double max_range) {
+    if (!localizer_->has_estimate()) return;
+    const ml::BeliefSummary& summary = localizer_->summary();
+    const auto& c = summary.certainty;
+    const auto& modes = summary.modes;
+    const ml::Pose2 estimate = localizer_->Estimate(reading_odom_);
+    const ml::Pose2 map_to_odom = localizer_->map_to_odom();
+    tf_.sendTransform(conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame,
+                                        stamp + ros::Duration(params_.transform_tolerance_s)));
+    if (step.updated) {
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (const auto& m : modes)
+        if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) <
+            params_.sticky.match_radius_m) {
+          cov = m.covariance;
+          break;
+        }
+      pose_pub_.publish(conv::ToPoseWithCovariance(estimate, cov, params_.map_frame, stamp));
+      modes_pub_.publish(conv::ToPoseArray(modes, params_.map_frame, stamp));
+      belief_modes_pub_.publish(conv::ToBeliefModes(modes, params_.map_frame, stamp));
+    }
     const bool belief_due = !last_belief_ ||
                             (stamp - *last_belief_).toSec() >= 1.0 / params_.belief_rate_hz ||
                             stamp < *last_belief_;
-    const ml::BeliefSummary summary =
-        ml::Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
-    const auto& c = summary.certainty;
-    const auto& modes = summary.modes;
-    if (!stats.lost_detected && grid_->ReportCertainty(c.certainty, params_.certainty.threshold)) {
-      ROS_WARN(
-          "markov_localization: certainty fell to %.2f as the scans stopped fitting: lost; "
-          "relocalizing",
-          c.certainty);
-      sticky_.Reset();
-    }
-    // The published estimate stays with the mode it followed while twins swap the maximum.
-    bool switched = false;
-    const ml::Pose2 estimate = sticky_.Select(modes, c.estimate, *odom_, &switched);
-    if (switched)
-      ROS_INFO("markov_localization: estimate moves to (%.2f, %.2f, %.0f deg) (%zu modes)",
-               estimate.x, estimate.y, estimate.yaw * 180.0 / M_PI, modes.size());
-    const ml::Pose2 map_to_odom = conv::MapToOdom(estimate, *odom_);
-    tf_.sendTransform(conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame,
-                                        stamp + ros::Duration(params_.transform_tolerance_s)));
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const auto& m : modes)
-      if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) <
-          params_.sticky.match_radius_m) {
-        cov = m.covariance;
-        break;
-      }
-    pose_pub_.publish(conv::ToPoseWithCovariance(estimate, cov, params_.map_frame, stamp));
-    modes_pub_.publish(conv::ToPoseArray(modes, params_.map_frame, stamp));
-    if (belief_due) {
-      const ml::BeliefSnapshot b = ml::BeliefSnapshot::Of(*grid_);
+    if (belief_due && step.updated) {
+      const ml::BeliefSnapshot b = ml::BeliefSnapshot::Of(localizer_->grid());
       entropy_ = ml::Entropy(b);
-      belief_pub_.publish(conv::BeliefGrid(b, map_.state_mask(), params_.map_frame, stamp));
+      belief_pub_.publish(conv::BeliefGrid(b, map_->state_mask(), params_.map_frame, stamp));
       last_belief_ = stamp;
     }
-    const double entropy = entropy_;
+    odom_distance_m_ +=
+        last_odom_ ? std::hypot(odom_->x - last_odom_->x, odom_->y - last_odom_->y) : 0.0;
+    last_odom_ = odom_;
 
     ml::LocalizationUpdate u;
     u.stamp = stamp;
     u.certainty = c.certainty;
-    u.entropy = entropy;
+    u.entropy = entropy_;
     u.estimate = estimate;
-    u.best = c.estimate;
-    u.map = &map_;
+    u.best = localizer_->BestEstimate(reading_odom_);
+    u.map = map_.get();
     u.map_to_odom = map_to_odom;
-    u.odom = *odom_;
+    u.odom = reading_odom_;
     u.odom_distance_m = odom_distance_m_;
     u.modes = &modes;
-    u.localizer = localizer_.get();
-    u.beam_angles_rad = &params_.sensor.beam_angles_rad;
-    u.ranges_m = &ranges_;
-    u.max_range_m = ring.max_range;
+    u.localizer = active_.get();
+    u.beam_angles_rad = &beam_angles;
+    u.ranges_m = &ranges;
+    u.max_range_m = max_range;
     action_->Update(u);
 
-    const bool certain = c.certainty > params_.certainty.threshold;
+    const bool certain = localizer_->certain();
     spott_msgs::LocalizationStatus s;
     s.header.frame_id = params_.map_frame;
     s.header.stamp = stamp;
@@ -226,34 +425,51 @@ class LocalizationNode {
              : certain         ? spott_msgs::LocalizationStatus::TRACKING
                                : spott_msgs::LocalizationStatus::GLOBAL;
     s.certainty = c.certainty;
-    s.entropy = entropy;
-    s.max_entropy = std::log(static_cast<double>(grid_->NumStates()));
+    s.entropy = entropy_;
+    s.max_entropy = std::log(static_cast<double>(localizer_->grid().NumStates()));
     s.num_modes = modes.size();
-    s.lost = !certain || grid_->lost();
-    s.estimate.x = c.estimate.x;
-    s.estimate.y = c.estimate.y;
-    s.estimate.theta = c.estimate.yaw;
-    s.update_time = compute_s;
-    s.active_states = stats.states_evaluated;
+    s.lost = !certain || localizer_->lost();
+    // The global maximum's refined pose at the last update, moved by the odometry since (the
+    // status comes at every reading, the update every 0.2 m / 30 degrees).
+    const ml::Pose2 best = localizer_->BestEstimate(reading_odom_);
+    s.estimate.x = best.x;
+    s.estimate.y = best.y;
+    s.estimate.theta = best.yaw;
+    s.update_time = last_compute_s_;
+    s.active_states = last_stats_.states_evaluated;
     status_pub_.publish(s);
   }
 
   ml::NodeParameters params_;
-  ml::MapModel map_;
-  std::unique_ptr<ml::SensorModel> sensor_;
-  std::unique_ptr<ml::MarkovGrid> grid_;
-  std::unique_ptr<ml::ActiveLocalizer> localizer_;
+  std::optional<spott_map::World> world_;
+  std::optional<spott_map::MapDatabase> db_;  // the world's map database (map updates)
+  std::shared_ptr<const ml::MapModel> map_, queued_map_;
+  std::optional<ml::SensorModelParameters> sonar_model_, laser_model_;
+  std::vector<int> laser_beams_;
+  std::size_t laser_readings_ = 0;
+  std::vector<ml::SensorModelParameters> sensor_params_;
+  int sonar_index_ = -1, laser_index_ = -1;
+  std::shared_ptr<const ml::LocalizationModels> models_;
+  std::future<std::shared_ptr<const ml::LocalizationModels>> rebuild_;
+  std::unique_ptr<ml::Localizer> localizer_;
+  std::unique_ptr<ml::ActiveLocalizer> active_;
   std::unique_ptr<ml::ActiveLocalizeServer> action_;
   std::optional<spott_map::Pose2> odom_, last_odom_, pending_initial_;
+  ml::OdometryBuffer odometry_;
+  spott_map::Pose2 reading_odom_;
   std::optional<ros::Time> last_belief_;
-  ml::StickyEstimate sticky_;
+  ml::SensorUpdateStats last_stats_;
+  double last_compute_s_ = 0.0;
+  bool announced_ = false;
   double odom_distance_m_ = 0.0;
   double entropy_ = 0.0;  // H_P at the last belief grid (nats)
-  std::vector<double> ranges_;
-  ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_pub_;
-  ros::Subscriber odom_sub_, ring_sub_, initial_sub_;
+  std::vector<double> ranges_, laser_ranges_;
+  ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_modes_pub_, belief_pub_;
+  ros::Subscriber odom_sub_, ring_sub_, scan_sub_, initial_sub_, map_sub_, updates_sub_;
   ros::ServiceServer global_srv_;
   tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
 };
 
 }  // namespace
@@ -265,13 +481,18 @@ int main(int argc, char** argv) {
   const auto errors = ml::ReadParameters(pnh, params);
   for (const auto& e : errors) ROS_FATAL("markov_localization: parameter %s", e.c_str());
   if (!errors.empty()) return 1;
-  auto loaded = spott_map::LoadWorldFile(params.world_file);
-  if (!loaded.ok()) {
-    for (const auto& e : loaded.errors) ROS_FATAL("markov_localization: %s", e.ToString().c_str());
-    return 1;
+  std::optional<spott_map::World> world;
+  if (!params.world_file.empty()) {
+    auto loaded = spott_map::LoadWorldFile(params.world_file);
+    if (!loaded.ok()) {
+      for (const auto& e : loaded.errors)
+        ROS_FATAL("markov_localization: %s", e.ToString().c_str());
+      return 1;
+    }
+    world = std::move(*loaded.world);
   }
   try {
-    LocalizationNode node(nh, params, *loaded.world);
+    LocalizationNode node(nh, params, std::move(world));
     ros::spin();
   } catch (const std::exception& e) {
     ROS_FATAL("markov_localization: %s", e.what());

@@ -1,6 +1,5 @@
 #include "active_localize_server.h"
 
-#include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Twist.h>
 
 #include "markov_localization/navigable_target.h"
@@ -19,8 +18,6 @@ ActiveLocalizeServer::ActiveLocalizeServer(ros::NodeHandle& nh, const NodeParame
       server_(nh, "active_localize", false) {
   nav_ = std::make_unique<NavClient>(nh, params.navigate_action, false);
   cmd_pub_ = nh.advertise<geometry_msgs::Twist>(params.cmd_vel_topic, 1);
-  if (!params.global_goal_topic.empty())
-    goal_pub_ = nh.advertise<geometry_msgs::PointStamped>(params.global_goal_topic, 1, true);
   server_.registerGoalCallback([this] { OnGoal(); });
   server_.registerPreemptCallback([this] { OnPreempt(); });
   server_.start();
@@ -170,14 +167,6 @@ void ActiveLocalizeServer::Choose(const LocalizationUpdate& u, const RunInput& i
   feedback_.target_relative.y = choice.ay;
   feedback_.expected_entropy = choice.expected_entropy;
   feedback_.expected_cost = choice.cost;
-  if (goal_pub_) {
-    geometry_msgs::PointStamped p;
-    p.header.frame_id = params_.map_frame;
-    p.header.stamp = u.stamp;
-    p.point.x = target.x();
-    p.point.y = target.y();
-    goal_pub_.publish(p);
-  }
   const int generation = ++generation_;
   navigating_ = true;
   nav_->sendGoal(

@@ -68,7 +68,7 @@ class ActiveLocalizeServer {
   std::function<void()> reset_uniform_;
   actionlib::SimpleActionServer<spott_msgs::ActiveLocalizeAction> server_;
   std::unique_ptr<NavClient> nav_;
-  ros::Publisher cmd_pub_, goal_pub_;
+  ros::Publisher cmd_pub_;
   std::optional<ActiveRequest> request_;
   std::optional<ActiveLocalizationRun> run_;
   std::unique_ptr<Wanderer> wanderer_;

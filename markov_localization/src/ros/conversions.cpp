@@ -97,4 +97,61 @@ spott_msgs::NavigateGoal NavigateGoalTo(const Vec2& target, double tolerance_m,
   return goal;
 }
 
+spott_msgs::BeliefModes ToBeliefModes(const std::vector<Mode>& modes, const std::string& frame_id,
+                                      const ros::Time& stamp) {
+  spott_msgs::BeliefModes msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  for (const Mode& m : modes) {
+    spott_msgs::BeliefMode b;
+    b.mean.x = m.mean.x;
+    b.mean.y = m.mean.y;
+    b.mean.theta = m.mean.yaw;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) b.covariance[3 * r + c] = m.covariance(r, c);
+    b.mass = m.mass;
+    msg.modes.push_back(b);
+  }
+  return msg;
+}
+
+OccupancyMap FromOccupancyGrid(const nav_msgs::OccupancyGrid& grid) {
+  OccupancyMap m;
+  const auto& o = grid.info.origin;
+  m.origin = Vec2(o.position.x, o.position.y);
+  const auto& q = o.orientation;
+  m.origin_yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  m.resolution_m = grid.info.resolution;
+  m.width = static_cast<int>(grid.info.width);
+  m.height = static_cast<int>(grid.info.height);
+  m.data = grid.data;
+  return m;
+}
+
+std::vector<int> LaserBeams(int readings, int max_beams) {
+  std::vector<int> beams;
+  if (readings <= 0) return beams;
+  const int step = max_beams >= 2 ? std::max(1, (readings - 1) / (max_beams - 1)) : 1;
+  for (int i = 0; i < readings; i += step) beams.push_back(i);
+  return beams;
+}
+
+std::vector<double> LaserBeamAngles(const sensor_msgs::LaserScan& scan,
+                                    const std::vector<int>& beams) {
+  std::vector<double> angles;
+  for (int i : beams)
+    angles.push_back(scan.angle_min + i * static_cast<double>(scan.angle_increment));
+  return angles;
+}
+
+std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::vector<int>& beams) {
+  std::vector<double> ranges;
+  for (int i : beams) {
+    const double r = i < static_cast<int>(scan.ranges.size()) ? scan.ranges[i] : NAN;
+    const bool echo = std::isfinite(r) && r >= scan.range_min && r < scan.range_max;
+    ranges.push_back(echo ? r : std::numeric_limits<double>::infinity());
+  }
+  return ranges;
+}
+
 }  // namespace markov_localization::ros_conversions

@@ -2,57 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
-#include <ros/param.h>
+#include "spott_ros/parameter_reader.h"
 
 namespace markov_localization {
 namespace {
-
-// Reads parameters by name, remembers every name it knows and says which have the wrong type.
-class Reader {
- public:
-  Reader(const ros::NodeHandle& pnh, std::vector<std::string>& errors)
-      : pnh_(pnh), errors_(errors) {}
-
-  template <typename T>
-  void Get(const std::string& name, T& value, const char* type) {
-    known_.insert(name);
-    if (!pnh_.hasParam(name)) return;
-    T read{};
-    if (pnh_.getParam(name, read)) {
-      value = read;
-    } else {
-      errors_.push_back("~" + name + " must be " + type);
-    }
-  }
-  void Double(const std::string& name, double& v) { Get(name, v, "a number"); }
-  void Int(const std::string& name, int& v) { Get(name, v, "an integer"); }
-  void Bool(const std::string& name, bool& v) { Get(name, v, "true or false"); }
-  void String(const std::string& name, std::string& v) { Get(name, v, "a string"); }
-  void Degrees(const std::string& name, double& radians) {
-    double deg = radians * 180.0 / M_PI;
-    Double(name, deg);
-    radians = deg * M_PI / 180.0;
-  }
-
-  /// Every parameter under the private namespace that no Get asked for.
-  void CheckUnknown() {
-    std::vector<std::string> names;
-    if (!ros::param::getParamNames(names)) return;
-    const std::string prefix = pnh_.getNamespace() + "/";
-    for (const auto& full : names) {
-      if (full.compare(0, prefix.size(), prefix) != 0) continue;
-      const std::string name = full.substr(prefix.size());
-      if (!known_.count(name)) errors_.push_back("~" + name + " is not a parameter of this node");
-    }
-  }
-
- private:
-  const ros::NodeHandle& pnh_;
-  std::vector<std::string>& errors_;
-  std::set<std::string> known_;
-};
 
 // The core's messages name struct fields; the node's names are the YAML keys.
 void AddCore(std::vector<std::string>& errors, const std::vector<std::string>& core,
@@ -80,115 +34,172 @@ void AddCore(std::vector<std::string>& errors, const std::vector<std::string>& c
 }  // namespace
 
 std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
-  std::vector<std::string> v;
-  Reader r(pnh, v);
-  r.String("world_file", p.world_file);
-  r.String("ring_topic", p.ring_topic);
-  r.String("map_frame", p.map_frame);
-  r.String("odom_frame", p.odom_frame);
-  r.Double("transform_tolerance_s", p.transform_tolerance_s);
-  r.Bool("start_uniform", p.start_uniform);
-  r.Bool("initial_pose_from_world", p.initial_pose_from_world);
-  r.Double("initial_sigma_xy_m", p.initial_sigma_xy_m);
-  r.Degrees("initial_sigma_theta_deg", p.initial_sigma_theta_rad);
-  r.Double("belief_rate_hz", p.belief_rate_hz);
+  // spott_ros::ParameterReader: typed getters, every violation and every unknown key by name.
+  spott_ros::ParameterReader r = spott_ros::ParameterReader::FromNode(pnh);
+  std::vector<std::string> v;  // this node's own checks, handed to the reader at the end
+  r.Get("world_file", p.world_file);
+  r.Get("map_file", p.map_file);
+  r.Get("use_map_topic", p.use_map_topic);
+  r.Get("map_topic", p.map_topic);
+  r.Get("map_updates_topic", p.map_updates_topic);
+  r.Get("sonar_enabled", p.sonar_enabled);
+  r.Get("ring_topic", p.ring_topic);
+  auto& g = p.gate;
+  r.Get("gate/update_min_d_m", g.update_min_d_m);
+  r.GetDegrees("gate/update_min_a_deg", g.update_min_a_rad);
+  r.Get("gate/standing_interval_s", g.standing_interval_s);
+  auto& l = p.laser;
+  l.model.max_range_m = 25.0;
+  l.model.critical_angle_rad = M_PI / 2;  // a laser scatters off every surface
+  r.Get("laser/enabled", l.enabled);
+  r.Get("laser/topic", l.topic);
+  r.Get("laser/max_beams", l.max_beams);
+  r.Get("laser/base_frame", l.base_frame);
+  r.Get("laser/max_range_m", l.model.max_range_m);
+  r.Get("laser/range_bin_m", l.model.range_bin_m);
+  r.Get("laser/sigma_hit_m", l.model.sigma_hit_m);
+  r.Get("laser/lambda_short_per_m", l.model.lambda_short_per_m);
+  r.Get("laser/z_hit", l.model.z_hit);
+  r.Get("laser/z_short", l.model.z_short);
+  r.Get("laser/z_max", l.model.z_max);
+  r.Get("laser/z_rand", l.model.z_rand);
+  r.Get("estimate/refine", p.refine.enabled);
+  r.Get("estimate/refine_sigma_scale", p.refine.sigma_scale);
+  r.Get("estimate/refine_max_offset_cells", p.refine.max_offset_cells);
+  r.Get("map_frame", p.map_frame);
+  r.Get("odom_frame", p.odom_frame);
+  r.Get("transform_tolerance_s", p.transform_tolerance_s);
+  r.Get("start_uniform", p.start_uniform);
+  r.Get("initial_pose_from_world", p.initial_pose_from_world);
+  r.Get("initial_sigma_xy_m", p.initial_sigma_xy_m);
+  r.GetDegrees("initial_sigma_theta_deg", p.initial_sigma_theta_rad);
+  r.Get("belief_rate_hz", p.belief_rate_hz);
 
-  r.Double("map/resolution_m", p.map.resolution_m);
-  r.Double("map/state_clearance_m", p.map.state_clearance_m);
-  r.Double("map/door_thickness_m", p.map.door_thickness_m);
-  r.Int("map/ray_cast_subdivision", p.map.ray_cast_subdivision);
+  r.Get("map/resolution_m", p.map.resolution_m);
+  r.Get("map/state_clearance_m", p.map.state_clearance_m);
+  r.Get("map/door_thickness_m", p.map.door_thickness_m);
+  r.Get("map/ray_cast_subdivision", p.map.ray_cast_subdivision);
+  r.Get("map/occupied_threshold", p.map.occupied_threshold);
+  r.Get("map/free_threshold", p.map.free_threshold);
 
-  r.Degrees("grid/angular_resolution_deg", p.grid.angular_resolution_rad);
-  r.Bool("grid/selective_update", p.grid.selective_update);
-  r.Double("grid/threshold_fraction", p.grid.threshold_fraction);
-  r.Double("grid/floor_fraction", p.grid.floor_fraction);
+  r.GetDegrees("grid/angular_resolution_deg", p.grid.angular_resolution_rad);
+  r.Get("grid/selective_update", p.grid.selective_update);
+  r.Get("grid/threshold_fraction", p.grid.threshold_fraction);
+  r.Get("grid/floor_fraction", p.grid.floor_fraction);
+  r.Get("grid/distance_filter", p.grid.distance_filter);
+  r.Get("grid/distance_filter_probability", p.grid.distance_filter_probability);
+  r.Get("grid/distance_filter_sigmas", p.grid.distance_filter_sigmas);
+  r.Get("grid/distance_filter_max_parts", p.grid.distance_filter_max_parts);
+  r.Get("grid/distance_filter_max_fraction", p.grid.distance_filter_max_fraction);
   auto& lost = p.grid.lost;
-  r.Bool("lost/enabled", lost.enabled);
-  r.Double("lost/fast_rate", lost.fast_rate);
-  r.Double("lost/slow_rate", lost.slow_rate);
-  r.Double("lost/lost_ratio", lost.lost_ratio);
-  r.Double("lost/scan_lost_ratio", lost.scan_lost_ratio);
-  r.Double("lost/certainty_drop_ratio", lost.certainty_drop_ratio);
-  r.Int("lost/hold_scans", lost.hold_scans);
-  r.Double("lost/relocalization_mass", lost.relocalization_mass);
+  r.Get("lost/enabled", lost.enabled);
+  r.Get("lost/surprise", lost.surprise);
+  r.Get("lost/fast_rate", lost.fast_rate);
+  r.Get("lost/slow_rate", lost.slow_rate);
+  r.Get("lost/lost_ratio", lost.lost_ratio);
+  r.Get("lost/scan_lost_ratio", lost.scan_lost_ratio);
+  r.Get("lost/certainty_drop_ratio", lost.certainty_drop_ratio);
+  r.Get("lost/hold_scans", lost.hold_scans);
+  r.Get("lost/relocalization_mass", lost.relocalization_mass);
   auto& m = p.grid.motion;
-  r.Double("motion/sigma_xy_per_m", m.sigma_xy_per_m);
-  r.Double("motion/sigma_xy_per_rad", m.sigma_xy_per_rad);
-  r.Double("motion/sigma_theta_per_m", m.sigma_theta_per_m);
-  r.Double("motion/sigma_theta_per_rad", m.sigma_theta_per_rad);
+  r.Get("motion/sigma_xy_per_m", m.sigma_xy_per_m);
+  r.Get("motion/sigma_xy_per_rad", m.sigma_xy_per_rad);
+  r.Get("motion/sigma_theta_per_m", m.sigma_theta_per_m);
+  r.Get("motion/sigma_theta_per_rad", m.sigma_theta_per_rad);
 
   auto& s = p.sensor;
-  r.Int("sensor/beams", p.beams);
-  r.Bool("sensor/ring_geometry", p.ring_geometry);
-  r.Double("sensor/sensor_offset_m", s.sensor_offset_m);
+  r.Get("sensor/beams", p.beams);
+  r.Get("sensor/ring_geometry", p.ring_geometry);
+  r.Get("sensor/sensor_offset_m", s.sensor_offset_m);
   // The Polaroid sonar's 6.5 m (capped by the ring's own max_range): at 5 m the corner echoes
   // and far walls that told room A from room B after a kidnap were cut off.
   s.max_range_m = 6.5;
-  r.Double("sensor/max_range_m", s.max_range_m);
+  r.Get("sensor/max_range_m", s.max_range_m);
   // Sonar physics (node defaults: the ring's cone, 0.35 rad); see sensor_model.h.
   s.beam_width_rad = -1.0;
   s.critical_angle_rad = 0.35;
-  r.Double("sensor/beam_width_rad", s.beam_width_rad);
-  r.Double("sensor/critical_angle_rad", s.critical_angle_rad);
-  r.Double("sensor/range_bin_m", s.range_bin_m);
-  r.Double("sensor/sigma_hit_m", s.sigma_hit_m);
-  r.Double("sensor/lambda_short_per_m", s.lambda_short_per_m);
-  r.Double("sensor/z_hit", s.z_hit);
-  r.Double("sensor/z_short", s.z_short);
-  r.Double("sensor/z_max", s.z_max);
-  r.Double("sensor/z_rand", s.z_rand);
+  r.Get("sensor/beam_width_rad", s.beam_width_rad);
+  r.Get("sensor/critical_angle_rad", s.critical_angle_rad);
+  r.Get("sensor/range_bin_m", s.range_bin_m);
+  r.Get("sensor/sigma_hit_m", s.sigma_hit_m);
+  r.Get("sensor/lambda_short_per_m", s.lambda_short_per_m);
+  r.Get("sensor/z_hit", s.z_hit);
+  r.Get("sensor/z_short", s.z_short);
+  r.Get("sensor/z_max", s.z_max);
+  r.Get("sensor/z_rand", s.z_rand);
 
-  r.Double("certainty/mode_radius_m", p.certainty.mode_radius_m);
-  r.Degrees("certainty/mode_radius_deg", p.certainty.mode_radius_rad);
-  r.Double("certainty/threshold", p.certainty.threshold);
-  r.Double("modes/uniform_factor", p.modes.uniform_factor);
-  r.Double("modes/max_fraction", p.modes.max_fraction);
-  r.Int("modes/max_modes", p.modes.max_modes);
+  r.Get("certainty/mode_radius_m", p.certainty.mode_radius_m);
+  r.GetDegrees("certainty/mode_radius_deg", p.certainty.mode_radius_rad);
+  r.Get("certainty/threshold", p.certainty.threshold);
+  r.Get("modes/uniform_factor", p.modes.uniform_factor);
+  r.Get("modes/max_fraction", p.modes.max_fraction);
+  r.Get("modes/max_modes", p.modes.max_modes);
 
   auto& a = p.active;
-  r.Double("active/window_m", a.window_m);
-  r.Double("active/target_spacing_m", a.target_spacing_m);
-  r.Double("active/alpha", a.alpha);
-  r.Double("active/travel_cost_per_m", a.travel_cost_per_m);
-  r.Double("active/occupied_cost", a.occupied_cost);
-  r.Double("active/max_target_occupancy", a.max_target_occupancy);
-  r.Int("active/max_modes", a.max_modes);
+  r.Get("active/window_m", a.window_m);
+  r.Get("active/target_spacing_m", a.target_spacing_m);
+  r.Get("active/alpha", a.alpha);
+  r.Get("active/travel_cost_per_m", a.travel_cost_per_m);
+  r.Get("active/occupied_cost", a.occupied_cost);
+  r.Get("active/max_target_occupancy", a.max_target_occupancy);
+  r.Get("active/max_modes", a.max_modes);
 
   auto& run = p.run;
-  r.Double("active_run/random_motion_m", run.random_motion_m);
-  r.Double("active_run/rewander_m", run.rewander_m);
-  r.Double("active_run/min_target_distance_m", run.min_target_distance_m);
-  r.Int("active_run/max_navigation_failures", run.max_navigation_failures);
-  r.Double("active_run/estimate_jump_m", run.estimate_jump_m);
-  r.Degrees("active_run/estimate_jump_deg", run.estimate_jump_rad);
-  r.Double("active_run/target_timeout_s", run.target_timeout_s);
-  r.Double("active_run/confirm_s", run.confirm_s);
-  r.Double("active_run/position_tolerance_m", p.position_tolerance_m);
-  r.Double("active_run/target_clearance_m", p.target_clearance_m);
-  r.Double("active_run/target_search_m", p.target_search_m);
-  r.String("active_run/navigate_action", p.navigate_action);
-  r.String("active_run/global_goal_topic", p.global_goal_topic);
-  r.String("active_run/cmd_vel_topic", p.cmd_vel_topic);
-  r.Int("active_run/seed", p.seed);
+  r.Get("active_run/random_motion_m", run.random_motion_m);
+  r.Get("active_run/rewander_m", run.rewander_m);
+  r.Get("active_run/min_target_distance_m", run.min_target_distance_m);
+  r.Get("active_run/max_navigation_failures", run.max_navigation_failures);
+  r.Get("active_run/estimate_jump_m", run.estimate_jump_m);
+  r.GetDegrees("active_run/estimate_jump_deg", run.estimate_jump_rad);
+  r.Get("active_run/target_timeout_s", run.target_timeout_s);
+  r.Get("active_run/confirm_s", run.confirm_s);
+  r.Get("active_run/position_tolerance_m", p.position_tolerance_m);
+  r.Get("active_run/target_clearance_m", p.target_clearance_m);
+  r.Get("active_run/target_search_m", p.target_search_m);
+  r.Get("active_run/navigate_action", p.navigate_action);
+  r.Get("active_run/cmd_vel_topic", p.cmd_vel_topic);
+  r.Get("active_run/seed", p.seed);
 
-  r.Double("estimate/switch_ratio", p.sticky.switch_ratio);
-  r.Double("estimate/match_radius_m", p.sticky.match_radius_m);
-  r.Degrees("estimate/match_deg", p.sticky.match_rad);
+  r.Get("estimate/switch_ratio", p.sticky.switch_ratio);
+  r.Get("estimate/match_radius_m", p.sticky.match_radius_m);
+  r.GetDegrees("estimate/match_deg", p.sticky.match_rad);
 
   auto& w = p.wander;
-  r.Double("wander/max_speed_mps", w.max_speed_mps);
-  r.Double("wander/max_turn_rps", w.max_turn_rps);
-  r.Double("wander/heading_gain", w.heading_gain);
-  r.Double("wander/stop_distance_m", w.stop_distance_m);
-  r.Double("wander/slow_distance_m", w.slow_distance_m);
-  r.Double("wander/side_distance_m", w.side_distance_m);
-  r.Double("wander/free_range_m", w.free_range_m);
-  r.Degrees("wander/front_half_angle_deg", w.front_half_angle_rad);
-  r.Int("wander/stall_steps", w.stall_steps);
-  r.CheckUnknown();
+  r.Get("wander/max_speed_mps", w.max_speed_mps);
+  r.Get("wander/max_turn_rps", w.max_turn_rps);
+  r.Get("wander/heading_gain", w.heading_gain);
+  r.Get("wander/stop_distance_m", w.stop_distance_m);
+  r.Get("wander/slow_distance_m", w.slow_distance_m);
+  r.Get("wander/side_distance_m", w.side_distance_m);
+  r.Get("wander/free_range_m", w.free_range_m);
+  r.GetDegrees("wander/front_half_angle_deg", w.front_half_angle_rad);
+  r.Get("wander/stall_steps", w.stall_steps);
 
-  if (p.world_file.empty()) v.push_back("~world_file must name a world file");
-  if (p.ring_topic.empty()) v.push_back("~ring_topic must not be empty");
+  if (p.sonar_enabled && p.ring_topic.empty()) v.push_back("~ring_topic must not be empty");
+  if (!p.sonar_enabled && !l.enabled)
+    v.push_back("~sonar_enabled and ~laser/enabled are both false: nothing to localize on");
+  if (l.enabled && l.topic.empty()) v.push_back("~laser/topic must not be empty");
+  if (l.enabled && l.base_frame.empty()) v.push_back("~laser/base_frame must not be empty");
+  if (l.max_beams < 2 || l.max_beams > 2000) v.push_back("~laser/max_beams must be in [2, 2000]");
+  if (p.use_map_topic && p.map_topic.empty()) v.push_back("~map_topic must not be empty");
+  for (std::string e : ValidateParameters(g)) {
+    if (e.rfind("update_min_a_rad", 0) == 0)
+      e = "update_min_a_deg" + e.substr(16) + " (given in degrees)";
+    v.push_back("~gate/" + e);
+  }
+  {
+    // The laser model's parameters, checked with a placeholder beam (the scan's come later).
+    SensorModelParameters lm = l.model;
+    lm.beam_angles_rad = {0.0};
+    for (const auto& e : ValidateParameters(lm)) v.push_back("~laser/" + e);
+  }
+  for (const auto& e : ValidateParameters(p.refine)) {
+    std::string name = e.substr(0, e.find(' '));
+    const std::string rest = e.substr(name.size());
+    if (name == "sigma_scale") name = "refine_sigma_scale";
+    if (name == "max_offset_cells") name = "refine_max_offset_cells";
+    v.push_back("~estimate/" + name + rest);
+  }
   if (p.map_frame.empty() || p.odom_frame.empty() || p.map_frame == p.odom_frame)
     v.push_back("~map_frame and ~odom_frame must be two non-empty frame names");
   if (!(p.transform_tolerance_s >= 0.0 && p.transform_tolerance_s <= 10.0))
@@ -227,7 +238,8 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   if (p.navigate_action.empty()) v.push_back("~active_run/navigate_action must not be empty");
   if (p.cmd_vel_topic.empty()) v.push_back("~active_run/cmd_vel_topic must not be empty");
   if (p.seed < 0) v.push_back("~active_run/seed must be >= 0");
-  return v;
+  for (const std::string& e : v) r.Fail(e);
+  return r.Finish();  // the violations above, then every key no getter asked for
 }
 
 }  // namespace markov_localization

@@ -116,5 +116,63 @@ TEST(Conversions, NavigateGoalIsAPointWithoutHeading) {
   EXPECT_TRUE(std::isnan(g.direction_bias));
 }
 
+TEST(Conversions, BeliefModesCarryMassAndSpread) {
+  Mode m;
+  m.mean = Pose2{1.0, 2.0, 0.5};
+  m.mass = 0.7;
+  m.covariance << 0.01, 0.002, 0.0, 0.002, 0.04, 0.001, 0.0, 0.001, 0.09;
+  const spott_msgs::BeliefModes msg = conv::ToBeliefModes({m}, "map", ros::Time(3.0));
+  ASSERT_EQ(msg.modes.size(), 1u);
+  EXPECT_EQ(msg.header.frame_id, "map");
+  EXPECT_DOUBLE_EQ(msg.modes[0].mass, 0.7);
+  EXPECT_DOUBLE_EQ(msg.modes[0].mean.theta, 0.5);
+  EXPECT_DOUBLE_EQ(msg.modes[0].covariance[1], 0.002);  // row-major (x, y)
+  EXPECT_DOUBLE_EQ(msg.modes[0].covariance[4], 0.04);   // (y, y)
+  EXPECT_DOUBLE_EQ(msg.modes[0].covariance[7], 0.001);  // (theta, y)
+  EXPECT_DOUBLE_EQ(msg.modes[0].covariance[8], 0.09);
+}
+
+TEST(Conversions, AMapMessageKeepsItsCornerOriginResolutionAndRows) {
+  nav_msgs::OccupancyGrid g;
+  g.info.resolution = 0.05f;
+  g.info.width = 3;
+  g.info.height = 2;
+  g.info.origin.position.x = -1.0;
+  g.info.origin.position.y = 4.0;
+  g.info.origin.orientation.z = std::sin(0.1);
+  g.info.origin.orientation.w = std::cos(0.1);
+  g.data = {0, 100, -1, 0, 0, 100};
+  const OccupancyMap m = conv::FromOccupancyGrid(g);
+  EXPECT_EQ(m.width, 3);
+  EXPECT_EQ(m.height, 2);
+  EXPECT_NEAR(m.resolution_m, 0.05, 1e-7);
+  EXPECT_DOUBLE_EQ(m.origin.x(), -1.0);
+  EXPECT_NEAR(m.origin_yaw, 0.2, 1e-12);
+  EXPECT_EQ(m.at(1, 0), 100);  // row 0 at the bottom, as the message
+  EXPECT_EQ(m.at(2, 1), 100);
+}
+
+TEST(Conversions, LaserBeamsAreSubsampledAsAmclDoes) {
+  // 181 readings, laser_max_beams 30: step (181 - 1) / 29 = 6, beams 0, 6, ..., 180 (31).
+  const std::vector<int> beams = conv::LaserBeams(181, 30);
+  ASSERT_EQ(beams.size(), 31u);
+  EXPECT_EQ(beams[1], 6);
+  EXPECT_EQ(beams.back(), 180);
+  EXPECT_EQ(conv::LaserBeams(10, 30).size(), 10u);
+  sensor_msgs::LaserScan scan;
+  scan.angle_min = -1.5f;
+  scan.angle_increment = 0.5f;
+  scan.range_min = 0.1f;
+  scan.range_max = 10.0f;
+  scan.ranges = {1.0f, NAN, 0.05f, 10.0f, INFINITY, 3.0f, 9.99f};
+  const std::vector<int> all = conv::LaserBeams(7, 7);
+  const std::vector<double> angles = conv::LaserBeamAngles(scan, all);
+  EXPECT_NEAR(angles[3], 0.0, 1e-7);
+  const std::vector<double> r = conv::LaserRanges(scan, all);
+  EXPECT_DOUBLE_EQ(r[0], 1.0);
+  for (int i : {1, 2, 3, 4}) EXPECT_TRUE(std::isinf(r[i])) << i;  // NaN, < min, >= max, inf
+  EXPECT_NEAR(r[6], 9.99, 1e-5);
+}
+
 }  // namespace
 }  // namespace markov_localization

@@ -11,9 +11,12 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/time.h>
+#include <sensor_msgs/LaserScan.h>
+#include <spott_msgs/BeliefModes.h>
 #include <spott_msgs/NavigateGoal.h>
 
 #include "markov_localization/certainty.h"
+#include "markov_localization/occupancy_map.h"
 
 namespace markov_localization::ros_conversions {
 
@@ -37,6 +40,24 @@ geometry_msgs::PoseWithCovarianceStamped ToPoseWithCovariance(const Pose2& estim
 /// The means of the modes, heaviest first.
 geometry_msgs::PoseArray ToPoseArray(const std::vector<Mode>& modes, const std::string& frame_id,
                                      const ros::Time& stamp);
+
+/// The modes with their mass and spread (covariance over x, y, theta, row-major).
+spott_msgs::BeliefModes ToBeliefModes(const std::vector<Mode>& modes, const std::string& frame_id,
+                                      const ros::Time& stamp);
+
+/// A /map message's content (origin pose's yaw from its quaternion). No check: MapModel
+/// validates it.
+OccupancyMap FromOccupancyGrid(const nav_msgs::OccupancyGrid& grid);
+
+/// The beams of a scan the laser model uses: AMCL's laser_max_beams subsampling, every
+/// ((n - 1) / (max_beams - 1))-th reading from the first. Indices into msg.ranges.
+std::vector<int> LaserBeams(int readings, int max_beams);
+/// Angles (rad, relative to the laser's frame) of `beams` of `scan`.
+std::vector<double> LaserBeamAngles(const sensor_msgs::LaserScan& scan,
+                                    const std::vector<int>& beams);
+/// The readings of `beams` (m); NaN, infinite, below range_min or at/above range_max: no echo
+/// (+infinity).
+std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::vector<int>& beams);
 
 /// map -> odom such that (map -> odom) * (odom -> base) = the estimate (REP-105):
 /// T = estimate * odom^-1.

@@ -12,17 +12,42 @@
 #include "markov_localization/active_localization.h"
 #include "markov_localization/active_run.h"
 #include "markov_localization/certainty.h"
+#include "markov_localization/localizer.h"
 #include "markov_localization/map_model.h"
 #include "markov_localization/markov_grid.h"
+#include "markov_localization/pose_refinement.h"
 #include "markov_localization/sensor_model.h"
 #include "markov_localization/sticky_estimate.h"
 #include "markov_localization/wander.h"
 
 namespace markov_localization {
 
+/// The laser model's settings (sensor_msgs/LaserScan on `topic`).
+struct LaserParameters {
+  bool enabled = false;
+  std::string topic = "scan";
+  /// AMCL's laser_max_beams: every ((n - 1) / (max_beams - 1))-th beam of the scan, >= 2.
+  int max_beams = 30;
+  std::string base_frame = "base_link";  ///< The laser's mount is looked up in this frame (tf).
+  /// Model max range (m), capped by the scan's range_max: the SICK's 25 m sees a corridor's
+  /// far end (at 12 m the estimate slipped along cim_office's 30 m hallway).
+  SensorModelParameters model;
+};
+
 struct NodeParameters {
-  std::string world_file;  ///< Required: the spott_map world (CAD map).
+  /// The map (README "Maps"): map_file (map_server YAML) if set, else world_file (spott_map
+  /// world, the default of the stack) if set, else the latched /map topic; use_map_topic makes
+  /// the topic win over both files.
+  std::string world_file;
+  std::string map_file;
+  bool use_map_topic = false;
+  std::string map_topic = "map";
+  std::string map_updates_topic = "map_updates";  ///< spott_msgs/MapUpdate ("" = none).
+  bool sonar_enabled = true;                      ///< Localize on the RangeRing of ring_topic.
   std::string ring_topic = "sonar";
+  LaserParameters laser;
+  MotionGateParameters gate;
+  PoseRefinementParameters refine;
   std::string map_frame = "map";
   std::string odom_frame = "odom";
   double transform_tolerance_s = 0.2;  ///< map->odom is future-dated by this (s), >= 0.
@@ -51,9 +76,8 @@ struct NodeParameters {
   double target_search_m = 0.75;
   StickyEstimateParameters sticky;
   std::string navigate_action = "harmonic_planner/navigate";
-  std::string global_goal_topic = "global_goal";  ///< "" = do not publish a global goal.
-  std::string cmd_vel_topic = "cmd_vel";          ///< The random motion's commands.
-  int seed = 1;                                   ///< Seeds the random motion, >= 0.
+  std::string cmd_vel_topic = "cmd_vel/wander";  ///< The random motion's commands (arbiter input).
+  int seed = 1;                                  ///< Seeds the random motion, >= 0.
 };
 
 /// Reads every parameter from `pnh` (private namespace) into `p`; returns each violation
