@@ -1,7 +1,7 @@
 // Renders the README's figure: the harmonic field of the paper's 35 x 35 case (three obstacles
 // and a goal) and of a 128 x 128 office window as images (PPM): log10 of p = 1 - u in grey,
 // equipotentials u = 1 - 10^-k (k = 1, 2, ...) in orange, padded obstacles dark, the goal green,
-// the steepest-descent path from the robot in red, and the peer's Dijkstra path in blue.
+// the steepest-descent path from the robot in red, and navfn's path (bench/navfn_peer.h) in blue.
 // Usage: spott_harmonic_planner_figure OUT_PREFIX
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "../test/test_maps.h"
+#include "navfn_peer.h"
 #include "spott_harmonic_planner/potential_field.h"
-#include "wavefront_peer.h"
 
 namespace shp = spott_harmonic_planner;
 
@@ -34,8 +34,9 @@ struct Image {
   }
 };
 
-void Render(const shp::PotentialField& f, const shp::Vec2& robot, const std::vector<int>& peer,
-            int scale, const std::string& path) {
+void Render(const shp::PotentialField& f, const shp::Vec2& robot,
+            const std::vector<shp::bench::NavfnPeer::Point>& peer, int scale,
+            const std::string& path) {
   Image img(f.width() * scale, f.height() * scale);
   const double decades = 14.0;
   auto level = [&](double px, double py) {
@@ -66,8 +67,9 @@ void Render(const shp::PotentialField& f, const shp::Vec2& robot, const std::vec
     }
   }
   for (std::size_t i = 0; i + 1 < peer.size(); ++i) {
-    const double x0 = peer[i] % f.width() + 0.5, y0 = peer[i] / f.width() + 0.5;
-    const double x1 = peer[i + 1] % f.width() + 0.5, y1 = peer[i + 1] / f.width() + 0.5;
+    // navfn's path points are cell indices plus sub-cell offsets (cell centres at + 0.5).
+    const double x0 = peer[i].x + 0.5, y0 = peer[i].y + 0.5;
+    const double x1 = peer[i + 1].x + 0.5, y1 = peer[i + 1].y + 0.5;
     for (int s = 0; s <= 2 * scale; ++s) {
       const double t = s / (2.0 * scale);
       img.Set(static_cast<int>(((1 - t) * x0 + t * x1) * scale),
@@ -89,8 +91,8 @@ void Render(const shp::PotentialField& f, const shp::Vec2& robot, const std::vec
               p.reached_goal ? "reaches the goal" : "does NOT reach the goal", p.length_m);
 }
 
-std::vector<int> PeerPath(const spott_map::OccupancyRaster& r, const shp::Vec2& goal,
-                          const shp::Vec2& robot) {
+std::vector<shp::bench::NavfnPeer::Point> PeerPath(const spott_map::OccupancyRaster& r,
+                                                   const shp::Vec2& goal, const shp::Vec2& robot) {
   std::vector<std::uint8_t> blocked(r.width() * r.height());
   for (int y = 0; y < r.height(); ++y) {
     for (int x = 0; x < r.width(); ++x) {
@@ -98,18 +100,16 @@ std::vector<int> PeerPath(const spott_map::OccupancyRaster& r, const shp::Vec2& 
           x == 0 || y == 0 || x == r.width() - 1 || y == r.height() - 1 || r.Blocked(x, y);
     }
   }
-  shp::bench::WavefrontPeer peer;
-  peer.Plan(blocked, r.width(), r.height(),
-            static_cast<int>(goal.y()) * r.width() + static_cast<int>(goal.x()));
-  return peer.Path(blocked, static_cast<int>(robot.y()) * r.width() + static_cast<int>(robot.x()));
+  shp::bench::NavfnPeer peer;
+  peer.MakePlan(blocked, r.width(), r.height(),
+                static_cast<int>(robot.y()) * r.width() + static_cast<int>(robot.x()),
+                static_cast<int>(goal.y()) * r.width() + static_cast<int>(goal.x()));
+  return peer.path();
 }
 
 void Case(const spott_map::OccupancyRaster& r, const shp::Vec2& goal, const shp::Vec2& robot,
           int scale, const std::string& path) {
-  shp::FieldOptions o;
-  o.norm = shp::ResidualNorm::kRelative;
-  o.tolerance = 1e-6;
-  shp::PotentialField f(o);
+  shp::PotentialField f{shp::FieldOptions{}};  // the defaults (the node's)
   f.SetOccupancy(r);
   f.SetGoalPoint(goal);
   f.ColdStart();

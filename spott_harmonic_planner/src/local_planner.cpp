@@ -10,29 +10,29 @@ namespace spott_harmonic_planner {
 
 std::vector<std::string> ValidateParameters(const PlannerParameters& p) {
   std::vector<std::string> v;
-  for (const auto& s : spott_map::ValidateParameters(p.window)) v.push_back("window: " + s);
-  for (const auto& s : ValidateFieldOptions(p.field)) v.push_back("solver: " + s);
-  for (const auto& s : ValidateSteeringParameters(p.steering)) v.push_back("steering: " + s);
+  for (const auto& s : spott_map::ValidateParameters(p.window)) v.push_back("window/" + s);
+  for (const auto& s : ValidateFieldOptions(p.field)) v.push_back("solver/" + s);
+  for (const auto& s : ValidateSteeringParameters(p.steering)) v.push_back("steering/" + s);
   if (p.sweeps_per_cycle < 1 || p.sweeps_per_cycle > 10000) {
-    v.push_back("sweeps_per_cycle must be in [1, 10000] (got " +
+    v.push_back("solver/sweeps_per_cycle must be in [1, 10000] (got " +
                 std::to_string(p.sweeps_per_cycle) + ")");
   }
   if (!(p.goal_tolerance_m > 0.0)) {
     std::ostringstream s;
-    s << "goal_tolerance must be > 0 m (got " << p.goal_tolerance_m << ")";
+    s << "navigate/goal_tolerance_m must be > 0 m (got " << p.goal_tolerance_m << ")";
     v.push_back(s.str());
   }
   if (!(p.border_goal_half_width_m > 0.0)) {
     std::ostringstream s;
-    s << "border_goal_half_width must be > 0 m (got " << p.border_goal_half_width_m << ")";
+    s << "navigate/border_goal_half_width_m must be > 0 m (got " << p.border_goal_half_width_m
+      << ")";
     v.push_back(s.str());
   }
   return v;
 }
 
-std::optional<spott_map::Segment> ProjectGoalOntoWindow(const Vec2& robot, const Vec2& goal,
-                                                        const spott_map::Box& w,
-                                                        double half_width_m) {
+std::optional<spott_map::Segment> BorderGoalSegment(const Vec2& robot, const Vec2& goal,
+                                                    const spott_map::Box& w, double half_width_m) {
   if (w.Contains(goal) || !w.Contains(robot)) return std::nullopt;
   const Vec2 d = goal - robot;
   // Smallest t in (0, 1] at which robot + t d meets a side.
@@ -102,23 +102,27 @@ void LocalPlanner::SetGoal(const Vec2& goal) {
   goal_ = goal;
   border_goal_.reset();
   goal_dirty_ = true;
+  goal_moved_ = true;
 }
 
 void LocalPlanner::SetBorderGoal(const spott_map::Segment& segment) {
   border_goal_ = segment;
   goal_dirty_ = true;
+  goal_moved_ = true;
 }
 
 void LocalPlanner::ClearBorderGoal() {
   if (!border_goal_) return;
   border_goal_.reset();
   goal_dirty_ = true;
+  goal_moved_ = true;
 }
 
 void LocalPlanner::ClearGoal() {
   goal_.reset();
   border_goal_.reset();
   goal_dirty_ = true;
+  goal_moved_ = true;
 }
 
 void LocalPlanner::CorrectPose(const spott_map::Pose2& estimate) { pose_ = estimate; }
@@ -140,30 +144,46 @@ void LocalPlanner::Odometry(const spott_map::Pose2& odom) {
 void LocalPlanner::PlaceGoal() {
   status_.problem.clear();
   status_.has_goal = false;
+  status_.border_widened = false;
   if (!goal_) return;
   const spott_map::Box b = window_.bounds();
-  // Inside the window's inner part (the border ring holds the high value).
+  // Inside the window's inner part (the border ring holds the high value), decided by the
+  // goal's cell: a goal on the inner part's edge lies in a border cell.
   const double r = window_.raster().resolution();
-  const spott_map::Box inner{b.min + Vec2(r, r), b.max - Vec2(r, r)};
+  const auto cell = window_.raster().CellOf(*goal_);
+  const bool inner = cell && cell->first >= 1 && cell->second >= 1 &&
+                     cell->first <= window_.raster().width() - 2 &&
+                     cell->second <= window_.raster().height() - 2;
   bool ok;
-  if (inner.Contains(*goal_) && !border_goal_) {
-    ok = field_.SetGoalPoint(*goal_);
+  if ((inner || b.Contains(*goal_)) && !border_goal_) {
+    // A goal in the border ring is aimed at from the inner cell next to it (at most a cell
+    // away); the window re-centres before the robot gets there.
+    const Vec2 aim = inner ? *goal_
+                           : goal_->cwiseMax(b.min + Vec2(1.5 * r, 1.5 * r))
+                                 .cwiseMin(b.max - Vec2(1.5 * r, 1.5 * r));
+    ok = field_.SetGoalPoint(aim);
     if (!ok) status_.problem = "the goal lies in a padded obstacle";
   } else {
     std::optional<spott_map::Segment> seg = border_goal_;
     if (!seg)
-      seg = ProjectGoalOntoWindow(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
+      seg = BorderGoalSegment(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
     // A border goal whose own cells are all blocked (a door projected at an angle onto a wall
     // crossing the border, the window shifted by a localization error) widens step by step to
     // the free border cells nearest it, up to border_goal_half_width_m.
     ok = false;
     for (double half = 0.75 * r; seg && !ok; half *= 2.0) {
       ok = field_.SetGoalSegment(*seg, std::min(half, params_.border_goal_half_width_m));
+      status_.border_widened = half > 0.75 * r;
       if (half >= params_.border_goal_half_width_m) break;
     }
     if (!ok) status_.problem = "the projected border goal is blocked";
   }
-  if (ok) field_.ColdStart();
+  // A new goal starts cold (full multigrid); the same point goal in a re-centred window keeps
+  // the values the window shift moved along (warm start).
+  if (ok && (goal_moved_ || field_.goal_on_border() || field_.report().sweeps == 0)) {
+    field_.ColdStart();
+  }
+  goal_moved_ = false;
   status_.has_goal = ok;
 }
 

@@ -1,32 +1,21 @@
-// Geometric multigrid for the Dirichlet problem of solver.h: V-cycles whose smoother is the
-// colour-ordered Gauss-Seidel of kernels.h. Vertex coarsening: coarse cell (I, J) sits on fine
-// cell (2I, 2J) and is an unknown when its 3 x 3 fine footprint is; full-weighting restriction of
-// the residual, bilinear prolongation of the correction (never into fixed cells). The coarse
-// problem is the residual equation with homogeneous Dirichlet values: with the normalized
-// stencil (mean - u = h^2/4 Laplacian), doubling h multiplies the right-hand side by 4.
-// Passages narrower than three cells close on coarse levels; the smoother alone carries the
-// correction through them, so the cycle stays convergent but slows down (measured in bench/).
+// Multigrid solvers of solver.h on the Galerkin hierarchy of hierarchy.h:
+//   multigrid     one V(2,2)-cycle per iteration on the residual equation (a stationary
+//                 iteration);
+//   multigrid_cg  conjugate gradients preconditioned by one symmetric V(1,1)-cycle, started by
+//                 full multigrid. The preconditioner runs in single precision (its result only
+//                 has to be a good correction; the outer iteration, its residual and the field stay
+//                 in double), so it moves half the bytes and vectorizes twice as wide.
+// Both work on the unknowns only (runs of free cells) and allocate nothing per iteration.
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "kernels.h"
+#include "hierarchy.h"
 #include "solvers_internal.h"
 
 namespace spott_harmonic_planner::internal {
 
 namespace {
-
-struct Level {
-  int nx = 0;
-  int ny = 0;
-  std::vector<std::uint8_t> free;
-  std::vector<double> weight;  // smoother weight: 1 on unknowns, 0 on fixed cells
-  std::vector<double> u;       // correction (coarse levels only)
-  std::vector<double> f;       // right-hand side (coarse levels only)
-  std::vector<double> r;       // residual
-  std::size_t unknowns = 0;
-};
 
 class MultigridSolver final : public IterativeSolver {
  public:
@@ -35,52 +24,73 @@ class MultigridSolver final : public IterativeSolver {
 
   void Setup(const GridMask& mask) override {
     CheckMask(mask);
-    cg_started_ = false;
-    levels_.clear();
-    levels_.push_back(MakeLevel(mask.width, mask.height, mask.free));
-    while (true) {
-      const Level& fine = levels_.back();
-      const int cx = fine.nx / 2 + 1;
-      const int cy = fine.ny / 2 + 1;
-      if (cx < 3 || cy < 3 || cx >= fine.nx || cy >= fine.ny) break;
-      std::vector<std::uint8_t> cfree(static_cast<std::size_t>(cx) * cy, 0);
-      for (int y = 1; y < cy - 1; ++y) {
-        for (int x = 1; x < cx - 1; ++x) {
-          // Conservative coarsening: an unknown only when its whole 3 x 3 fine footprint is,
-          // so walls thicken on coarse levels but never vanish (a vanished wall would couple
-          // rooms the fine grid separates, and the cycle diverges).
-          bool all_free = true;
-          for (int dy = -1; dy <= 1 && all_free; ++dy) {
-            for (int dx = -1; dx <= 1 && all_free; ++dx) {
-              all_free = fine.free[static_cast<std::size_t>(2 * y + dy) * fine.nx + 2 * x + dx];
-            }
-          }
-          cfree[static_cast<std::size_t>(y) * cx + x] = all_free ? 1 : 0;
+    const std::size_t n = mask.free.size();
+    const bool same_size = nx_ == mask.width && ny_ == mask.height && r_.size() == n;
+    nx_ = mask.width;
+    ny_ = mask.height;
+    // Vectors are allocated per grid size; a new mask clears only what the last one used.
+    if (!same_size) {
+      if (cg_) {
+        for (auto* v : {&r32_, &z32_, &z32_old_}) v->assign(n, 0.0f);
+        for (auto* v : {&r_, &z_, &d_, &q_}) v->assign(n, 0.0);
+      } else {
+        for (auto* v : {&r_, &z_}) v->assign(n, 0.0);
+      }
+    } else {
+      for (const Run& run : runs()) {
+        const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
+        for (auto* v : {&r32_, &z32_, &z32_old_}) {
+          if (!v->empty()) std::fill(v->begin() + b + run.x0, v->begin() + b + run.x1, 0.0f);
+        }
+        for (auto* v : {&r_, &z_, &d_, &q_}) {
+          if (!v->empty()) std::fill(v->begin() + b + run.x0, v->begin() + b + run.x1, 0.0);
         }
       }
-      Level coarse = MakeLevel(cx, cy, cfree);
-      if (coarse.unknowns == 0) break;
-      levels_.push_back(std::move(coarse));
-      if (cx <= 5 || cy <= 5) break;
     }
-    const Level& last = levels_.back();
-    const double omega = OptimalOmega(options_.stencil, last.nx, last.ny);
-    coarsest_weight_.assign(last.free.size(), 0.0);
-    for (std::size_t i = 0; i < last.free.size(); ++i) {
-      coarsest_weight_[i] = last.free[i] ? omega : 0.0;
+    if (cg_) {
+      single_.Build(mask, options_.stencil);
+    } else {
+      double_.Build(mask, options_.stencil);
     }
-    for (std::size_t l = 1; l < levels_.size(); ++l) {
-      levels_[l].u.assign(levels_[l].free.size(), 0.0);
-      levels_[l].f.assign(levels_[l].free.size(), 0.0);
-    }
+    cg_started_ = false;
   }
 
   void Iterate(double* u) override {
     if (cg_) {
       IterateCg(u);
-    } else {
-      Cycle(0, u, nullptr);
+      return;
     }
+    Residual(u, r_.data());
+    double_.VCycle(r_.data(), z_.data(), options_.pre_smoothing, options_.post_smoothing);
+    for (const Run& run : double_.runs()) {
+      const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
+      for (int x = run.x0; x < run.x1; ++x) u[b + x] += z_[b + x];
+    }
+  }
+
+  bool InitialGuess(double* u) override {
+    const auto& runs = cg_ ? single_.runs() : double_.runs();
+    for (const Run& run : runs) {
+      const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
+      std::fill(u + b + run.x0, u + b + run.x1, 0.0);
+    }
+    Residual(u, r_.data());
+    if (cg_) {
+      ToSingle(r_.data(), r32_.data());
+      single_.FullMultigrid(r32_.data(), z32_.data(), fmg_pre_, fmg_post_);
+      for (const Run& run : runs) {
+        const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
+        for (int x = run.x0; x < run.x1; ++x) u[b + x] = z32_[b + x];
+      }
+    } else {
+      double_.FullMultigrid(r_.data(), z_.data(), options_.pre_smoothing, options_.post_smoothing);
+      for (const Run& run : runs) {
+        const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
+        for (int x = run.x0; x < run.x1; ++x) u[b + x] = z_[b + x];
+      }
+    }
+    cg_started_ = false;
+    return true;
   }
 
   void Restart() override { cg_started_ = false; }
@@ -88,154 +98,108 @@ class MultigridSolver final : public IterativeSolver {
   SolverKind kind() const override { return options_.kind; }
   Stencil stencil() const override { return options_.stencil; }
   double omega() const override { return 1.0; }
-  int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
-  static Level MakeLevel(int nx, int ny, std::vector<std::uint8_t> free) {
-    Level level;
-    level.nx = nx;
-    level.ny = ny;
-    level.free = std::move(free);
-    level.weight.assign(level.free.size(), 0.0);
-    for (std::size_t i = 0; i < level.free.size(); ++i) {
-      level.weight[i] = level.free[i] ? 1.0 : 0.0;
-      level.unknowns += level.free[i] ? 1 : 0;
-    }
-    level.r.assign(level.free.size(), 0.0);
-    return level;
-  }
+  const std::vector<Run>& runs() const { return cg_ ? single_.runs() : double_.runs(); }
 
-  void Smooth(const Level& level, double* u, const double* f, int sweeps, bool backwards) {
-    const int colours = kernels::Colours(options_.stencil);
-    for (int s = 0; s < sweeps; ++s) {
-      for (int k = 0; k < colours; ++k) {
-        const int c = backwards ? colours - 1 - k : k;
-        kernels::ColourPass(options_.stencil, level.nx, level.ny, u, f, level.weight.data(), c);
+  // r = mean(u) - u on the unknowns (the fixed cells of u hold the Dirichlet values).
+  void Residual(const double* u, double* r) const {
+    const bool five = options_.stencil == Stencil::kFivePoint;
+    for (const Run& run : runs()) {
+      const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx_;
+      const double* __restrict row = u + base;
+      const double* __restrict up = row + nx_;
+      const double* __restrict down = row - nx_;
+      double* __restrict rr = r + base;
+      if (five) {
+        for (int x = run.x0; x < run.x1; ++x) {
+          rr[x] = 0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) - row[x];
+        }
+      } else {
+        for (int x = run.x0; x < run.x1; ++x) {
+          rr[x] = 0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
+                  0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1])) - row[x];
+        }
       }
     }
   }
 
-  // Conjugate gradients on A u = b (A = I - M, M the stencil's neighbour mean on the unknowns;
-  // A is symmetric positive definite), preconditioned by one V-cycle from zero. The residual
-  // b - A u is the normalized residual mean - u of kernels::Residual.
+  void ToSingle(const double* a, float* b) const {
+    for (const Run& run : runs()) {
+      const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
+      for (int x = run.x0; x < run.x1; ++x) b[base + x] = static_cast<float>(a[base + x]);
+    }
+  }
+
+  // z = V-cycle(r) in single precision.
+  void Precondition() {
+    ToSingle(r_.data(), r32_.data());
+    single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
+    for (const Run& run : runs()) {
+      const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
+      for (int x = run.x0; x < run.x1; ++x) z_[base + x] = z32_[base + x];
+    }
+  }
+
+  double Dot(const std::vector<double>& a, const std::vector<double>& b) const {
+    double s = 0.0;
+    for (const Run& run : runs()) {
+      const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
+      for (int x = run.x0; x < run.x1; ++x) s += a[base + x] * b[base + x];
+    }
+    return s;
+  }
+
+  // Flexible conjugate gradients (Polak-Ribiere beta: the single-precision preconditioner is
+  // not exactly symmetric), preconditioned by one V-cycle; three fused passes per iteration
+  // besides the cycle, which also track the max-norms of the (recursive) residual.
   void IterateCg(double* u) {
-    const Level& fine = levels_[0];
-    const std::size_t n = fine.free.size();
-    const auto dot = [n](const std::vector<double>& a, const std::vector<double>& b) {
-      double s = 0.0;
-      for (std::size_t i = 0; i < n; ++i) s += a[i] * b[i];
-      return s;
-    };
+    const auto& rs = runs();
+    const bool nine = options_.stencil == Stencil::kNinePoint;
     if (!cg_started_) {
-      cg_r_.assign(n, 0.0);
-      cg_z_.assign(n, 0.0);
-      cg_q_.assign(n, 0.0);
-      kernels::Residual(options_.stencil, fine.nx, fine.ny, u, nullptr, fine.free.data(),
-                        cg_r_.data());
-      Precondition();
-      cg_d_ = cg_z_;
-      cg_rho_ = dot(cg_r_, cg_z_);
+      norms_ = kernels::TrueResidual(u, r_.data(), r32_.data(), nx_, rs.data(), rs.size(), nine);
+      single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
+      double rz_old = 0.0;
+      kernels::Dots(r_.data(), z32_.data(), z32_.data(), nx_, rs.data(), rs.size(), &rho_, &rz_old);
+      dq_ = kernels::Direction(z32_.data(), d_.data(), q_.data(), 0.0, nx_, rs.data(), rs.size(),
+                               nine);
       cg_started_ = true;
     }
-    if (!(cg_rho_ > 0.0)) return;  // solved to the last bit
-    // q = A d = d - M d; kernels::Residual gives M d - d (d is zero on fixed cells).
-    kernels::Residual(options_.stencil, fine.nx, fine.ny, cg_d_.data(), nullptr, fine.free.data(),
-                      cg_q_.data());
-    for (std::size_t i = 0; i < n; ++i) cg_q_[i] = -cg_q_[i];
-    const double dq = dot(cg_d_, cg_q_);
-    if (!(dq > 0.0)) return;
-    const double alpha = cg_rho_ / dq;
-    for (std::size_t i = 0; i < n; ++i) {
-      u[i] += alpha * cg_d_[i];
-      cg_r_[i] -= alpha * cg_q_[i];
-    }
-    Precondition();
-    const double rho = dot(cg_r_, cg_z_);
-    const double beta = rho / cg_rho_;
-    cg_rho_ = rho;
-    for (std::size_t i = 0; i < n; ++i) cg_d_[i] = cg_z_[i] + beta * cg_d_[i];
+    if (!(rho_ > 0.0) || !(dq_ > 0.0)) return;  // solved to the last bit
+    const double alpha = rho_ / dq_;
+    norms_ = kernels::Update(u, d_.data(), r_.data(), q_.data(), r32_.data(), alpha, nx_, rs.data(),
+                             rs.size());
+    std::swap(z32_, z32_old_);
+    single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
+    double rz = 0.0, rz_old = 0.0;
+    kernels::Dots(r_.data(), z32_.data(), z32_old_.data(), nx_, rs.data(), rs.size(), &rz, &rz_old);
+    const double beta = std::max(0.0, (rz - rz_old) / rho_);
+    rho_ = rz;
+    dq_ = kernels::Direction(z32_.data(), d_.data(), q_.data(), beta, nx_, rs.data(), rs.size(),
+                             nine);
   }
 
-  // z = one V-cycle on A z = r from z = 0.
-  void Precondition() {
-    std::fill(cg_z_.begin(), cg_z_.end(), 0.0);
-    Cycle(0, cg_z_.data(), cg_r_.data());
-  }
-
-  void Cycle(std::size_t l, double* u, const double* f) {
-    Level& level = levels_[l];
-    if (l + 1 == levels_.size()) {
-      // Coarsest level (small, or the last with unknowns: conservative coarsening can empty a
-      // level early): over-relaxed Gauss-Seidel with Young's optimal omega for its rectangle,
-      // about half its side in sweeps (error reduction ~ e^-pi per side length).
-      const int colours = kernels::Colours(options_.stencil);
-      const int sweeps = std::max(4, (level.nx + level.ny) / 2);
-      for (int s = 0; s < sweeps; ++s) {
-        for (int c = 0; c < colours; ++c) {
-          kernels::ColourPass(options_.stencil, level.nx, level.ny, u, f, coarsest_weight_.data(),
-                              c);
-        }
-      }
-      return;
-    }
-    Smooth(level, u, f, options_.pre_smoothing, false);
-    kernels::Residual(options_.stencil, level.nx, level.ny, u, f, level.free.data(),
-                      level.r.data());
-    Level& coarse = levels_[l + 1];
-    Restrict(level, coarse);
-    std::fill(coarse.u.begin(), coarse.u.end(), 0.0);
-    Cycle(l + 1, coarse.u.data(), coarse.f.data());
-    Prolongate(coarse, level, u);
-    Smooth(level, u, f, options_.post_smoothing, /*backwards=*/cg_);  // symmetric for CG
-  }
-
-  // Full weighting (1/4 centre, 1/8 edges, 1/16 corners) of the fine residual, times 4.
-  static void Restrict(const Level& fine, Level& coarse) {
-    const int fx = fine.nx;
-    const double* r = fine.r.data();
-    for (int y = 0; y < coarse.ny; ++y) {
-      for (int x = 0; x < coarse.nx; ++x) {
-        const std::size_t ci = static_cast<std::size_t>(y) * coarse.nx + x;
-        if (!coarse.free[ci]) {
-          coarse.f[ci] = 0.0;
-          continue;
-        }
-        const std::size_t i = static_cast<std::size_t>(2 * y) * fx + 2 * x;
-        const double centre = r[i];
-        const double edges = r[i - 1] + r[i + 1] + r[i - fx] + r[i + fx];
-        const double corners = r[i - fx - 1] + r[i - fx + 1] + r[i + fx - 1] + r[i + fx + 1];
-        coarse.f[ci] = 4.0 * (0.25 * centre + 0.125 * edges + 0.0625 * corners);
-      }
-    }
-  }
-
-  // Bilinear interpolation of the coarse correction, added to the fine unknowns.
-  static void Prolongate(const Level& coarse, const Level& fine, double* u) {
-    const int cx = coarse.nx;
-    const double* e = coarse.u.data();
-    for (int y = 1; y < fine.ny - 1; ++y) {
-      const int y0 = y / 2;
-      const int y1 = (y + 1) / 2;
-      for (int x = 1; x < fine.nx - 1; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * fine.nx + x;
-        if (!fine.free[i]) continue;
-        const int x0 = x / 2;
-        const int x1 = (x + 1) / 2;
-        const double v =
-            e[static_cast<std::size_t>(y0) * cx + x0] + e[static_cast<std::size_t>(y0) * cx + x1] +
-            e[static_cast<std::size_t>(y1) * cx + x0] + e[static_cast<std::size_t>(y1) * cx + x1];
-        u[i] += 0.25 * v;
-      }
-    }
+  bool LastResidual(double* absolute, double* relative) const override {
+    if (!cg_ || !cg_started_) return false;
+    *absolute = norms_.absolute;
+    *relative = norms_.relative;
+    return true;
   }
 
   SolverOptions options_;
   bool cg_ = false;
-  std::vector<Level> levels_;
-  std::vector<double> coarsest_weight_;
+  int nx_ = 0, ny_ = 0;
+  Hierarchy<double> double_;
+  Hierarchy<float> single_;
+  std::vector<double> r_, z_, d_, q_;
+  std::vector<float> r32_, z32_, z32_old_;
+  kernels::Norms norms_;
+  double dq_ = 0.0;
   bool cg_started_ = false;
-  double cg_rho_ = 0.0;
-  std::vector<double> cg_r_, cg_z_, cg_d_, cg_q_;
+  double rho_ = 0.0;
+  // The preconditioner's cycle: V(1,1), and V(1,1) on each level of the full-multigrid start
+  // (V(2,2) halves the iterations but costs as much in the end: measured in bench/).
+  static constexpr int fmg_pre_ = 1, fmg_post_ = 1, v_pre_ = 1, v_post_ = 1;
 };
 
 }  // namespace

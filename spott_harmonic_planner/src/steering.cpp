@@ -18,9 +18,9 @@ void Check(bool ok, const std::string& name, double value, const std::string& ra
 
 std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p) {
   std::vector<std::string> v;
-  Check(p.max_linear_mps > 0.0 && p.max_linear_mps <= 5.0, "max_linear", p.max_linear_mps,
+  Check(p.max_linear_mps > 0.0 && p.max_linear_mps <= 5.0, "max_linear_mps", p.max_linear_mps,
         "in (0, 5] m/s", v);
-  Check(p.max_angular_rps > 0.0 && p.max_angular_rps <= 10.0, "max_angular", p.max_angular_rps,
+  Check(p.max_angular_rps > 0.0 && p.max_angular_rps <= 10.0, "max_angular_rps", p.max_angular_rps,
         "in (0, 10] rad/s", v);
   for (const auto& [name, f] :
        {std::pair<const char*, double>{"slowly_fraction", p.slowly_fraction},
@@ -28,13 +28,13 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
         {"quickly_fraction", p.quickly_fraction}}) {
     Check(f > 0.0 && f <= 1.0, name, f, "in (0, 1]", v);
   }
-  Check(p.heading_gain > 0.0 && p.heading_gain <= 100.0, "heading_gain", p.heading_gain,
+  Check(p.heading_gain > 0.0 && p.heading_gain <= 100.0, "heading_gain_per_s", p.heading_gain,
         "in (0, 100] 1/s", v);
   Check(p.max_bias_deviation_rad >= 0.0 && p.max_bias_deviation_rad < M_PI / 2,
-        "max_bias_deviation", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
-  Check(p.slow_clearance_m > 0.0, "slow_clearance", p.slow_clearance_m, "> 0 m", v);
-  Check(p.goal_slowdown_m > 0.0, "goal_slowdown", p.goal_slowdown_m, "> 0 m", v);
-  Check(p.escape_radius_m >= 0.0 && p.escape_radius_m <= 2.0, "escape_radius", p.escape_radius_m,
+        "max_bias_deviation_rad", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
+  Check(p.slow_clearance_m > 0.0, "slow_clearance_m", p.slow_clearance_m, "> 0 m", v);
+  Check(p.goal_slowdown_m > 0.0, "goal_slowdown_m", p.goal_slowdown_m, "> 0 m", v);
+  Check(p.escape_radius_m >= 0.0 && p.escape_radius_m <= 2.0, "escape_radius_m", p.escape_radius_m,
         "in [0, 2] m", v);
   return v;
 }
@@ -98,6 +98,7 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
       // Out of the padding towards the goal, slowly.
       const Vec2 d = (*escape - at).normalized();
       cmd.valid = true;
+      cmd.escaping = true;
       cmd.reason = "escaping the padding of an obstacle";
       cmd.descent = d;
       cmd.heading = std::atan2(d.y(), d.x());

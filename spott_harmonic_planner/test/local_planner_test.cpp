@@ -85,6 +85,23 @@ TEST(Steering, ARobotEstimatedInsideThePaddingHeadsForTheNearestFreeCell) {
           .valid);
 }
 
+// A goal on the inner edge of the window (HILARE's corridor_north at y = 7.0 with the window
+// ending at 7.1) lies in a border cell: it is aimed at from the inner cell beside it, not
+// refused as "in a padded obstacle".
+TEST(LocalPlanner, AGoalInTheBorderRingOfTheWindowIsAimedAtNotRefused) {
+  PlannerParameters p;
+  p.window.window_size_m = 7.0;
+  p.window.resolution_m = 0.1;
+  LocalPlanner planner(p);
+  planner.SetMap(spott_map::MapDatabase{});
+  planner.CorrectPose(Pose2{0.0, 0.0, 0.0});
+  planner.SetGoal(Vec2(0.0, 3.4));  // the window spans [-3.5, 3.5]: the inner part ends at 3.4
+  const PlannerStatus s = planner.Cycle();
+  EXPECT_TRUE(s.has_goal) << s.problem;
+  EXPECT_FALSE(s.goal_on_border);
+  EXPECT_TRUE(planner.Steer(SpeedMode::kNormal, std::nullopt).valid);
+}
+
 TEST(LocalPlanner, SteersStraightAtGoalInOpenSpaceWithSpeedByMode) {
   LocalPlanner planner(SmallWindow());
   planner.CorrectPose({0.0, 0.0, 0.0});
@@ -208,12 +225,12 @@ TEST(LocalPlanner, BlockedBorderGoalWidensToTheNearestFreeBorderCells) {
 
 TEST(LocalPlanner, ProjectionFollowsLineFromRobotToGoal) {
   const spott_map::Box w{Vec2(-3.5, -3.5), Vec2(3.5, 3.5)};
-  const auto s = ProjectGoalOntoWindow(Vec2(0, 0), Vec2(10, 5), w, 0.5);
+  const auto s = BorderGoalSegment(Vec2(0, 0), Vec2(10, 5), w, 0.5);
   ASSERT_TRUE(s.has_value());
   EXPECT_NEAR(s->a.x(), 3.5, 1e-12);
   EXPECT_NEAR(s->a.y(), 1.25, 1e-12);  // the line meets x = 3.5 at y = 1.75
   EXPECT_NEAR(s->b.y(), 2.25, 1e-12);
-  EXPECT_FALSE(ProjectGoalOntoWindow(Vec2(0, 0), Vec2(1, 1), w, 0.5).has_value());
+  EXPECT_FALSE(BorderGoalSegment(Vec2(0, 0), Vec2(1, 1), w, 0.5).has_value());
 }
 
 TEST(LocalPlanner, GoalInsideObstacleIsReportedNotPlanned) {

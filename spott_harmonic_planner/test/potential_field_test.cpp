@@ -288,5 +288,47 @@ TEST(PotentialField, BadOptionsAreRefusedByName) {
   EXPECT_THROW(PotentialField{o}, std::invalid_argument);
 }
 
+// The re-centred window (moved by whole cells): the values move with it, so the field answers at
+// once with the last window's directions, and the solve from them ends at the cold solve's field.
+TEST(PotentialField, WindowShiftMovesTheValuesAndConvergesToTheColdField) {
+  const auto world = RandomOffice(80, 6, 1, 1, 9);
+  // Two 64 x 64 windows of the same world, the second 3 cells east and 2 north of the first.
+  const auto window = [&world](int ox, int oy) {
+    spott_map::OccupancyRaster r(Vec2(ox, oy), 64, 64, 1.0);
+    for (int y = 0; y < 64; ++y) {
+      for (int x = 0; x < 64; ++x) {
+        if (world.Blocked(x + ox, y + oy)) r.Mark(x, y, spott_map::Cell::kObstacle);
+      }
+    }
+    return r;
+  };
+  FieldOptions o;
+  o.tolerance = 1e-9;
+  PotentialField warm(o);
+  warm.SetOccupancy(window(5, 5));
+  Vec2 goal(40.5, 40.5);
+  for (int k = 0; k < 20 && !warm.SetGoalPoint(goal); ++k) goal += Vec2(1.0, 0.0);
+  ASSERT_TRUE(warm.HasGoal());
+  warm.ColdStart();
+  ASSERT_TRUE(warm.Solve(1000).converged);
+  const double before = warm.GoalProbability(30, 30);  // map cell (35, 35)
+  warm.SetOccupancy(window(8, 7));
+  EXPECT_TRUE(warm.HasGoal());                      // the goal point moved with the window
+  EXPECT_EQ(warm.GoalProbability(27, 28), before);  // the same map cell
+  const int sweeps_before = warm.report().sweeps;
+  ASSERT_TRUE(warm.Solve(1000).converged);
+  PotentialField cold(o);
+  cold.SetOccupancy(window(8, 7));
+  ASSERT_TRUE(cold.SetGoalPoint(goal));
+  cold.ColdStart();
+  ASSERT_TRUE(cold.Solve(1000).converged);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < cold.values().size(); ++i) {
+    worst = std::max(worst, std::abs(cold.values()[i] - warm.values()[i]));
+  }
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(warm.report().sweeps, sweeps_before);  // iterated on from the moved values
+}
+
 }  // namespace
 }  // namespace spott_harmonic_planner

@@ -36,19 +36,22 @@ struct PlannerParameters {
 /// Every violation, named as the parameter is named in config/harmonic_planner.yaml.
 std::vector<std::string> ValidateParameters(const PlannerParameters& p);
 
-/// The window border where the segment from `robot` (inside `window`) to `goal` (outside) leaves
-/// it, widened to +-`half_width_m` along that side (clipped to it). nullopt when `goal` is
-/// inside the window or `robot` is not.
-std::optional<spott_map::Segment> ProjectGoalOntoWindow(const Vec2& robot, const Vec2& goal,
-                                                        const spott_map::Box& window,
-                                                        double half_width_m);
+/// The border goal (a straight-line fallback when no global projection is given, unlike the
+/// global planner's ProjectGoalOntoWindow, which follows the room/door path): the window border
+/// where the segment from `robot` (inside `window`) to `goal` (outside) leaves it, widened to
+/// +-`half_width_m` along that side (clipped to it). nullopt when `goal` is inside the window or
+/// `robot` is not.
+std::optional<spott_map::Segment> BorderGoalSegment(const Vec2& robot, const Vec2& goal,
+                                                    const spott_map::Box& window,
+                                                    double half_width_m);
 
 struct PlannerStatus {
   IterationReport iteration;
   bool has_goal = false;
   bool goal_on_border = false;
-  bool recentred = false;  ///< This cycle moved the window (step f).
-  std::string problem;     ///< Non-empty when the goal cannot be placed (blocked, ...).
+  bool recentred = false;       ///< This cycle moved the window (step f).
+  bool border_widened = false;  ///< The border goal's own cells were blocked: it was widened.
+  std::string problem;          ///< Non-empty when the goal cannot be placed (blocked, ...).
 };
 
 class LocalPlanner {
@@ -101,6 +104,7 @@ class LocalPlanner {
   bool window_cut_ = false;
   bool map_dirty_ = false;
   bool goal_dirty_ = false;
+  bool goal_moved_ = true;  // the goal changed in the map since the field was last started
   std::optional<Vec2> goal_;
   std::optional<spott_map::Segment> border_goal_;
   spott_map::Pose2 pose_;

@@ -17,6 +17,8 @@
 // spott_map::OccupancyRaster.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -31,15 +33,21 @@ namespace spott_harmonic_planner {
 
 using spott_map::Vec2;
 
+namespace internal {
+class ThinRegionSolver;
+}
+
 enum class ResidualNorm {
-  kAbsolute,  ///< max |r_i|: the usual test; fast, but far dead ends stay unresolved.
+  /// max |r_i|: refused by ValidateFieldOptions with every solver (it reports converged while
+  /// far cells still hold p <= 0); kept so that a configuration naming it is refused by name.
+  kAbsolute,
   kRelative,  ///< max |r_i| / p_i: every cell resolved to its own magnitude (long corridors).
 };
 
 struct FieldOptions {
   SolverOptions solver;
   double tolerance = 1e-6;  ///< Convergence: residual norm below this, in (0, 1).
-  ResidualNorm norm = ResidualNorm::kAbsolute;
+  ResidualNorm norm = ResidualNorm::kRelative;  ///< The node's default too.
   /// Decay per cell of the heuristic initial guess exp(-k d), d = wavefront distance (cells);
   /// > 0. pi / 15: the decay of a harmonic function in a corridor 15 cells wide.
   double heuristic_decay_per_cell = 0.2;
@@ -65,10 +73,15 @@ class PotentialField {
  public:
   /// Throws std::invalid_argument on invalid options.
   explicit PotentialField(const FieldOptions& options);
+  ~PotentialField();
+  PotentialField(PotentialField&&) noexcept;
+  PotentialField& operator=(PotentialField&&) noexcept;
 
   /// Loads the window: blocked cells of `raster` (obstacle or padding) and its border ring become
   /// obstacles. Keeps the current values where the window geometry is unchanged (warm start
-  /// after a map update); otherwise the field is cold. The goal is kept when it is still valid.
+  /// after a map update) and moves them with a window shifted by whole cells (less than half the
+  /// window, point goal: the re-centred window); otherwise the field is cold. The goal is kept
+  /// when it is still valid (a border goal is dropped by a shift).
   void SetOccupancy(const spott_map::OccupancyRaster& raster);
 
   /// Goal at the cell holding `p`. False (goal unchanged) when `p` is outside the window or in
@@ -80,12 +93,16 @@ class PotentialField {
   bool HasGoal() const { return goal_count_ > 0; }
   bool goal_on_border() const { return goal_on_border_; }
 
-  /// Anytime initial guess (III.D.1): p = exp(-k d) with d the 8-connected wavefront distance
-  /// (chamfer 5/7, in cells) from the goal through free cells; 0 where the goal cannot be
-  /// reached (which is exact).
+  /// Anytime initial guess (III.D.1). The multigrid solvers: full multigrid (about one V-cycle
+  /// of work), and with multigrid_cg a thin free region (a corridor) is solved exactly here. SOR
+  /// and ADI: p = exp(-k d) with d the 8-connected wavefront distance (chamfer 5/7, in cells)
+  /// from the goal through free cells; 0 where the goal cannot be reached (which is exact).
   /// Resets the sweep count.
   void ColdStart();
-  /// `sweeps` more iterations (warm). Returns the state after them.
+  /// `sweeps` more iterations (warm). Returns the state after them. With the relative norm,
+  /// once the solver stalls at round-off the cells below the resolved scale are solved in
+  /// stages of their own (multigrid solvers) or by line Gauss-Seidel (SOR, ADI); each counts.
+  /// `converged` is reported only after the true residual met the tolerance.
   IterationReport Iterate(int sweeps);
   /// Iterates until converged or `max_sweeps` more iterations were spent.
   IterationReport Solve(int max_sweeps);
@@ -102,6 +119,12 @@ class PotentialField {
   double GoalProbability(int ix, int iy) const { return p_[Index(ix, iy)]; }
   /// u = 1 - p: the paper's potential (obstacles 1, goal 0), rounded as double stores it.
   double Potential(int ix, int iy) const { return 1.0 - p_[Index(ix, iy)]; }
+  /// ln p, also where p is below double's range (values() and GoalProbability() hold 0 there:
+  /// corridors beyond about 280 widths, solved exactly with a binary exponent per level);
+  /// -infinity where p = 0.
+  double LogGoalProbability(int ix, int iy) const;
+  /// True when some cell's p lies below double's range (see LogGoalProbability).
+  bool extended_range() const { return extended_; }
   const std::vector<double>& values() const { return p_; }
   const std::vector<FieldCell>& cells() const { return kind_; }
   std::optional<std::pair<int, int>> CellOf(const Vec2& p) const;
@@ -144,8 +167,41 @@ class PotentialField {
     return static_cast<std::size_t>(iy) * static_cast<std::size_t>(width_) +
            static_cast<std::size_t>(ix);
   }
-  void RebuildMask();
+  void RebuildMask(bool kinds_fresh);
+  bool ShiftWarm(const Vec2& old_origin);
   void ComputeClearance() const;
+  void EnsureSetup();
+  struct Norms {
+    double absolute = 0.0;
+    double relative = 0.0;
+  };
+  Norms ResidualNorms() const;
+  bool ClampNegatives();
+  bool DirectSolve();
+  // Extended range: p_i = ScaledGoalProbability(i, ref) * 2^ref.
+  // The binary exponent of a cell's value; obstacles (p = 0) have none (kNoExponent), so that
+  // they never set the scale of a neighbourhood.
+  static constexpr int kNoExponent = -(1 << 29);
+  int Exponent(std::size_t i) const {
+    if (!extended_) return 0;
+    if (kind_[i] == FieldCell::kFree) return ext_e_[i];
+    return p_[i] > 0.0 ? 0 : kNoExponent;
+  }
+  int ScaleOf(int a, int b, int c, int d) const {
+    const int e = std::max(std::max(a, b), std::max(c, d));
+    return e == kNoExponent ? 0 : e;
+  }
+  double Scaled(std::size_t i, int ref) const {
+    if (!extended_) return ref == 0 ? p_[i] : std::ldexp(p_[i], -ref);
+    return kind_[i] == FieldCell::kFree ? std::ldexp(ext_m_[i], ext_e_[i] - ref)
+                                        : std::ldexp(p_[i], -ref);
+  }
+  // Bilinear interpolation of p at `p`, as value * 2^ref (ref: the largest exponent of the four
+  // cells).
+  double InterpolatedScaled(const Vec2& p, int* ref) const;
+  bool SegmentClear(const Vec2& a, const Vec2& b) const;
+  bool StartTail(double resolved_absolute, double scale);
+  Norms IterateTail();
 
   FieldOptions options_;
   std::unique_ptr<IterativeSolver> solver_;
@@ -164,6 +220,29 @@ class PotentialField {
   bool solver_ready_ = false;
   std::unique_ptr<IterativeSolver> polish_;  // relative norm: line Gauss-Seidel at the end
   bool polish_ready_ = false;
+  bool polishing_ = false;
+  double last_relative_ = 0.0;  // the relative residual after the previous iteration
+  struct FreeRun {
+    int y, x0, x1;
+  };
+  std::vector<FreeRun> free_runs_;  // runs of kFree cells per row
+  std::vector<FreeRun> previous_runs_, fill_stack_;
+  std::vector<std::size_t> previous_goals_;
+  std::vector<double> shift_scratch_;
+  // Tail stages (multigrid solvers): the cells below the resolved scale, solved scaled by it.
+  std::unique_ptr<IterativeSolver> tail_solver_;
+  GridMask tail_mask_;
+  std::vector<FreeRun> tail_runs_, previous_tail_runs_;
+  std::vector<double> tail_u_;
+  double tail_scale_ = 1.0;
+  double tail_last_relative_ = 0.0;
+  bool tail_active_ = false;
+  std::unique_ptr<internal::ThinRegionSolver> thin_;  // exact solver of thin regions
+  bool direct_ = false;                               // the current mask is solved by thin_
+  bool direct_solved_ = false;
+  bool extended_ = false;  // p below double's range somewhere: ext_m_ * 2^ext_e_
+  std::vector<double> ext_m_;
+  std::vector<std::int32_t> ext_e_;
   int goal_count_ = 0;
   bool goal_on_border_ = false;
   std::vector<std::size_t> goal_cells_;

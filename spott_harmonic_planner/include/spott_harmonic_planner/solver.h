@@ -8,11 +8,11 @@
 //
 // Solvers: Gauss-Seidel with successive over-relaxation in red-black order (four colours for the
 // 9-point stencil, whose diagonal neighbours would share a colour otherwise); alternating-
-// direction line relaxation (x lines then y lines, each line solved exactly); and geometric
-// multigrid (V-cycles with the same colour Gauss-Seidel as smoother); and conjugate gradients
-// preconditioned by one such V-cycle (symmetric: the post-smoother runs the colours backwards),
-// which stays fast where obstacles leave the coarse grids poor. All are iterations on the same
-// equations and converge to the same discrete solution.
+// direction line relaxation (x lines then y lines, each line solved exactly); Galerkin
+// multigrid over the unknowns (V-cycles with colour Gauss-Seidel smoothers; src/hierarchy.h);
+// and conjugate gradients preconditioned by one such V-cycle in single precision, started by
+// full multigrid (multigrid_cg, the default). All are iterations on the same equations and
+// converge to the same discrete solution.
 //
 // Not thread-safe: one solver per thread. Grids are row-major, index = y * width + x.
 #pragma once
@@ -35,7 +35,7 @@ std::optional<Stencil> ParseStencil(const std::string& text);  ///< five_point |
 std::optional<SolverKind> ParseSolverKind(const std::string& text);
 
 struct SolverOptions {
-  SolverKind kind = SolverKind::kMultigrid;
+  SolverKind kind = SolverKind::kMultigridCg;  ///< The node's default too.
   Stencil stencil = Stencil::kFivePoint;
   /// Over-relaxation factor of SOR and of the ADI line relaxation, in (0, 2); 0 = the optimal
   /// value for the grid's rectangle (Young's formula with the Jacobi spectral radius).
@@ -77,6 +77,20 @@ class IterativeSolver {
   /// `u` was changed from outside (a cold start, values clamped): solvers that keep state
   /// between iterations (conjugate gradients) start over from it.
   virtual void Restart() {}
+  /// Sets the unknowns of `u` to a solver's own initial guess from the fixed values alone (the
+  /// multigrid solvers: full multigrid). False (u unchanged) when the solver has none. After
+  /// Setup().
+  virtual bool InitialGuess(double* u) {
+    (void)u;
+    return false;
+  }
+  /// Max-norms (absolute, and relative to each cell's value) of the residual after the last
+  /// Iterate(), when the solver tracks them on the way (conjugate gradients); false otherwise.
+  virtual bool LastResidual(double* absolute, double* relative) const {
+    (void)absolute;
+    (void)relative;
+    return false;
+  }
 };
 
 /// Throws std::invalid_argument when `options` are invalid.

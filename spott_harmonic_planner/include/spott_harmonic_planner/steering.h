@@ -39,6 +39,7 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
 struct SteeringCommand {
   bool valid = false;      ///< False where the field gives no direction (see `reason`).
   std::string reason;      ///< Why not valid; when valid, a note ("escaping the padding ...").
+  bool escaping = false;   ///< Valid, but heading out of the padding (not descending).
   Vec2 descent{0.0, 0.0};  ///< Unit steepest-descent direction of u (map frame).
   double heading = 0.0;    ///< Commanded direction (rad, map frame), after the bias.
   double linear = 0.0;     ///< (m/s) >= 0.

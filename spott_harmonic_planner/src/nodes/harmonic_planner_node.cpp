@@ -1,30 +1,40 @@
-// harmonic_planner: SPOTT's local dynamic path planner (III.D.1) as a ROS node. Glue only: reads
-// and validates parameters, feeds the core LocalPlanner from topics and tf, runs its cycle on a
-// timer, serves the Navigate action and publishes command, status and visualization.
+// harmonic_planner: SPOTT's local dynamic path planner (III.D.1) as a ROS node, and the stack's
+// Navigate server: the one way every client sends the robot to a pose. Glue only: reads and
+// validates parameters, feeds the core LocalPlanner from topics and tf, runs its cycle on a
+// timer, and drives a NavigateSession (navigate_session.h) for the running goal.
 //
 // Subscribes: map_features (spott_msgs/MapFeatureArray), room_door_graph
-// (spott_msgs/RoomDoorGraph), projected_goal (spott_msgs/ProjectedGoal), odom
-// (nav_msgs/Odometry). tf: map -> base_link. Action: ~navigate (spott_msgs/Navigate).
-// Publishes: ~cmd_vel (geometry_msgs/Twist, for the arbiter), ~status
-// (spott_msgs/PotentialFieldStatus), ~steering (spott_msgs/SteeringStatus), ~potential
-// (nav_msgs/OccupancyGrid, latched), ~contours (visualization_msgs/Marker), ~path (nav_msgs/Path).
+// (spott_msgs/RoomDoorGraph), projected_goal (spott_msgs/ProjectedGoal), global_plan_status
+// (spott_msgs/GlobalPlanStatus), odom (nav_msgs/Odometry), bumper (spott_msgs/BumperRing).
+// tf: map -> base_link. Action: ~navigate (spott_msgs/Navigate).
+// Publishes: global_goal (spott_msgs/GlobalGoal, latched: the target handed to the global
+// planner), ~cmd_vel (geometry_msgs/Twist, the arbiter's planner input), local_window
+// (latched), ~status, ~steering, ~potential (latched), ~contours, ~path.
 #include <actionlib/server/simple_action_server.h>
 #include <geometry_msgs/PolygonStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <spott_msgs/BumperRing.h>
+#include <spott_msgs/GlobalGoal.h>
+#include <spott_msgs/GlobalPlanStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/NavigateAction.h>
 #include <spott_msgs/ProjectedGoal.h>
 #include <spott_msgs/RoomDoorGraph.h>
-#include <tf2/utils.h>
 #include <tf2_ros/transform_listener.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
 
+#include "spott_harmonic_planner/contact_memory.h"
+#include "spott_harmonic_planner/navigate_session.h"
 #include "spott_harmonic_planner/ros/conversions.h"
 #include "spott_harmonic_planner/ros/parameters.h"
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/pose_conversions.h"
+#include "spott_ros/robot_geometry.h"
 
 namespace spott_harmonic_planner {
 
@@ -34,8 +44,13 @@ namespace mconv = spott_map::ros_conversions;
 class HarmonicPlannerNode {
  public:
   HarmonicPlannerNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
-      : params_(p), planner_(p.planner), server_(pnh, "navigate", false), listener_(tf_) {
+      : params_(p),
+        planner_(p.planner),
+        contacts_(p.contact_memory_s, p.contact_size_m),
+        server_(pnh, "navigate", false),
+        listener_(tf_) {
     cmd_pub_ = pnh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+    goal_pub_ = nh.advertise<spott_msgs::GlobalGoal>("global_goal", 1, true);
     status_pub_ = pnh.advertise<spott_msgs::PotentialFieldStatus>("status", 1);
     window_pub_ = nh.advertise<geometry_msgs::PolygonStamped>("local_window", 1, true);
     steering_pub_ = pnh.advertise<spott_msgs::SteeringStatus>("steering", 1);
@@ -44,8 +59,11 @@ class HarmonicPlannerNode {
     path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1);
     features_sub_ = nh.subscribe("map_features", 1, &HarmonicPlannerNode::OnFeatures, this);
     graph_sub_ = nh.subscribe("room_door_graph", 1, &HarmonicPlannerNode::OnGraph, this);
-    projected_sub_ = nh.subscribe("projected_goal", 1, &HarmonicPlannerNode::OnProjected, this);
+    projected_sub_ = nh.subscribe("projected_goal", 5, &HarmonicPlannerNode::OnProjected, this);
+    plan_status_sub_ =
+        nh.subscribe("global_plan_status", 5, &HarmonicPlannerNode::OnPlanStatus, this);
     odom_sub_ = nh.subscribe("odom", 10, &HarmonicPlannerNode::OnOdom, this);
+    bumper_sub_ = nh.subscribe("bumper", 10, &HarmonicPlannerNode::OnBumper, this);
     server_.registerGoalCallback([this] { OnGoal(); });
     server_.registerPreemptCallback([this] { OnPreempt(); });
     server_.start();
@@ -54,7 +72,17 @@ class HarmonicPlannerNode {
   }
 
  private:
+  // --- the map -------------------------------------------------------------------------------
+
   void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
+    if (msg.features.empty() && !db_.features().empty()) {
+      // An empty array would remove every wall: a publisher clears features through MapUpdate.
+      ROS_WARN_THROTTLE(10.0,
+                        "harmonic_planner: map_features: ignored an empty feature array (it would "
+                        "remove all %zu obstacles, walls included)",
+                        db_.features().size());
+      return;
+    }
     spott_map::MapDatabase db;
     db.SetGraph(db_.graph());
     for (const auto& f : msg.features) {
@@ -68,7 +96,7 @@ class HarmonicPlannerNode {
       db.AddFeature(*feature);
     }
     db_ = db;
-    planner_.SetMap(db_);
+    ApplyMap();
   }
 
   void OnGraph(const spott_msgs::RoomDoorGraph& msg) {
@@ -78,72 +106,202 @@ class HarmonicPlannerNode {
       ROS_WARN("harmonic_planner: room_door_graph ignored: %s", error.c_str());
       return;
     }
-    db_.SetGraph(*graph);
-    planner_.SetMap(db_);
-  }
-
-  void OnProjected(const spott_msgs::ProjectedGoal& msg) {
-    if (!server_.isActive()) return;
-    if (!msg.on_border) {  // the way to the target lies inside the window
-      planner_.ClearBorderGoal();
+    if (graph->rooms().empty() && !db_.graph().rooms().empty()) {
+      ROS_WARN_THROTTLE(10.0, "harmonic_planner: room_door_graph: ignored an empty graph");
       return;
     }
-    planner_.SetBorderGoal(
-        {Vec2(msg.border_start.x, msg.border_start.y), Vec2(msg.border_end.x, msg.border_end.y)});
+    db_.SetGraph(*graph);
+    ApplyMap();
   }
 
-  void OnOdom(const nav_msgs::Odometry& msg) {
-    planner_.Odometry({msg.pose.pose.position.x, msg.pose.pose.position.y,
-                       tf2::getYaw(msg.pose.pose.orientation)});
+  // The served map plus the bumper contacts remembered as obstacles.
+  void ApplyMap() {
+    if (contacts_.size() == 0) {
+      planner_.SetMap(db_);
+      return;
+    }
+    spott_map::MapDatabase db = db_;
+    for (const auto& f : contacts_.Features()) db.AddFeature(f);
+    planner_.SetMap(db);
   }
+
+  // --- the global planner's answers ----------------------------------------------------------
+
+  void OnProjected(const spott_msgs::ProjectedGoal& msg) {
+    if (!session_ || msg.goal_id != goal_id_) return;  // another goal's answer
+    if (msg.on_border) {
+      planner_.SetBorderGoal(
+          {Vec2(msg.border_start.x, msg.border_start.y), Vec2(msg.border_end.x, msg.border_end.y)});
+    } else {
+      planner_.ClearBorderGoal();  // the way to the target lies inside the window
+    }
+    session_->ProjectionArrived();
+  }
+
+  void OnPlanStatus(const spott_msgs::GlobalPlanStatus& msg) {
+    if (!session_ || msg.goal_id != goal_id_) return;
+    GlobalAnswer a;
+    a.message = msg.message;
+    a.path_summary = msg.path_summary;
+    switch (msg.state) {
+      case spott_msgs::GlobalPlanStatus::PLANNED:
+        a.state = GlobalAnswer::State::kPlanned;
+        break;
+      case spott_msgs::GlobalPlanStatus::FAILED:
+        a.state = GlobalAnswer::State::kFailed;
+        break;
+      case spott_msgs::GlobalPlanStatus::REFUSED:
+        a.state = GlobalAnswer::State::kRefused;
+        break;
+      default:
+        return;
+    }
+    session_->Answer(a);
+    if (session_->finished()) Finish();
+  }
+
+  // --- sensors -------------------------------------------------------------------------------
+
+  void OnOdom(const nav_msgs::Odometry& msg) {
+    const auto pose = spott_ros::ToPose2D(msg.pose.pose);
+    if (!pose) {
+      ROS_WARN_THROTTLE(5.0, "harmonic_planner: odom: a pose that is not finite was ignored");
+      return;
+    }
+    odom_ = spott_map::Pose2{pose->x, pose->y, pose->theta};
+    planner_.Odometry(odom_);
+  }
+
+  // A contact while driving: remembered as an obstacle, and the robot backs off (the arbiter
+  // has already stopped the motion towards it) unless ~navigate/bumper_backoff is false (the TR+
+  // controller's reflex does it).
+  void OnBumper(const spott_msgs::BumperRing& ring) {
+    if (!session_ || session_->phase() == NavigatePhase::kPlanning ||
+        ring.pressed.size() != ring.segment_angles.size()) {
+      return;
+    }
+    bool any = false;
+    double angle = 0.0;
+    const double now = ros::Time::now().toSec();
+    for (std::size_t i = 0; i < ring.pressed.size(); ++i) {
+      if (!ring.pressed[i] || !std::isfinite(ring.segment_angles[i])) continue;
+      contacts_.Add(planner_.pose(), planner_.parameters().window.robot_radius_m,
+                    ring.segment_angles[i], now);
+      angle = ring.segment_angles[i];
+      any = true;
+    }
+    if (!any) return;
+    if (!params_.bumper_backoff) {  // the TR+ controller's reflex moves the robot away
+      ApplyMap();
+      return;
+    }
+    if (!session_->backing_off()) {
+      ROS_WARN(
+          "harmonic_planner: bumper contact at %.0f deg: backing off, remembered as an "
+          "obstacle",
+          angle * 180.0 / M_PI);
+    }
+    session_->Contact(angle, odom_);
+    ApplyMap();
+  }
+
+  // --- the Navigate action -------------------------------------------------------------------
 
   void OnGoal() {
     const auto goal = server_.acceptNewGoal();
-    const auto& t = goal->target;
-    if (!std::isfinite(t.pose.position.x) || !std::isfinite(t.pose.position.y) ||
-        goal->speed_mode > spott_msgs::NavigateGoal::QUICKLY) {
+    std::string error;
+    const auto request = conv::FromGoal(*goal, params_.frame_id, params_.planner.goal_tolerance_m,
+                                        params_.heading_tolerance_rad, &error);
+    if (!request) {
       spott_msgs::NavigateResult r;
       r.outcome = spott_msgs::NavigateResult::FAILED;
-      r.reason = "bad Navigate goal: target must be finite and speed_mode 0..2";
+      r.reason = "bad Navigate goal: " + error;
+      ROS_WARN("harmonic_planner: %s", r.reason.c_str());
       server_.setAborted(r, r.reason);
       return;
     }
-    if (!t.header.frame_id.empty() && t.header.frame_id != params_.frame_id) {
-      spott_msgs::NavigateResult r;
-      r.outcome = spott_msgs::NavigateResult::FAILED;
-      r.reason = "target frame '" + t.header.frame_id + "' is not '" + params_.frame_id + "'";
-      server_.setAborted(r, r.reason);
-      return;
-    }
-    mode_ = static_cast<SpeedMode>(goal->speed_mode);
-    bias_ = std::isfinite(goal->direction_bias) ? std::optional<double>(goal->direction_bias)
-                                                : std::nullopt;
-    tolerance_ = goal->position_tolerance > 0.0 ? goal->position_tolerance
-                                                : params_.planner.goal_tolerance_m;
-    target_ = Vec2(t.pose.position.x, t.pose.position.y);
-    target_yaw_.reset();
-    if (!goal->ignore_heading) target_yaw_ = tf2::getYaw(t.pose.orientation);
-    heading_tolerance_ =
-        goal->heading_tolerance > 0.0 ? goal->heading_tolerance : params_.heading_tolerance_rad;
-    planner_.SetGoal(*target_);
-    start_ = planner_.pose();
-    solve_time_ = 0.0;
-    bad_cycles_ = 0;
-    ROS_INFO("harmonic_planner: navigate to (%.2f, %.2f)", target_->x(), target_->y());
+    request_ = *request;
+    session_ = std::make_unique<NavigateSession>(params_.navigate, ros::Time::now().toSec());
+    if (have_pose_) session_->PoseAvailable();
+    goal_id_ = ros::this_node::getName() + "/" + std::to_string(++goal_count_);
+    planner_.ClearBorderGoal();
+    planner_.SetGoal(request_.target);
+    turning_ = false;
+    travelled_ = 0.0;
+    last_position_ = planner_.pose().Position();
+    spott_msgs::GlobalGoal g;
+    g.header.frame_id = params_.frame_id;
+    g.header.stamp = ros::Time::now();
+    g.goal_id = goal_id_;
+    g.target.x = request_.target.x();
+    g.target.y = request_.target.y();
+    goal_pub_.publish(g);  // the global planner answers with this id
+    ROS_INFO("harmonic_planner: navigate to (%.2f, %.2f) [%s]", request_.target.x(),
+             request_.target.y(), goal_id_.c_str());
   }
 
   void OnPreempt() {
+    if (!session_) return;
+    session_->Preempt();
+    Finish();
+  }
+
+  // Sends the result of the finished session and hands the goal back.
+  void Finish() {
     Stop();
+    if (!server_.isActive()) {
+      session_.reset();
+      return;
+    }
     spott_msgs::NavigateResult r;
-    r.outcome = spott_msgs::NavigateResult::PREEMPTED;
-    r.reason = "preempted";
-    server_.setPreempted(r, r.reason);
+    r.final_pose = CurrentPose();
+    r.distance_travelled = travelled_;
+    r.reason = session_->reason();
+    switch (session_->outcome()) {
+      case NavigateOutcome::kSucceeded:
+        r.outcome = spott_msgs::NavigateResult::SUCCEEDED;
+        server_.setSucceeded(r, r.reason);
+        break;
+      case NavigateOutcome::kPreempted:
+        r.outcome = spott_msgs::NavigateResult::PREEMPTED;
+        server_.setPreempted(r, r.reason);
+        break;
+      case NavigateOutcome::kUnreachable:
+        r.outcome = spott_msgs::NavigateResult::UNREACHABLE;
+        server_.setAborted(r, r.reason);
+        break;
+      case NavigateOutcome::kFailed:
+        r.outcome = spott_msgs::NavigateResult::FAILED;
+        server_.setAborted(r, r.reason);
+        break;
+    }
+    if (r.outcome != spott_msgs::NavigateResult::SUCCEEDED) {
+      ROS_WARN("harmonic_planner: goal %s ended: %s", goal_id_.c_str(), r.reason.c_str());
+    }
+    session_.reset();
+    spott_msgs::GlobalGoal none;  // the global planner drops its goal
+    none.header.frame_id = params_.frame_id;
+    none.header.stamp = ros::Time::now();
+    goal_pub_.publish(none);
+    goal_id_.clear();
   }
 
   void Stop() {
     planner_.ClearGoal();
-    target_.reset();
     cmd_pub_.publish(geometry_msgs::Twist());
+  }
+
+  geometry_msgs::PoseStamped CurrentPose() const {
+    const auto& p = planner_.pose();
+    return spott_ros::ToPoseStamped(spott_ros::MakePose2D(p.x, p.y, p.yaw), params_.frame_id,
+                                    ros::Time::now());
+  }
+
+  void Drive(double linear, double angular) {
+    geometry_msgs::Twist twist;
+    twist.linear.x = linear;
+    twist.angular.z = angular;
+    cmd_pub_.publish(twist);
   }
 
   // The window b_pf, so that the global planner projects onto this very window (SPOTT III.D.2).
@@ -165,11 +323,29 @@ class HarmonicPlannerNode {
     const ros::Time now = ros::Time::now();
     try {  // (b) the localization estimate, map -> base_link
       const auto tf = tf_.lookupTransform(params_.frame_id, params_.base_frame, ros::Time(0));
-      planner_.CorrectPose({tf.transform.translation.x, tf.transform.translation.y,
-                            tf2::getYaw(tf.transform.rotation)});
+      if (const auto p = spott_ros::ToPose2D(tf.transform)) {
+        planner_.CorrectPose({p->x, p->y, p->theta});
+        if (!have_pose_) ROS_INFO("harmonic_planner: the robot has a pose");
+        have_pose_ = true;
+        if (session_) session_->PoseAvailable();
+      }
     } catch (const tf2::TransformException& e) {
-      ROS_WARN_THROTTLE(5.0, "harmonic_planner: no pose (%s); dead-reckoning", e.what());
+      ROS_WARN_THROTTLE(5.0, "harmonic_planner: no pose (%s)%s", e.what(),
+                        have_pose_ ? "; dead-reckoning" : "");
     }
+    if (!have_pose_) {  // no window before the robot is somewhere; a goal waits in PLANNING
+      if (session_ && server_.isActive()) {
+        session_->Update(now.toSec());
+        if (session_->finished()) return Finish();
+        spott_msgs::NavigateFeedback fb;
+        fb.state = fb.PLANNING;
+        fb.distance_remaining = std::numeric_limits<double>::quiet_NaN();
+        fb.note = session_->note();
+        server_.publishFeedback(fb);
+      }
+      return;
+    }
+    if (contacts_.Expire(now.toSec())) ApplyMap();
     const ros::WallTime t0 = ros::WallTime::now();
     planner_.Cycle();
     solve_time_ += (ros::WallTime::now() - t0).toSec();
@@ -180,72 +356,85 @@ class HarmonicPlannerNode {
       contours_pub_.publish(conv::ToContours(planner_.field(), params_.frame_id, now));
       path_pub_.publish(conv::ToPath(planner_.PredictedPath(), params_.frame_id, now));
     }
-    if (!server_.isActive() || !target_) return;
-    spott_msgs::NavigateResult result;
-    result.final_pose.header.frame_id = params_.frame_id;
-    result.final_pose.pose.position.x = planner_.pose().x;
-    result.final_pose.pose.position.y = planner_.pose().y;
-    result.final_pose.pose.orientation.z = std::sin(planner_.pose().yaw / 2);
-    result.final_pose.pose.orientation.w = std::cos(planner_.pose().yaw / 2);
-    if ((planner_.pose().Position() - *target_).norm() <= tolerance_) {
+    if (!session_ || !server_.isActive()) return;
+    travelled_ += (planner_.pose().Position() - last_position_).norm();
+    last_position_ = planner_.pose().Position();
+    session_->Update(now.toSec());
+    if (session_->finished()) return Finish();
+    double remaining = std::numeric_limits<double>::quiet_NaN();
+    if (session_->phase() != NavigatePhase::kPlanning) {
+      remaining = DriveOneCycle(now);
+      if (!session_) return;  // finished this cycle
+    }
+    spott_msgs::NavigateFeedback fb;
+    fb.state = session_->phase() == NavigatePhase::kPlanning     ? fb.PLANNING
+               : session_->phase() == NavigatePhase::kRecovering ? fb.RECOVERING
+                                                                 : fb.DRIVING;
+    fb.distance_remaining = remaining;
+    fb.current_pose = CurrentPose();
+    fb.global_path_summary = session_->path_summary();
+    fb.note = session_->note();
+    server_.publishFeedback(fb);
+  }
+
+  // One cycle of DRIVING / RECOVERING; returns the distance remaining (m).
+  double DriveOneCycle(const ros::Time& now) {
+    if (const auto v = session_->BackOff(odom_)) {
+      Drive(*v, 0.0);
+      return planner_.DistanceToGoal();
+    }
+    const double to_target = (planner_.pose().Position() - request_.target).norm();
+    if (turning_ || session_->Arrived(to_target, request_.tolerance_m, now.toSec())) {
+      turning_ = true;  // arrived: only the final heading is left
       bool done = true;
       SteeringCommand turn;
-      if (target_yaw_) {
-        turn = TurnInPlace(planner_.pose().yaw, *target_yaw_, heading_tolerance_,
+      if (request_.yaw) {
+        turn = TurnInPlace(planner_.pose().yaw, *request_.yaw, request_.heading_tolerance_rad,
                            params_.planner.steering, &done);
       }
       if (done) {
-        Stop();
-        result.outcome = spott_msgs::NavigateResult::SUCCEEDED;
-        server_.setSucceeded(result, "goal reached");
-      } else {
-        geometry_msgs::Twist twist;
-        twist.angular.z = turn.angular;
-        cmd_pub_.publish(twist);
+        session_->Succeed();
+        Finish();
+        return 0.0;
       }
-      return;
+      Drive(0.0, turn.angular);
+      return to_target;
     }
-    const SteeringCommand cmd = planner_.Steer(mode_, bias_);
+    const SteeringCommand cmd =
+        planner_.Steer(request_.mode, request_.bias.HeadingAt(planner_.pose().Position()));
     const double remaining = planner_.DistanceToGoal();
-    steering_pub_.publish(conv::ToSteering(cmd, mode_, remaining, params_.frame_id, now));
-    bad_cycles_ = cmd.valid ? 0 : bad_cycles_ + 1;
-    if (bad_cycles_ >= params_.unreachable_cycles) {
-      Stop();
-      result.outcome = spott_msgs::NavigateResult::UNREACHABLE;
-      result.reason = cmd.reason;
-      server_.setAborted(result, result.reason);
-      return;
+    steering_pub_.publish(conv::ToSteering(cmd, request_.mode, remaining, params_.frame_id, now));
+    session_->Steered(cmd.valid, cmd.escaping, planner_.status().border_widened, cmd.reason);
+    if (session_->finished()) {
+      Finish();
+      return remaining;
     }
-    geometry_msgs::Twist twist;
-    twist.linear.x = cmd.linear;
-    twist.angular.z = cmd.angular;
-    cmd_pub_.publish(twist);
-    spott_msgs::NavigateFeedback fb;
-    fb.state = spott_msgs::NavigateFeedback::DRIVING;
-    fb.distance_remaining = remaining;
-    fb.current_pose = result.final_pose;
-    server_.publishFeedback(fb);
+    Drive(cmd.linear, cmd.angular);
+    return remaining;
   }
 
   NodeParameters params_;
   LocalPlanner planner_;
+  ContactMemory contacts_;
   actionlib::SimpleActionServer<spott_msgs::NavigateAction> server_;
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
-  ros::Publisher window_pub_;
-  ros::Publisher cmd_pub_, status_pub_, steering_pub_, potential_pub_, contours_pub_, path_pub_;
-  ros::Subscriber features_sub_, graph_sub_, projected_sub_, odom_sub_;
+  ros::Publisher cmd_pub_, goal_pub_, window_pub_, status_pub_, steering_pub_, potential_pub_,
+      contours_pub_, path_pub_;
+  ros::Subscriber features_sub_, graph_sub_, projected_sub_, plan_status_sub_, odom_sub_,
+      bumper_sub_;
   ros::Timer timer_;
   spott_map::MapDatabase db_;
-  SpeedMode mode_ = SpeedMode::kNormal;
-  std::optional<double> bias_;
-  std::optional<Vec2> target_;
-  std::optional<double> target_yaw_;
-  double heading_tolerance_ = 0.1;
-  spott_map::Pose2 start_;
-  double tolerance_ = 0.2;
+  std::unique_ptr<NavigateSession> session_;  ///< The running goal, if any.
+  NavigateRequest request_;
+  std::string goal_id_;
+  long goal_count_ = 0;
+  bool have_pose_ = false;
+  bool turning_ = false;  ///< Arrived at the position; turning to the final heading.
+  spott_map::Pose2 odom_;
+  double travelled_ = 0.0;
+  Vec2 last_position_{0.0, 0.0};
   double solve_time_ = 0.0;
-  int bad_cycles_ = 0;
   long cycle_ = 0;
 };
 
@@ -254,13 +443,25 @@ class HarmonicPlannerNode {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "harmonic_planner");
   ros::NodeHandle nh, pnh("~");
+  spott_ros::ParameterReader reader = spott_ros::ParameterReader::FromNode(pnh);
   spott_harmonic_planner::NodeParameters params;
-  const auto violations = spott_harmonic_planner::ReadParameters(pnh, params);
-  if (!violations.empty()) {
-    for (const auto& v : violations)
-      ROS_FATAL("harmonic_planner: invalid parameter: %s", v.c_str());
+  spott_harmonic_planner::ReadParameters(reader, params);
+  std::string error;  // the radius from the robot description, found from the node's namespace
+  const auto radius = spott_ros::FootprintRadiusFromParameter(nh, params.robot_description,
+                                                              params.base_frame, &error);
+  if (!radius) reader.Fail("robot_description: " + error);
+  params.planner.window.robot_radius_m = radius.value_or(0.0);
+  for (const auto& v : spott_harmonic_planner::ValidateParameters(params.planner)) reader.Fail(v);
+  const auto problems = reader.Finish();
+  for (const auto& w : reader.Warnings()) ROS_WARN("harmonic_planner: %s", w.c_str());
+  if (!problems.empty()) {
+    for (const auto& p : problems) ROS_FATAL("harmonic_planner: parameter %s", p.c_str());
     return 1;
   }
+  ROS_INFO(
+      "harmonic_planner: robot radius %.4f m (robot description) + localization error "
+      "%.3f m = padding %.4f m",
+      *radius, params.planner.window.max_localization_error_m, params.planner.window.padding_m());
   spott_harmonic_planner::HarmonicPlannerNode node(nh, pnh, params);
   ros::spin();
   return 0;

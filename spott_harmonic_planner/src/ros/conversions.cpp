@@ -1,5 +1,7 @@
 #include "spott_harmonic_planner/ros/conversions.h"
 
+#include "spott_ros/pose_conversions.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -106,6 +108,8 @@ spott_msgs::PotentialFieldStatus ToStatus(const LocalPlanner& planner, double so
   s.window_size = planner.field().width() * planner.field().resolution();
   s.resolution = planner.field().resolution();
   s.goal_on_border = planner.status().goal_on_border;
+  s.robot_radius = planner.parameters().window.robot_radius_m;
+  s.padding = planner.parameters().window.padding_m();
   return s;
 }
 
@@ -124,6 +128,80 @@ spott_msgs::SteeringStatus ToSteering(const SteeringCommand& cmd, SpeedMode mode
   s.clearance = cmd.clearance;
   s.distance_to_goal = distance_to_goal_m;
   return s;
+}
+
+std::optional<NavigateRequest> FromGoal(const spott_msgs::NavigateGoal& goal,
+                                        const std::string& frame_id, double default_tolerance_m,
+                                        double default_heading_tolerance_rad, std::string* error) {
+  const auto& t = goal.target;
+  if (!std::isfinite(t.pose.position.x) || !std::isfinite(t.pose.position.y)) {
+    *error = "target.pose.position must be finite";
+    return std::nullopt;
+  }
+  if (!t.header.frame_id.empty() && t.header.frame_id != frame_id) {
+    *error = "target.header.frame_id '" + t.header.frame_id + "' is not '" + frame_id + "'";
+    return std::nullopt;
+  }
+  if (goal.speed_mode > spott_msgs::NavigateGoal::QUICKLY) {
+    *error = "speed_mode must be SLOWLY (0), NORMAL (1) or QUICKLY (2), not " +
+             std::to_string(goal.speed_mode);
+    return std::nullopt;
+  }
+  const auto tolerance_ok = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  if (!tolerance_ok(goal.position_tolerance) || !tolerance_ok(goal.heading_tolerance)) {
+    *error = "position_tolerance and heading_tolerance must be finite and >= 0 (0 = default)";
+    return std::nullopt;
+  }
+  NavigateRequest r;
+  r.target = Vec2(t.pose.position.x, t.pose.position.y);
+  if (!goal.ignore_heading) {
+    r.yaw = spott_ros::YawOf(t.pose.orientation);
+    if (!r.yaw) {
+      *error = "target.pose.orientation has no yaw (not finite or zero); set ignore_heading";
+      return std::nullopt;
+    }
+  }
+  r.mode = static_cast<SpeedMode>(goal.speed_mode);
+  using Bias = DirectionBias::Kind;
+  switch (goal.bias_kind) {
+    case spott_msgs::NavigateGoal::BIAS_HEADING:
+      r.bias.kind = Bias::kHeading;
+      if (std::isfinite(goal.direction_bias)) r.bias.heading = goal.direction_bias;
+      break;
+    case spott_msgs::NavigateGoal::BIAS_TOWARD:
+    case spott_msgs::NavigateGoal::BIAS_AWAY:
+    case spott_msgs::NavigateGoal::BIAS_VIA:
+    case spott_msgs::NavigateGoal::BIAS_AROUND:
+      if (!std::isfinite(goal.bias_point.x) || !std::isfinite(goal.bias_point.y)) {
+        *error = "bias_point must be finite for bias_kind " + std::to_string(goal.bias_kind);
+        return std::nullopt;
+      }
+      r.bias.kind = goal.bias_kind == spott_msgs::NavigateGoal::BIAS_TOWARD ? Bias::kToward
+                    : goal.bias_kind == spott_msgs::NavigateGoal::BIAS_AWAY ? Bias::kAway
+                    : goal.bias_kind == spott_msgs::NavigateGoal::BIAS_VIA  ? Bias::kVia
+                                                                            : Bias::kAround;
+      r.bias.point = Vec2(goal.bias_point.x, goal.bias_point.y);
+      if (r.bias.kind == Bias::kVia &&
+          !(std::isfinite(goal.bias_radius) && goal.bias_radius >= 0)) {
+        *error = "bias_radius must be finite and >= 0 for BIAS_VIA";
+        return std::nullopt;
+      }
+      if (r.bias.kind == Bias::kAround && !(goal.bias_sense == 1.0 || goal.bias_sense == -1.0)) {
+        *error = "bias_sense must be +1 or -1 for BIAS_AROUND";
+        return std::nullopt;
+      }
+      r.bias.radius = goal.bias_radius;
+      r.bias.sense = goal.bias_sense;
+      break;
+    default:
+      *error = "bias_kind must be BIAS_HEADING (0) .. BIAS_AROUND (4), not " +
+               std::to_string(goal.bias_kind);
+      return std::nullopt;
+  }
+  r.tolerance_m = goal.position_tolerance > 0.0 ? goal.position_tolerance : default_tolerance_m;
+  r.heading_tolerance_rad =
+      goal.heading_tolerance > 0.0 ? goal.heading_tolerance : default_heading_tolerance_rad;
+  return r;
 }
 
 }  // namespace spott_harmonic_planner::ros_conversions

@@ -4,71 +4,82 @@
 
 namespace spott_harmonic_planner {
 
-std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
-  std::vector<std::string> v;
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
+  r.Get("frame_id", p.frame_id);
+  r.Get("base_frame", p.base_frame);
+  r.Get("robot_description", p.robot_description);
+  r.Get("cycle_rate_hz", p.cycle_rate_hz, "Hz");
+  r.Get("visualization_every", p.visualization_every);
+
   auto& w = p.planner.window;
-  pnh.param("window_size", w.window_size_m, w.window_size_m);
-  pnh.param("resolution", w.resolution_m, w.resolution_m);
-  pnh.param("robot_radius", w.robot_radius_m, w.robot_radius_m);
-  pnh.param("max_localization_error", w.max_localization_error_m, w.max_localization_error_m);
-  pnh.param("recentre_margin", w.recentre_margin_m, w.recentre_margin_m);
+  r.Get("window/window_size_m", w.window_size_m, "m");
+  r.Get("window/resolution_m", w.resolution_m, "m");
+  r.Get("window/max_localization_error_m", w.max_localization_error_m, "m");
+  r.Get("window/recentre_margin_m", w.recentre_margin_m, "m");
+  r.Get("window/door_thickness_m", w.door_thickness_m, "m");
+
   std::string solver = "multigrid_cg", stencil = "five_point", norm = "relative";
-  pnh.param<std::string>("solver", solver, solver);
-  pnh.param<std::string>("stencil", stencil, stencil);
-  pnh.param<std::string>("residual_norm", norm, norm);
+  auto& f = p.planner.field;
+  r.Get("solver/kind", solver);
+  r.Get("solver/stencil", stencil);
+  r.Get("solver/residual_norm", norm);
+  r.Get("solver/omega", f.solver.omega);
+  r.Get("solver/tolerance", f.tolerance);
+  r.Get("solver/sweeps_per_cycle", p.planner.sweeps_per_cycle);
   if (const auto k = ParseSolverKind(solver)) {
-    p.planner.field.solver.kind = *k;
+    f.solver.kind = *k;
   } else {
-    v.push_back("~solver must be sor_red_black, adi, multigrid or multigrid_cg (got '" + solver +
-                "')");
+    r.Fail("solver/kind must be sor_red_black, adi, multigrid or multigrid_cg (got '" + solver +
+           "')");
   }
   if (const auto s = ParseStencil(stencil)) {
-    p.planner.field.solver.stencil = *s;
+    f.solver.stencil = *s;
   } else {
-    v.push_back("~stencil must be five_point or nine_point (got '" + stencil + "')");
+    r.Fail("solver/stencil must be five_point or nine_point (got '" + stencil + "')");
   }
   if (norm == "absolute" || norm == "relative") {
-    p.planner.field.norm = norm == "absolute" ? ResidualNorm::kAbsolute : ResidualNorm::kRelative;
+    f.norm = norm == "absolute" ? ResidualNorm::kAbsolute : ResidualNorm::kRelative;
   } else {
-    v.push_back("~residual_norm must be absolute or relative (got '" + norm + "')");
+    r.Fail("solver/residual_norm must be absolute or relative (got '" + norm + "')");
   }
-  pnh.param("omega", p.planner.field.solver.omega, p.planner.field.solver.omega);
-  pnh.param("tolerance", p.planner.field.tolerance, p.planner.field.tolerance);
-  pnh.param("sweeps_per_cycle", p.planner.sweeps_per_cycle, p.planner.sweeps_per_cycle);
-  pnh.param("goal_tolerance", p.planner.goal_tolerance_m, p.planner.goal_tolerance_m);
-  pnh.param("border_goal_half_width", p.planner.border_goal_half_width_m,
-            p.planner.border_goal_half_width_m);
+
+  auto& n = p.navigate;
+  r.Get("navigate/goal_tolerance_m", p.planner.goal_tolerance_m, "m");
+  r.Get("navigate/heading_tolerance_rad", p.heading_tolerance_rad, "rad");
+  r.Get("navigate/border_goal_half_width_m", p.planner.border_goal_half_width_m, "m");
+  r.Get("navigate/unreachable_cycles", n.unreachable_cycles);
+  r.Get("navigate/planning_timeout_s", n.planning_timeout_s, "s");
+  r.Get("navigate/use_global_planner", n.use_global_planner);
+  r.Get("navigate/backoff_distance_m", n.backoff_distance_m, "m");
+  r.Get("navigate/backoff_speed_mps", n.backoff_speed_mps, "m/s");
+  r.Get("navigate/arrival_stall_s", n.arrival_stall_s, "s");
+  r.Get("navigate/contact_memory_s", p.contact_memory_s, "s");
+  r.Get("navigate/contact_size_m", p.contact_size_m, "m");
+  r.Get("navigate/bumper_backoff", p.bumper_backoff);
+
   auto& s = p.planner.steering;
-  pnh.param("max_linear", s.max_linear_mps, s.max_linear_mps);
-  pnh.param("max_angular", s.max_angular_rps, s.max_angular_rps);
-  pnh.param("slowly_fraction", s.slowly_fraction, s.slowly_fraction);
-  pnh.param("normal_fraction", s.normal_fraction, s.normal_fraction);
-  pnh.param("quickly_fraction", s.quickly_fraction, s.quickly_fraction);
-  pnh.param("heading_gain", s.heading_gain, s.heading_gain);
-  pnh.param("max_bias_deviation", s.max_bias_deviation_rad, s.max_bias_deviation_rad);
-  pnh.param("slow_clearance", s.slow_clearance_m, s.slow_clearance_m);
-  pnh.param("escape_radius", s.escape_radius_m, s.escape_radius_m);
-  pnh.param("goal_slowdown", s.goal_slowdown_m, s.goal_slowdown_m);
-  pnh.param<std::string>("frame_id", p.frame_id, p.frame_id);
-  pnh.param<std::string>("base_frame", p.base_frame, p.base_frame);
-  pnh.param("cycle_rate", p.cycle_rate_hz, p.cycle_rate_hz);
-  pnh.param("visualization_every", p.visualization_every, p.visualization_every);
-  pnh.param("unreachable_cycles", p.unreachable_cycles, p.unreachable_cycles);
-  pnh.param("heading_tolerance", p.heading_tolerance_rad, p.heading_tolerance_rad);
-  if (!(p.heading_tolerance_rad > 0.0 && p.heading_tolerance_rad <= M_PI)) {
-    v.push_back("~heading_tolerance must be in (0, pi] rad (got " +
-                std::to_string(p.heading_tolerance_rad) + ")");
-  }
-  for (const auto& e : ValidateParameters(p.planner)) v.push_back("~" + e);
-  if (!(p.cycle_rate_hz > 0.0 && p.cycle_rate_hz <= 1000.0)) {
-    v.push_back("~cycle_rate must be in (0, 1000] Hz (got " + std::to_string(p.cycle_rate_hz) +
-                ")");
-  }
-  if (p.visualization_every < 1) v.push_back("~visualization_every must be >= 1");
-  if (p.unreachable_cycles < 1) v.push_back("~unreachable_cycles must be >= 1");
+  r.Get("steering/max_linear_mps", s.max_linear_mps, "m/s");
+  r.Get("steering/max_angular_rps", s.max_angular_rps, "rad/s");
+  r.Get("steering/slowly_fraction", s.slowly_fraction);
+  r.Get("steering/normal_fraction", s.normal_fraction);
+  r.Get("steering/quickly_fraction", s.quickly_fraction);
+  r.Get("steering/heading_gain_per_s", s.heading_gain, "1/s");
+  r.Get("steering/max_bias_deviation_rad", s.max_bias_deviation_rad, "rad");
+  r.Get("steering/slow_clearance_m", s.slow_clearance_m, "m");
+  r.Get("steering/escape_radius_m", s.escape_radius_m, "m");
+  r.Get("steering/goal_slowdown_m", s.goal_slowdown_m, "m");
+
+  r.Require(p.heading_tolerance_rad > 0.0 && p.heading_tolerance_rad <= M_PI,
+            "navigate/heading_tolerance_rad", "in (0, pi]", p.heading_tolerance_rad);
+  r.Require(p.cycle_rate_hz > 0.0 && p.cycle_rate_hz <= 1000.0, "cycle_rate_hz", "in (0, 1000]",
+            p.cycle_rate_hz);
+  r.Require(p.visualization_every >= 1, "visualization_every", ">= 1", p.visualization_every);
+  r.Require(p.contact_memory_s > 0.0, "navigate/contact_memory_s", "> 0", p.contact_memory_s);
+  r.Require(p.contact_size_m > 0.0 && p.contact_size_m <= 1.0, "navigate/contact_size_m",
+            "in (0, 1]", p.contact_size_m);
   if (p.frame_id.empty() || p.base_frame.empty())
-    v.push_back("~frame_id and ~base_frame must not be empty");
-  return v;
+    r.Fail("frame_id and base_frame must not be empty");
+  for (const auto& e : ValidateParameters(p.navigate)) r.Fail(e);
 }
 
 }  // namespace spott_harmonic_planner

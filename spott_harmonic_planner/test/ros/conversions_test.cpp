@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "../test_maps.h"
 
 namespace spott_harmonic_planner {
@@ -57,6 +59,35 @@ TEST(Conversions, PathKeepsPointsInOrder) {
   EXPECT_DOUBLE_EQ(msg.poses[1].pose.position.x, 1.0);
   EXPECT_DOUBLE_EQ(msg.poses[2].pose.position.y, 1.0);
   EXPECT_EQ(msg.poses[0].header.frame_id, "map");
+}
+
+TEST(Conversions, NavigateGoalBiasKindsAreReadAndBadOnesRefusedByField) {
+  spott_msgs::NavigateGoal g;
+  g.target.header.frame_id = "map";
+  g.ignore_heading = true;
+  g.direction_bias = std::nan("");
+  std::string error;
+  auto r = ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error);
+  ASSERT_TRUE(r) << error;
+  EXPECT_EQ(r->bias.kind, DirectionBias::Kind::kHeading);
+  EXPECT_FALSE(r->bias.heading);  // NaN: no bias, as before bias_kind existed
+  g.bias_kind = spott_msgs::NavigateGoal::BIAS_AROUND;
+  g.bias_point.x = 2.0;
+  g.bias_sense = 1.0;
+  r = ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error);
+  ASSERT_TRUE(r) << error;
+  EXPECT_EQ(r->bias.kind, DirectionBias::Kind::kAround);
+  EXPECT_DOUBLE_EQ(r->bias.point.x(), 2.0);
+  g.bias_sense = 0.5;
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("bias_sense"), std::string::npos) << error;
+  g.bias_kind = spott_msgs::NavigateGoal::BIAS_VIA;
+  g.bias_radius = -1.0;
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("bias_radius"), std::string::npos) << error;
+  g.bias_kind = 9;
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("bias_kind"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -16,7 +16,7 @@
 #include <cmath>
 #include <mutex>
 
-#include "spott_harmonic_planner/ros/parameters.h"
+#include "spott_ros/testing/node_process.h"
 
 namespace {
 
@@ -103,8 +103,8 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
   EXPECT_LT(std::hypot(robot.x - 9.3, robot.y - 4.0), 0.35);
   EXPECT_TRUE(robot.crossed_door);
   EXPECT_LT(std::abs(std::remainder(robot.yaw - M_PI / 2, 2 * M_PI)), 0.15);
-  // Robot radius 0.225 m: the padded field (0.325 m + half the wall's 0.15 m) keeps it clear.
-  EXPECT_GT(robot.min_wall_distance, 0.225);
+  // Robot radius 0.2285 m (the URDF's): the padded field keeps the body clear of the walls.
+  EXPECT_GT(robot.min_wall_distance, 0.2285);
   EXPECT_TRUE(converged_seen);
   EXPECT_TRUE(potential_seen);
   const double x_end = robot.x, y_end = robot.y;
@@ -145,22 +145,15 @@ TEST(HarmonicPlannerNode, DrivesThroughDoorAroundWallToGoalInWindow) {
 }
 
 TEST(HarmonicPlannerNode, BadParametersAreRefusedByName) {
-  ros::NodeHandle pnh("~bad");
-  pnh.setParam("resolution", -0.2);
-  pnh.setParam("solver", std::string("conjugate_gradient"));
-  pnh.setParam("omega", 2.5);
-  pnh.setParam("cycle_rate", 0.0);
-  spott_harmonic_planner::NodeParameters p;
-  const auto v = spott_harmonic_planner::ReadParameters(pnh, p);
-  std::string all;
-  for (const auto& s : v) all += s + "\n";
-  EXPECT_NE(all.find("resolution"), std::string::npos) << all;
-  EXPECT_NE(all.find("~solver"), std::string::npos) << all;
-  EXPECT_NE(all.find("omega"), std::string::npos) << all;
-  EXPECT_NE(all.find("~cycle_rate"), std::string::npos) << all;
-  ros::NodeHandle good("~good");
-  spott_harmonic_planner::NodeParameters q;
-  EXPECT_TRUE(spott_harmonic_planner::ReadParameters(good, q).empty());
+  const auto run = spott_ros::testing::RunNode(
+      HARMONIC_PLANNER_EXE,
+      "__name:=bad_planner _window/resoluton_m:=0.1 _solver/kind:=conjugate_gradient "
+      "_solver/omega:=2.5 _cycle_rate_hz:=0.0");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  for (const char* key : {"~window/resoluton_m is not a parameter", "~solver/kind", "solver/omega",
+                          "~cycle_rate_hz"}) {
+    EXPECT_NE(run.output.find(key), std::string::npos) << key << " in:\n" << run.output;
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <ros/time.h>
+#include <spott_msgs/NavigateGoal.h>
 #include <spott_msgs/PotentialFieldStatus.h>
 #include <spott_msgs/SteeringStatus.h>
 #include <visualization_msgs/Marker.h>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "spott_harmonic_planner/local_planner.h"
+#include "spott_harmonic_planner/navigate_session.h"
 
 namespace spott_harmonic_planner::ros_conversions {
 
@@ -34,6 +36,14 @@ nav_msgs::Path ToPath(const PotentialField::Path& path, const std::string& frame
 
 spott_msgs::PotentialFieldStatus ToStatus(const LocalPlanner& planner, double solve_time_s,
                                           const std::string& frame_id, const ros::Time& stamp);
+
+/// A Navigate goal as a request, with the node's defaults for zero tolerances; nullopt with
+/// `error` (naming the field) for a target that is not finite or not in `frame_id`, an unknown
+/// speed mode, an orientation without a yaw while the heading counts, or a tolerance that is
+/// not finite and >= 0.
+std::optional<NavigateRequest> FromGoal(const spott_msgs::NavigateGoal& goal,
+                                        const std::string& frame_id, double default_tolerance_m,
+                                        double default_heading_tolerance_rad, std::string* error);
 
 spott_msgs::SteeringStatus ToSteering(const SteeringCommand& cmd, SpeedMode mode,
                                       double distance_to_goal_m, const std::string& frame_id,

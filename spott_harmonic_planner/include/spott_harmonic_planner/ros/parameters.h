@@ -1,28 +1,36 @@
-// The node's parameters: read from the parameter server and validated by name (tested by the
-// rostest, which has a master).
+// The node's parameters (config/harmonic_planner.yaml), read through spott_ros's reader: wrong
+// types, values out of range and unknown keys stop the node, each named. The robot's radius is
+// not a parameter: it comes from the robot description (spott_ros::FootprintRadiusFromParameter).
 #pragma once
-
-#include <ros/node_handle.h>
 
 #include <string>
 #include <vector>
 
 #include "spott_harmonic_planner/local_planner.h"
+#include "spott_harmonic_planner/navigate_session.h"
+#include "spott_ros/parameter_reader.h"
 
 namespace spott_harmonic_planner {
 
 struct NodeParameters {
-  PlannerParameters planner;
+  PlannerParameters planner;  ///< window.robot_radius_m is set from the robot description.
+  NavigateSessionParameters navigate;
   std::string frame_id = "map";
-  std::string base_frame = "base_link";
-  double cycle_rate_hz = 20.0;         ///< (0, 1000]
+  std::string base_frame = "base_link";  ///< Also the URDF link whose footprint pads obstacles.
+  std::string robot_description = "robot_description";  ///< Parameter holding the URDF.
+  double cycle_rate_hz = 20.0;                          ///< (0, 1000]
   int visualization_every = 5;         ///< Cycles between potential/contour/path messages, >= 1.
-  int unreachable_cycles = 40;         ///< Cycles without a usable answer before aborting, >= 1.
   double heading_tolerance_rad = 0.1;  ///< Default final heading tolerance (rad), (0, pi].
+  double contact_memory_s = 60.0;      ///< Bumper contacts kept as obstacles (s), > 0.
+  double contact_size_m = 0.1;         ///< Their diameter (m), > 0.
+  /// Back off a bumper contact itself while navigating. stack.launch sets it false when the TR+
+  /// controller runs: its reflex (BUMPER_CHECK, SPOTT Fig. 7) takes the wheels and moves the robot
+  /// away, and two back-offs of one contact would fight. Contacts are remembered either way.
+  bool bumper_backoff = true;
 };
 
-/// Reads every parameter of config/harmonic_planner.yaml from `pnh` (defaults where unset) and
-/// returns every violation, each naming its parameter ("~resolution must be ...").
-std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p);
+/// Reads every key of config/harmonic_planner.yaml (defaults where unset) and records every
+/// violation in `r` by its key.
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p);
 
 }  // namespace spott_harmonic_planner

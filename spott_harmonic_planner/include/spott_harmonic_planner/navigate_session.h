@@ -1,0 +1,142 @@
+// The life of one Navigate goal, ROS-free (the harmonic planner node drives it from its timer
+// and callbacks; tests drive it directly). The action's contract (spott_msgs/Navigate):
+//   PLANNING   until the robot has a pose and the global planner has answered this very goal
+//              (status and projection carrying its id), at most planning_timeout_s;
+//   DRIVING    down the harmonic field;
+//   RECOVERING while the steering escapes the padding (a localization error beside a jamb),
+//              the border goal had to be widened, or the robot backs off a bumper contact;
+//   the result as soon as it is known: UNREACHABLE the moment the global planner fails (with
+//   its reason: the closed doors, the blocked passages) or after unreachable_cycles without a
+//   descent, FAILED for a refused goal or a planning timeout (saying what was missing).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "spott_harmonic_planner/steering.h"
+#include "spott_map/world.h"
+
+namespace spott_harmonic_planner {
+
+/// A task's direction bias of the descent (SPOTT III-B; spott_msgs/Navigate bias_kind): a fixed
+/// heading, or one recomputed from the robot's position about a point.
+struct DirectionBias {
+  enum class Kind {
+    kHeading,  ///< `heading` (rad, map); none when not set
+    kToward,   ///< toward `point` (`to`)
+    kAway,     ///< away from `point` (`away-from`)
+    kVia,      ///< toward `point` until within `radius` (m), then none (`via`)
+    kAround,   ///< tangent to the circle about `point`; `sense` > 0 counter-clockwise (`around`)
+  };
+  Kind kind = Kind::kHeading;
+  std::optional<double> heading;
+  Vec2 point{0.0, 0.0};
+  double radius = 0.0;
+  double sense = 1.0;
+  /// The heading (rad, map) the bias asks for with the robot at `position`; none = no bias (no
+  /// heading, within a via point's radius, or at the point itself).
+  std::optional<double> HeadingAt(const Vec2& position) const;
+};
+
+/// A Navigate goal, checked (finite target, a normalizable orientation unless the heading is
+/// ignored, finite positive tolerances, a known bias kind with finite values).
+struct NavigateRequest {
+  Vec2 target{0.0, 0.0};      ///< (m, map)
+  std::optional<double> yaw;  ///< Final heading (rad, map); none = ignore_heading.
+  SpeedMode mode = SpeedMode::kNormal;
+  DirectionBias bias;        ///< Direction bias of the descent.
+  double tolerance_m = 0.2;  ///< Success radius (m).
+  double heading_tolerance_rad = 0.1;
+};
+
+struct NavigateSessionParameters {
+  double planning_timeout_s = 60.0;  ///< Longest PLANNING (s), (0, 600].
+  /// Wait for the global planner's answer before driving; false: drive on the local planner's
+  /// own projection of the target (no room/door graph, e.g. a single room).
+  bool use_global_planner = true;
+  int unreachable_cycles = 40;       ///< Cycles without a descent before UNREACHABLE, >= 1.
+  double backoff_distance_m = 0.25;  ///< Back off a bumper contact by this much (m), (0, 2].
+  double backoff_speed_mps = 0.1;    ///< (m/s), (0, 1].
+  /// Within the tolerance but no closer for this long counts as arrived (s), > 0.
+  double arrival_stall_s = 2.0;
+};
+
+std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p);
+
+enum class NavigatePhase { kPlanning, kDriving, kRecovering, kFinished };
+enum class NavigateOutcome { kSucceeded, kUnreachable, kPreempted, kFailed };
+
+/// The global planner's answer to this goal (its GlobalPlanStatus with the goal's id).
+struct GlobalAnswer {
+  enum class State { kPlanned, kFailed, kRefused };
+  State state = State::kPlanned;
+  std::string message;       ///< FAILED / REFUSED: the reason, naming doors and passages.
+  std::string path_summary;  ///< PLANNED: "hall_e -> d_lab_e -> lab".
+};
+
+class NavigateSession {
+ public:
+  NavigateSession(const NavigateSessionParameters& params, double now_s);
+
+  /// Inputs, as they arrive.
+  void PoseAvailable() { have_pose_ = true; }
+  void Answer(const GlobalAnswer& answer);
+  void ProjectionArrived() { have_projection_ = true; }
+  /// A pressed bumper segment at `angle_rad` (base frame) while the robot is at `odom` (odom
+  /// frame): the robot backs off along its axis, away from the contact.
+  void Contact(double angle_rad, const spott_map::Pose2& odom);
+
+  /// Planning: leaves PLANNING when ready, or finishes on a timeout. Call every cycle.
+  void Update(double now_s);
+  /// Driving: the steering answer of this cycle (`valid`, and whether it escapes the padding)
+  /// and whether the border goal had to be widened. Counts cycles without a descent.
+  void Steered(bool valid, bool escaping, bool border_widened, const std::string& reason);
+  /// While backing off: the velocity (m/s along x, rad/s) at odometry pose `odom`; nullopt once
+  /// the back-off distance is covered (the session is DRIVING again).
+  std::optional<double> BackOff(const spott_map::Pose2& odom);
+  bool backing_off() const { return backoff_.has_value(); }
+
+  /// Arrival, judged on the estimate: the robot aims at the target itself and has arrived within
+  /// half the tolerance, or within the tolerance once it has come no closer for arrival_stall_s
+  /// (a target by a padded obstacle). Stopping at the first touch of the tolerance circle would
+  /// leave the real robot a localization error beyond it.
+  bool Arrived(double distance_m, double tolerance_m, double now_s);
+  void Succeed();
+  void Preempt();
+
+  NavigatePhase phase() const { return phase_; }
+  /// What PLANNING waits for or what RECOVERING does ("" while driving normally).
+  const std::string& note() const { return note_; }
+  const std::string& path_summary() const { return path_summary_; }
+  NavigateOutcome outcome() const { return outcome_; }
+  const std::string& reason() const { return reason_; }
+  bool finished() const { return phase_ == NavigatePhase::kFinished; }
+  int contacts() const { return contacts_; }
+  int recoveries() const { return recoveries_; }  ///< Episodes entered RECOVERING.
+
+ private:
+  void Finish(NavigateOutcome outcome, const std::string& reason);
+  void SetPhase(NavigatePhase phase);
+
+  struct BackOffState {
+    spott_map::Pose2 start;
+    double direction = -1.0;  ///< -1 backwards, +1 forwards.
+  };
+
+  NavigateSessionParameters params_;
+  double started_s_;
+  bool have_pose_ = false;
+  bool have_projection_ = false;
+  std::optional<GlobalAnswer> answer_;
+  NavigatePhase phase_ = NavigatePhase::kPlanning;
+  NavigateOutcome outcome_ = NavigateOutcome::kFailed;
+  std::string note_, reason_, path_summary_;
+  int bad_cycles_ = 0;
+  double closest_m_ = 1e300;
+  double closer_at_s_ = 0.0;
+  std::optional<BackOffState> backoff_;
+  int contacts_ = 0;
+  int recoveries_ = 0;
+};
+
+}  // namespace spott_harmonic_planner

@@ -1,0 +1,626 @@
+#include "mg_kernels.h"
+
+#include <algorithm>
+
+// Two builds of every kernel on x86-64 (AVX2 + FMA, and the baseline), chosen at load time.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(SPOTT_NO_CLONES)
+#define SPOTT_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define SPOTT_CLONES
+#endif
+
+// Reductions (sums, maxima) keep kLanes partial results, so the compiler vectorizes them
+// without reordering a single sum; the selects need -fno-trapping-math to become blends.
+
+namespace spott_harmonic_planner::internal::kernels {
+
+namespace {
+
+template <typename T>
+inline void Colour5T(T* u, const T* f, const T* mask, int nx, const Run* runs, std::size_t count,
+                     int colour, T* __restrict tmp) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
+    const int len = run.x1 - run.x0;
+    T* row = u + base + run.x0;
+    const T* __restrict up = row + nx;
+    const T* __restrict down = row - nx;
+    const T* __restrict fr = f + base + run.x0;
+    if (mask) {
+      const T* __restrict m = mask + base + run.x0;
+      for (int k = 0; k < len; ++k) {
+        tmp[k] = m[k] * (T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k]);
+      }
+    } else {
+      for (int k = 0; k < len; ++k) {
+        tmp[k] = T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k];
+      }
+    }
+    const int parity = ((run.x0 + run.y) & 1) == colour ? 0 : 1;
+    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
+  }
+}
+
+template <typename T>
+inline void FirstSweep5T(T* u, const T* f, const T* mask, int nx, const Run* runs,
+                         std::size_t count, T* __restrict tmp) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
+    const int len = run.x1 - run.x0;
+    T* __restrict row = u + base + run.x0;
+    const T* __restrict fr = f + base + run.x0;  // zero on fixed cells
+    const int parity = ((run.x0 + run.y) & 1) == 0 ? 0 : 1;
+    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? fr[k] : T(0);
+  }
+  Colour5T(u, f, mask, nx, runs, count, 1, tmp);
+}
+
+template <typename T>
+inline void Residual5T(const T* u, const T* f, const T* mask, T* r, int nx, const Run* runs,
+                       std::size_t count) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const int len = run.x1 - run.x0;
+    const T* __restrict row = u + base;
+    const T* __restrict up = row + nx;
+    const T* __restrict down = row - nx;
+    const T* __restrict fr = f + base;
+    T* __restrict rr = r + base;
+    if (mask) {
+      const T* __restrict m = mask + base;
+      for (int k = 0; k < len; ++k) {
+        rr[k] = m[k] * (fr[k] - row[k] + T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])));
+      }
+    } else {
+      for (int k = 0; k < len; ++k) {
+        rr[k] = fr[k] - row[k] + T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k]));
+      }
+    }
+  }
+}
+
+template <typename T>
+inline T Apply9(const T* row, const T* up, const T* down, const Stencil9<T>& a, std::ptrdiff_t i,
+                std::ptrdiff_t nx, int k) {
+  return a.e[i] * row[k + 1] + a.e[i - 1] * row[k - 1] + a.n[i] * up[k] + a.n[i - nx] * down[k] +
+         a.ne[i] * up[k + 1] + a.ne[i - nx - 1] * down[k - 1] + a.nw[i] * up[k - 1] +
+         a.nw[i - nx + 1] * down[k + 1];
+}
+
+template <typename T>
+inline void Colour9T(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, int py,
+                     const Stencil9<T>& a, T* __restrict tmp) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    if ((run.y & 1) != py) continue;
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const int len = run.x1 - run.x0;
+    T* row = u + base;
+    const T* __restrict up = row + nx;
+    const T* __restrict down = row - nx;
+    const T* __restrict fr = f + base;
+    const T* __restrict id = a.inv_diag + base;
+    const T* __restrict e = a.e + base;
+    const T* __restrict n = a.n + base;
+    const T* __restrict nd = a.n + base - nx;
+    const T* __restrict ne = a.ne + base;
+    const T* __restrict ned = a.ne + base - nx - 1;
+    const T* __restrict nw = a.nw + base;
+    const T* __restrict nwd = a.nw + base - nx + 1;
+    for (int k = 0; k < len; ++k) {
+      const T s = e[k] * row[k + 1] + e[k - 1] * row[k - 1] + n[k] * up[k] + nd[k] * down[k] +
+                  ne[k] * up[k + 1] + ned[k] * down[k - 1] + nw[k] * up[k - 1] +
+                  nwd[k] * down[k + 1];
+      tmp[k] = id[k] * (fr[k] - s);
+    }
+    const int parity = (run.x0 & 1) == px ? 0 : 1;
+    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
+  }
+}
+
+// One row of r = f - A u (restrict parameters: the compiler needs no alias checks between the
+// row and its 17 input streams).
+template <typename T>
+inline void Residual9Row(const T* __restrict row, const T* __restrict up, const T* __restrict down,
+                         const T* __restrict fr, const T* __restrict di, const T* __restrict e,
+                         const T* __restrict n, const T* __restrict nd, const T* __restrict ne,
+                         const T* __restrict ned, const T* __restrict nw, const T* __restrict nwd,
+                         T* __restrict rr, int len) {
+  for (int k = 0; k < len; ++k) {
+    const T s = e[k] * row[k + 1] + e[k - 1] * row[k - 1] + n[k] * up[k] + nd[k] * down[k] +
+                ne[k] * up[k + 1] + ned[k] * down[k - 1] + nw[k] * up[k - 1] +
+                nwd[k] * down[k + 1] + di[k] * row[k];
+    rr[k] = fr[k] - s;
+  }
+}
+
+template <typename T>
+inline void Residual9T(const T* u, const T* f, T* r, int nx, const Run* runs, std::size_t count,
+                       const Stencil9<T>& a) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const T* row = u + base;
+    Residual9Row(row, row + nx, row - nx, f + base, a.diag + base, a.e + base, a.n + base,
+                 a.n + base - nx, a.ne + base, a.ne + base - nx - 1, a.nw + base,
+                 a.nw + base - nx + 1, r + base, run.x1 - run.x0);
+  }
+}
+
+template <typename T>
+inline void RestrictT(const T* r, int fnx, T* fc, int cnx, const Run* runs, std::size_t count,
+                      int sx, int sy, T* __restrict tmp) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const int fy = sy * run.y;
+    const T* __restrict r0 = r + static_cast<std::ptrdiff_t>(fy) * fnx;
+    T* __restrict out = fc + static_cast<std::ptrdiff_t>(run.y) * cnx;
+    if (sx == 1) {
+      if (sy == 2) {
+        for (int X = run.x0; X < run.x1; ++X) {
+          out[X] = r0[X] + T(0.5) * (r0[X - fnx] + r0[X + fnx]);
+        }
+      } else {
+        for (int X = run.x0; X < run.x1; ++X) out[X] = r0[X];
+      }
+      continue;
+    }
+    // Columns 2 X0 - 1 .. 2 X1 - 1 of the fine rows, summed vertically first.
+    const int a = 2 * run.x0 - 1, b = 2 * run.x1 - 1;  // [a, b]
+    const int len = b - a + 1;
+    const T* __restrict c = r0 + a;
+    if (sy == 2) {
+      const T* __restrict lo = c - fnx;
+      const T* __restrict hi = c + fnx;
+      for (int k = 0; k < len; ++k) tmp[k] = c[k] + T(0.5) * (lo[k] + hi[k]);
+    } else {
+      for (int k = 0; k < len; ++k) tmp[k] = c[k];
+    }
+    // Coarse X sits on fine 2 X = tmp index 2 (X - X0) + 1.
+    const int m = run.x1 - run.x0;
+    T* __restrict o = out + run.x0;
+    for (int k = 0; k < m; ++k) o[k] = tmp[2 * k + 1] + T(0.5) * (tmp[2 * k] + tmp[2 * k + 2]);
+  }
+}
+
+template <typename T>
+inline void ProlongateT(const T* uc, int cnx, T* u, const T* mask, int fnx, const Run* runs,
+                        std::size_t count, int sx, int sy, T* __restrict tmp) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const int y = run.y;
+    const int y0 = sy == 2 ? y / 2 : y, y1 = sy == 2 ? (y + 1) / 2 : y;
+    const T* __restrict c0 = uc + static_cast<std::ptrdiff_t>(y0) * cnx;
+    const T* __restrict c1 = uc + static_cast<std::ptrdiff_t>(y1) * cnx;
+    T* __restrict row = u + static_cast<std::ptrdiff_t>(y) * fnx;
+    const int len = run.x1 - run.x0;
+    const T* __restrict mrow = mask ? mask + static_cast<std::ptrdiff_t>(y) * fnx : nullptr;
+    if (sx == 1) {
+      for (int x = run.x0; x < run.x1; ++x) {
+        const T v = y0 == y1 ? c0[x] : T(0.5) * (c0[x] + c1[x]);
+        row[x] += mrow ? mrow[x] * v : v;
+      }
+      continue;
+    }
+    // Coarse columns X0 = x0 / 2 .. X1 = x1 / 2, interpolated in y into tmp, then in x.
+    const int X0 = run.x0 / 2, X1 = run.x1 / 2;
+    const int m = X1 - X0 + 1;
+    T* __restrict cr = tmp;
+    if (y0 == y1) {
+      for (int k = 0; k < m; ++k) cr[k] = c0[X0 + k];
+    } else {
+      for (int k = 0; k < m; ++k) cr[k] = T(0.5) * (c0[X0 + k] + c1[X0 + k]);
+    }
+    // Fine x = 2 X0 + j: j even -> cr[j / 2], j odd -> mean of cr[j / 2], cr[j / 2 + 1].
+    T* __restrict ex = tmp + m + 1;
+    for (int k = 0; k + 1 < m; ++k) {
+      ex[2 * k] = cr[k];
+      ex[2 * k + 1] = T(0.5) * (cr[k] + cr[k + 1]);
+    }
+    ex[2 * (m - 1)] = cr[m - 1];
+    const int off = run.x0 - 2 * X0;  // 0 or 1
+    T* __restrict out = row + run.x0;
+    const T* __restrict src = ex + off;
+    if (mrow) {
+      const T* __restrict mm = mrow + run.x0;
+      for (int k = 0; k < len; ++k) out[k] += mm[k] * src[k];
+    } else {
+      for (int k = 0; k < len; ++k) out[k] += src[k];
+    }
+  }
+}
+
+}  // namespace
+
+template <typename T>
+inline void Fine5T(const std::uint8_t* __restrict m, const std::uint8_t* __restrict mu,
+                   T* __restrict d, T* __restrict e, T* __restrict n, int len) {
+  for (int j = 0; j < len; ++j) {
+    const T a = static_cast<T>(m[j]);
+    d[j] = a;
+    e[j] = T(-0.25) * a * static_cast<T>(m[j + 1]);
+    n[j] = T(-0.25) * a * static_cast<T>(mu[j]);
+  }
+}
+
+template <typename T>
+inline void GalerkinXT(const T* __restrict d, const T* __restrict e, const T* __restrict n,
+                       const T* __restrict ne, const T* __restrict nw, T* __restrict bd,
+                       T* __restrict be, T* __restrict bn, T* __restrict bne, T* __restrict bnw,
+                       int count) {
+  if (ne == nullptr) {  // the 5-point level 0: no diagonal couplings
+    for (int t = 0; t < count; ++t) {
+      const int m = 2 * t, z = m + 1, p = m + 2;
+      bd[t] = T(0.25) * d[m] + d[z] + T(0.25) * d[p] + e[m] + e[z];
+      be[t] = T(0.5) * e[z] + T(0.25) * d[p] + T(0.5) * e[p];
+      bn[t] = T(0.25) * n[m] + n[z] + T(0.25) * n[p];
+      bne[t] = T(0.25) * n[p];
+      bnw[t] = T(0.25) * n[m];
+    }
+    return;
+  }
+  for (int t = 0; t < count; ++t) {
+    const int m = 2 * t, z = m + 1, p = m + 2;
+    bd[t] = T(0.25) * d[m] + d[z] + T(0.25) * d[p] + e[m] + e[z];
+    be[t] = T(0.5) * e[z] + T(0.25) * d[p] + T(0.5) * e[p];
+    bn[t] = T(0.25) * n[m] + n[z] + T(0.25) * n[p] + T(0.5) * ((ne[m] + ne[z]) + (nw[z] + nw[p]));
+    bne[t] = T(0.5) * ne[z] + T(0.25) * n[p] + T(0.5) * ne[p];
+    bnw[t] = T(0.5) * nw[z] + T(0.25) * n[m] + T(0.5) * nw[m];
+  }
+}
+
+template <typename T, typename Rows>
+inline void GalerkinYT(const Rows& b, T* __restrict diag, T* __restrict inv_diag, T* __restrict e,
+                       T* __restrict n, T* __restrict ne, T* __restrict nw, int count) {
+  const T* __restrict d0 = b.d[0] + 1;
+  const T* __restrict d1 = b.d[1] + 1;
+  const T* __restrict d2 = b.d[2] + 1;
+  const T* __restrict e0 = b.e[0] + 1;
+  const T* __restrict e1 = b.e[1] + 1;
+  const T* __restrict e2 = b.e[2] + 1;
+  const T* __restrict n0 = b.n[0] + 1;
+  const T* __restrict n1 = b.n[1] + 1;
+  const T* __restrict n2 = b.n[2] + 1;
+  const T* __restrict ne0 = b.ne[0] + 1;
+  const T* __restrict ne1 = b.ne[1] + 1;
+  const T* __restrict ne2 = b.ne[2] + 1;
+  const T* __restrict nw0 = b.nw[0] + 1;
+  const T* __restrict nw1 = b.nw[1] + 1;
+  const T* __restrict nw2 = b.nw[2] + 1;
+  for (int k = 0; k < count; ++k) {
+    const T a0 = T(0.25) * d0[k] + d1[k] + T(0.25) * d2[k] + n0[k] + n1[k];
+    diag[k] = a0;
+    inv_diag[k] = T(1) / a0;
+    n[k] = T(0.5) * n1[k] + T(0.25) * d2[k] + T(0.5) * n2[k];
+    e[k] = T(0.25) * e0[k] + e1[k] + T(0.25) * e2[k] +
+           T(0.5) * ((ne0[k] + ne1[k]) + (nw0[k + 1] + nw1[k + 1]));
+    ne[k] = T(0.5) * ne1[k] + T(0.25) * e2[k] + T(0.5) * ne2[k];
+    nw[k] = T(0.5) * nw1[k] + T(0.25) * e2[k - 1] + T(0.5) * nw2[k];
+  }
+}
+
+#define SPOTT_KERNELS(T)                                                                          \
+  SPOTT_CLONES void Colour5(T* u, const T* f, const T* mask, int nx, const Run* runs,             \
+                            std::size_t count, int colour, T* tmp) {                              \
+    Colour5T(u, f, mask, nx, runs, count, colour, tmp);                                           \
+  }                                                                                               \
+  SPOTT_CLONES void Residual5(const T* u, const T* f, const T* mask, T* r, int nx,                \
+                              const Run* runs, std::size_t count) {                               \
+    Residual5T(u, f, mask, r, nx, runs, count);                                                   \
+  }                                                                                               \
+  SPOTT_CLONES void Colour9(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, \
+                            int py, const Stencil9<T>& a, T* tmp) {                               \
+    Colour9T(u, f, nx, runs, count, px, py, a, tmp);                                              \
+  }                                                                                               \
+  SPOTT_CLONES void Residual9(const T* u, const T* f, T* r, int nx, const Run* runs,              \
+                              std::size_t count, const Stencil9<T>& a) {                          \
+    Residual9T(u, f, r, nx, runs, count, a);                                                      \
+  }                                                                                               \
+  SPOTT_CLONES void Restrict(const T* r, int fnx, T* fc, int cnx, const Run* runs,                \
+                             std::size_t count, int sx, int sy, T* tmp) {                         \
+    RestrictT(r, fnx, fc, cnx, runs, count, sx, sy, tmp);                                         \
+  }                                                                                               \
+  SPOTT_CLONES void Prolongate(const T* uc, int cnx, T* u, const T* mask, int fnx,                \
+                               const Run* runs, std::size_t count, int sx, int sy, T* tmp) {      \
+    ProlongateT(uc, cnx, u, mask, fnx, runs, count, sx, sy, tmp);                                 \
+  }
+
+SPOTT_KERNELS(float)
+SPOTT_KERNELS(double)
+
+SPOTT_CLONES bool BlockedDiffers(const std::uint8_t* cells, const std::uint8_t* blocked, int nx,
+                                 int ny) {
+  const std::size_t n = static_cast<std::size_t>(nx) * ny;
+  std::uint8_t ring = 1;
+  for (int x = 0; x < nx; ++x) ring &= blocked[x] & blocked[n - nx + x];
+  for (int y = 0; y < ny; ++y) {
+    ring &= blocked[static_cast<std::size_t>(y) * nx] &
+            blocked[static_cast<std::size_t>(y) * nx + nx - 1];
+  }
+  if (!ring) return true;
+  for (int y = 1; y < ny - 1; ++y) {
+    const std::uint8_t* __restrict c = cells + static_cast<std::size_t>(y) * nx;
+    const std::uint8_t* __restrict b = blocked + static_cast<std::size_t>(y) * nx;
+    std::uint8_t diff = 0;
+    for (int x = 1; x < nx - 1; ++x) diff |= static_cast<std::uint8_t>((c[x] != 0) ^ b[x]);
+    if (diff) return true;
+  }
+  return false;
+}
+
+SPOTT_CLONES void SetBlocked(const std::uint8_t* cells, std::uint8_t* blocked, std::uint8_t* kind,
+                             int nx, int ny) {
+  const std::size_t n = static_cast<std::size_t>(nx) * ny;
+  for (int y = 1; y < ny - 1; ++y) {
+    const std::uint8_t* __restrict c = cells + static_cast<std::size_t>(y) * nx;
+    std::uint8_t* __restrict b = blocked + static_cast<std::size_t>(y) * nx;
+    std::uint8_t* __restrict k = kind + static_cast<std::size_t>(y) * nx;
+    for (int x = 1; x < nx - 1; ++x) {
+      const std::uint8_t v = c[x] != 0;
+      b[x] = v;
+      k[x] = static_cast<std::uint8_t>(3 - 2 * v);
+    }
+    b[0] = b[nx - 1] = 1;
+    k[0] = k[nx - 1] = 1;
+  }
+  for (int x = 0; x < nx; ++x) {
+    blocked[x] = blocked[n - nx + x] = 1;
+    kind[x] = kind[n - nx + x] = 1;
+  }
+}
+
+SPOTT_CLONES void Fine5(const std::uint8_t* mask, const std::uint8_t* mask_up, float* d, float* e,
+                        float* n, int len) {
+  Fine5T(mask, mask_up, d, e, n, len);
+}
+SPOTT_CLONES void Fine5(const std::uint8_t* mask, const std::uint8_t* mask_up, double* d, double* e,
+                        double* n, int len) {
+  Fine5T(mask, mask_up, d, e, n, len);
+}
+SPOTT_CLONES void GalerkinX(const float* d, const float* e, const float* n, const float* ne,
+                            const float* nw, float* bd, float* be, float* bn, float* bne,
+                            float* bnw, int count) {
+  GalerkinXT(d, e, n, ne, nw, bd, be, bn, bne, bnw, count);
+}
+SPOTT_CLONES void GalerkinX(const double* d, const double* e, const double* n, const double* ne,
+                            const double* nw, double* bd, double* be, double* bn, double* bne,
+                            double* bnw, int count) {
+  GalerkinXT(d, e, n, ne, nw, bd, be, bn, bne, bnw, count);
+}
+SPOTT_CLONES void GalerkinY(const GalerkinRows& b, float* diag, float* inv_diag, float* e, float* n,
+                            float* ne, float* nw, int count) {
+  GalerkinYT<float>(b, diag, inv_diag, e, n, ne, nw, count);
+}
+SPOTT_CLONES void GalerkinY(const GalerkinRowsD& b, double* diag, double* inv_diag, double* e,
+                            double* n, double* ne, double* nw, int count) {
+  GalerkinYT<double>(b, diag, inv_diag, e, n, ne, nw, count);
+}
+#undef SPOTT_KERNELS
+
+SPOTT_CLONES void FirstSweep5(float* u, const float* f, const float* mask, int nx, const Run* runs,
+                              std::size_t count, float* tmp) {
+  FirstSweep5T(u, f, mask, nx, runs, count, tmp);
+}
+
+namespace {
+
+template <bool kNine, typename T>
+inline double Mean(const T* row, const T* up, const T* down, int k) {
+  if constexpr (kNine) {
+    return 0.2 * ((static_cast<double>(row[k - 1]) + row[k + 1]) +
+                  (static_cast<double>(down[k]) + up[k])) +
+           0.05 * ((static_cast<double>(down[k - 1]) + down[k + 1]) +
+                   (static_cast<double>(up[k - 1]) + up[k + 1]));
+  } else {
+    return 0.25 * ((static_cast<double>(row[k - 1]) + row[k + 1]) +
+                   (static_cast<double>(down[k]) + up[k]));
+  }
+}
+
+// max |r| and max |r| / u without a division per cell: track the largest ratio seen.
+constexpr int kLanes = 8;
+
+// body(k, lane) for k in [0, len): blocks of kLanes with lane = k % kLanes (the partial
+// results of a reduction are per lane).
+template <typename Body>
+inline void ForLanes(int len, Body&& body) {
+  int k = 0;
+  for (; k + kLanes <= len; k += kLanes) {
+    for (int j = 0; j < kLanes; ++j) body(k + j, j);
+  }
+  for (int j = 0; k < len; ++k, ++j) body(k, j);
+}
+
+inline double MaxOf(const double* v) {
+  double m = v[0];
+  for (int j = 1; j < kLanes; ++j) m = v[j] > m ? v[j] : m;
+  return m;
+}
+inline double SumOf(const double* v) {
+  double s = 0.0;
+  for (int j = 0; j < kLanes; ++j) s += v[j];
+  return s;
+}
+
+// |r| / u, infinite where u <= 0 and r != 0 (infinitely wrong relative to the cell's value);
+// branch-free selects, so the loops around it vectorize.
+inline double Relative(double a, double u) {
+  constexpr double kInf = __builtin_inf();
+  const double safe = u > 0.0 ? u : 1.0;
+  const double ratio = a / safe;
+  const double big = a > 0.0 ? kInf : 0.0;
+  return u > 0.0 ? ratio : big;
+}
+
+template <bool kNine>
+inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const Run* runs,
+                           std::size_t count) {
+  double wa[kLanes] = {}, wr[kLanes] = {};
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const double* __restrict row = u + base;
+    const double* __restrict up = row + nx;
+    const double* __restrict down = row - nx;
+    double* __restrict rr = r + base;
+    float* __restrict rf = rs + base;
+    ForLanes(run.x1 - run.x0, [&](int k, int j) {
+      const double v = Mean<kNine>(row, up, down, k) - row[k];
+      rr[k] = v;
+      rf[k] = static_cast<float>(v);
+      const double a = v < 0 ? -v : v;
+      const double rel = Relative(a, row[k]);
+      wa[j] = a > wa[j] ? a : wa[j];
+      wr[j] = rel > wr[j] ? rel : wr[j];
+    });
+  }
+  return {MaxOf(wa), MaxOf(wr)};
+}
+
+template <bool kNine>
+inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_t count) {
+  double wa[kLanes] = {}, wr[kLanes] = {};
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const double* __restrict row = u + base;
+    const double* __restrict up = row + nx;
+    const double* __restrict down = row - nx;
+    ForLanes(run.x1 - run.x0, [&](int k, int j) {
+      const double v = Mean<kNine>(row, up, down, k) - row[k];
+      const double a = v < 0 ? -v : v;
+      const double rel = Relative(a, row[k]);
+      wa[j] = a > wa[j] ? a : wa[j];
+      wr[j] = rel > wr[j] ? rel : wr[j];
+    });
+  }
+  return {MaxOf(wa), MaxOf(wr)};
+}
+
+template <bool kNine>
+inline void RegularT(const std::uint8_t* active, std::uint8_t* regular, int nx, const Run* runs,
+                     std::size_t count) {
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const std::uint8_t* __restrict a = active + base;
+    const std::uint8_t* __restrict up = a + nx;
+    const std::uint8_t* __restrict down = a - nx;
+    std::uint8_t* __restrict out = regular + base;
+    const int len = run.x1 - run.x0;
+    for (int k = 0; k < len; ++k) {
+      std::uint8_t v = a[k - 1] & a[k + 1] & up[k] & down[k];
+      if constexpr (kNine) v &= up[k - 1] & up[k + 1] & down[k - 1] & down[k + 1];
+      out[k] = v;
+    }
+  }
+}
+
+template <bool kNine>
+inline double DirectionT(const float* z, double* d, double* q, double beta, int nx, const Run* runs,
+                         std::size_t count) {
+  double dq[kLanes] = {};
+  for (std::size_t c = 0; c < count; ++c) {
+    const Run& run = runs[c];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const float* __restrict row = z + base;
+    const float* __restrict up = row + nx;
+    const float* __restrict down = row - nx;
+    double* __restrict dd = d + base;
+    double* __restrict qq = q + base;
+    ForLanes(run.x1 - run.x0, [&](int k, int j) {
+      const double az = static_cast<double>(row[k]) - Mean<kNine>(row, up, down, k);
+      const double dn = static_cast<double>(row[k]) + beta * dd[k];
+      const double qn = az + beta * qq[k];
+      dd[k] = dn;
+      qq[k] = qn;
+      dq[j] += dn * qn;
+    });
+  }
+  return SumOf(dq);
+}
+
+inline Norms UpdateT(double* u, const double* d, double* r, const double* q, float* rs,
+                     double alpha, int nx, const Run* runs, std::size_t count) {
+  double wa[kLanes] = {}, wr[kLanes] = {};
+  for (std::size_t c = 0; c < count; ++c) {
+    const Run& run = runs[c];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    double* __restrict uu = u + base;
+    const double* __restrict dd = d + base;
+    double* __restrict rr = r + base;
+    const double* __restrict qq = q + base;
+    float* __restrict rf = rs + base;
+    ForLanes(run.x1 - run.x0, [&](int k, int j) {
+      const double un = uu[k] + alpha * dd[k];
+      const double rn = rr[k] - alpha * qq[k];
+      uu[k] = un;
+      rr[k] = rn;
+      rf[k] = static_cast<float>(rn);
+      const double a = rn < 0 ? -rn : rn;
+      const double rel = Relative(a, un);
+      wa[j] = a > wa[j] ? a : wa[j];
+      wr[j] = rel > wr[j] ? rel : wr[j];
+    });
+  }
+  return {MaxOf(wa), MaxOf(wr)};
+}
+
+inline void DotsT(const double* r, const float* z, const float* z_old, int nx, const Run* runs,
+                  std::size_t count, double* rz, double* rz_old) {
+  double a[kLanes] = {}, b[kLanes] = {};
+  for (std::size_t c = 0; c < count; ++c) {
+    const Run& run = runs[c];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const double* __restrict rr = r + base;
+    const float* __restrict zz = z + base;
+    const float* __restrict zo = z_old + base;
+    ForLanes(run.x1 - run.x0, [&](int k, int j) {
+      a[j] += rr[k] * static_cast<double>(zz[k]);
+      b[j] += rr[k] * static_cast<double>(zo[k]);
+    });
+  }
+  *rz = SumOf(a);
+  *rz_old = SumOf(b);
+}
+
+}  // namespace
+
+SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
+                                std::size_t count, bool nine) {
+  return nine ? TrueResidualT<true>(u, r, rs, nx, runs, count)
+              : TrueResidualT<false>(u, r, rs, nx, runs, count);
+}
+
+SPOTT_CLONES Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count,
+                                 bool nine) {
+  return nine ? ResidualNormsT<true>(u, nx, runs, count)
+              : ResidualNormsT<false>(u, nx, runs, count);
+}
+
+SPOTT_CLONES void Regular(const std::uint8_t* active, std::uint8_t* regular, int nx,
+                          const Run* runs, std::size_t count, bool nine) {
+  nine ? RegularT<true>(active, regular, nx, runs, count)
+       : RegularT<false>(active, regular, nx, runs, count);
+}
+
+SPOTT_CLONES double Direction(const float* z, double* d, double* q, double beta, int nx,
+                              const Run* runs, std::size_t count, bool nine) {
+  return nine ? DirectionT<true>(z, d, q, beta, nx, runs, count)
+              : DirectionT<false>(z, d, q, beta, nx, runs, count);
+}
+
+SPOTT_CLONES Norms Update(double* u, const double* d, double* r, const double* q, float* rs,
+                          double alpha, int nx, const Run* runs, std::size_t count) {
+  return UpdateT(u, d, r, q, rs, alpha, nx, runs, count);
+}
+
+SPOTT_CLONES void Dots(const double* r, const float* z, const float* z_old, int nx, const Run* runs,
+                       std::size_t count, double* rz, double* rz_old) {
+  DotsT(r, z, z_old, nx, runs, count, rz, rz_old);
+}
+
+}  // namespace spott_harmonic_planner::internal::kernels

@@ -1,0 +1,198 @@
+#include "spott_harmonic_planner/navigate_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "spott_harmonic_planner/contact_memory.h"
+
+namespace spott_harmonic_planner {
+namespace {
+
+GlobalAnswer Planned(const std::string& summary) {
+  GlobalAnswer a;
+  a.state = GlobalAnswer::State::kPlanned;
+  a.path_summary = summary;
+  return a;
+}
+
+TEST(NavigateSession, PlansUntilThePoseAndTheGlobalPlannersAnswerAreThereInAnyOrder) {
+  NavigateSession s({}, 0.0);
+  s.Update(0.1);
+  EXPECT_EQ(s.phase(), NavigatePhase::kPlanning);
+  EXPECT_NE(s.note().find("pose"), std::string::npos);
+  s.ProjectionArrived();  // the projection before the status and the pose
+  s.Answer(Planned("hall_e -> d_lab_e -> lab"));
+  s.Update(0.2);
+  EXPECT_EQ(s.phase(), NavigatePhase::kPlanning);
+  s.PoseAvailable();
+  s.Update(0.3);
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+  EXPECT_EQ(s.path_summary(), "hall_e -> d_lab_e -> lab");
+}
+
+TEST(NavigateSession, WaitsForTheProjectionAfterThePlan) {
+  NavigateSession s({}, 0.0);
+  s.PoseAvailable();
+  s.Answer(Planned("room"));
+  s.Update(0.1);
+  EXPECT_EQ(s.phase(), NavigatePhase::kPlanning);
+  EXPECT_NE(s.note().find("projected goal"), std::string::npos);
+  s.ProjectionArrived();
+  s.Update(0.2);
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+}
+
+TEST(NavigateSession, WithoutAGlobalPlannerThePoseIsEnough) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.05);
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+}
+
+TEST(NavigateSession, NoPoseInTimeFailsSayingWhatWasMissing) {
+  NavigateSessionParameters p;
+  p.planning_timeout_s = 5.0;
+  NavigateSession s(p, 10.0);
+  s.Update(14.9);
+  EXPECT_FALSE(s.finished());
+  s.Update(15.1);
+  ASSERT_TRUE(s.finished());
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kFailed);
+  EXPECT_NE(s.reason().find("robot's pose"), std::string::npos) << s.reason();
+}
+
+TEST(NavigateSession, AFailedGlobalPlanIsUnreachableAtOnceWithItsReason) {
+  NavigateSession s({}, 0.0);
+  GlobalAnswer a;
+  a.state = GlobalAnswer::State::kFailed;
+  a.message = "no path from node 'hall_w' to node 'office_102': doors d_102 are closed";
+  s.Answer(a);
+  ASSERT_TRUE(s.finished());
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
+  EXPECT_EQ(s.reason(), a.message);
+}
+
+TEST(NavigateSession, ARefusedGoalFails) {
+  NavigateSession s({}, 0.0);
+  GlobalAnswer a;
+  a.state = GlobalAnswer::State::kRefused;
+  a.message = "goal (50, 50) is outside every room";
+  s.Answer(a);
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kFailed);
+  EXPECT_NE(s.reason().find("outside every room"), std::string::npos);
+}
+
+TEST(NavigateSession, EscapingAndWideningAreRecoveringEpisodes) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.0);
+  s.Steered(true, true, false, "escaping the padding of an obstacle");
+  EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
+  EXPECT_NE(s.note().find("escaping"), std::string::npos);
+  s.Steered(true, true, false, "");  // the same episode
+  s.Steered(true, false, false, "");
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+  s.Steered(true, false, true, "");
+  EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
+  EXPECT_EQ(s.recoveries(), 2);
+}
+
+TEST(NavigateSession, NoDescentForUnreachableCyclesIsUnreachable) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  p.unreachable_cycles = 3;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.0);
+  s.Steered(false, false, false, "the goal lies in a padded obstacle");
+  s.Steered(false, false, false, "the goal lies in a padded obstacle");
+  s.Steered(true, false, false, "");  // a good cycle resets the count
+  s.Steered(false, false, false, "x");
+  s.Steered(false, false, false, "x");
+  EXPECT_FALSE(s.finished());
+  s.Steered(false, false, false, "the goal lies in a padded obstacle");
+  ASSERT_TRUE(s.finished());
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
+  EXPECT_EQ(s.reason(), "the goal lies in a padded obstacle");
+}
+
+TEST(NavigateSession, AFrontContactBacksOffItsDistanceThenDrivesOn) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  p.backoff_distance_m = 0.25;
+  p.backoff_speed_mps = 0.1;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.0);
+  s.Contact(0.3, spott_map::Pose2{1.0, 1.0, 0.0});
+  EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
+  ASSERT_TRUE(s.backing_off());
+  EXPECT_DOUBLE_EQ(*s.BackOff(spott_map::Pose2{0.9, 1.0, 0.0}), -0.1);
+  EXPECT_FALSE(s.BackOff(spott_map::Pose2{0.74, 1.0, 0.0}));
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+  // A rear contact backs off forwards.
+  s.Contact(3.0, spott_map::Pose2{0.74, 1.0, 0.0});
+  EXPECT_DOUBLE_EQ(*s.BackOff(spott_map::Pose2{0.74, 1.0, 0.0}), 0.1);
+  EXPECT_EQ(s.contacts(), 2);
+}
+
+TEST(NavigateSession, ArrivesWithinHalfTheToleranceOrWhenNoLongerGettingCloser) {
+  NavigateSessionParameters p;
+  p.arrival_stall_s = 2.0;
+  NavigateSession s(p, 0.0);
+  EXPECT_FALSE(s.Arrived(0.18, 0.2, 0.0));  // inside the tolerance, still closing in
+  EXPECT_FALSE(s.Arrived(0.15, 0.2, 1.0));
+  EXPECT_TRUE(s.Arrived(0.09, 0.2, 1.5));
+  NavigateSession stuck(p, 0.0);
+  EXPECT_FALSE(stuck.Arrived(0.15, 0.2, 0.0));
+  EXPECT_FALSE(stuck.Arrived(0.15, 0.2, 1.9));
+  EXPECT_TRUE(stuck.Arrived(0.15, 0.2, 2.1));  // the padding keeps it there: arrived
+  EXPECT_FALSE(stuck.Arrived(0.3, 0.2, 5.0));
+}
+
+TEST(ContactMemory, RemembersContactsOnTheBodyAndForgetsThemLater) {
+  ContactMemory m(10.0, 0.1);
+  // Robot at (1, 2) facing +y, radius 0.2, contact dead ahead: disc centre 0.25 m ahead.
+  m.Add(spott_map::Pose2{1.0, 2.0, M_PI / 2}, 0.2, 0.0, 0.0);
+  ASSERT_EQ(m.size(), 1u);
+  const auto f = m.Features();
+  EXPECT_NEAR(f[0].pose.x, 1.0, 1e-12);
+  EXPECT_NEAR(f[0].pose.y, 2.25, 1e-12);
+  EXPECT_EQ(f[0].label, "contact");
+  m.Add(spott_map::Pose2{1.0, 2.02, M_PI / 2}, 0.2, 0.0, 5.0);  // the same contact, renewed
+  EXPECT_EQ(m.size(), 1u);
+  EXPECT_FALSE(m.Expire(14.0));
+  EXPECT_TRUE(m.Expire(15.5));
+  EXPECT_EQ(m.size(), 0u);
+}
+
+// Hand-computed: the robot at (1, 0), the bias point at the origin.
+TEST(DirectionBias, RecomputedBiasesFollowTheRobotsPosition) {
+  DirectionBias b;
+  EXPECT_FALSE(b.HeadingAt(Vec2(1, 0)));  // a heading bias without a heading: none
+  b.heading = 0.5;
+  EXPECT_NEAR(*b.HeadingAt(Vec2(1, 0)), 0.5, 1e-12);
+  b.kind = DirectionBias::Kind::kToward;  // `to`: toward the point, west
+  EXPECT_NEAR(std::abs(*b.HeadingAt(Vec2(1, 0))), M_PI, 1e-12);
+  EXPECT_NEAR(*b.HeadingAt(Vec2(0, 2)), -M_PI / 2, 1e-12);  // from (0, 2): south
+  b.kind = DirectionBias::Kind::kAway;                      // `away-from`: east
+  EXPECT_NEAR(*b.HeadingAt(Vec2(1, 0)), 0.0, 1e-12);
+  b.kind = DirectionBias::Kind::kVia;  // `via`: toward it until within the radius
+  b.radius = 0.5;
+  EXPECT_NEAR(std::abs(*b.HeadingAt(Vec2(1, 0))), M_PI, 1e-12);
+  EXPECT_FALSE(b.HeadingAt(Vec2(0.4, 0)));
+  b.kind = DirectionBias::Kind::kAround;  // tangent: counter-clockwise from (1, 0) is north
+  b.sense = 1.0;
+  EXPECT_NEAR(*b.HeadingAt(Vec2(1, 0)), M_PI / 2, 1e-12);
+  b.sense = -1.0;  // clockwise: south
+  EXPECT_NEAR(*b.HeadingAt(Vec2(1, 0)), -M_PI / 2, 1e-12);
+  EXPECT_NEAR(std::abs(*b.HeadingAt(Vec2(0, 1))), 0.0, 1e-12);  // clockwise at the top: east
+}
+
+}  // namespace
+}  // namespace spott_harmonic_planner
