@@ -233,8 +233,16 @@ PlanResult GlobalPlanner::Search(int start_room, int goal_room, const Vec2& star
 
 void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& sides,
                             PlanResult& result) {
+  const std::vector<char> reached = ReachedNodes(start_room);
+  AddClosedBorderDoors(reached, result);
+  AddBlockedBorderPassages(reached, result);
+  AddBlockedEnds(start_room, goal_room, sides, reached, result);
+  result.disconnected = !JoinedWithAllOpen(start_room, goal_room);
+  result.message = NoPathMessage(start_room, goal_room, result);
+}
+
+std::vector<char> GlobalPlanner::ReachedNodes(int start_room) const {
   // What the failed search reached: a node is reached when any of its states was settled.
-  const int start_state = 2 * graph_.door_count();
   std::vector<char> reached(static_cast<std::size_t>(graph_.room_count()), 0);
   reached[start_room] = 1;
   for (int d = 0; d < graph_.door_count(); ++d) {
@@ -245,13 +253,21 @@ void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& s
   for (int r = 0; r < graph_.room_count(); ++r) {
     if (room_closed_[r] == stamp_) reached[r] = 1;
   }
-  // Closed doors on the border of the reached region.
+  return reached;
+}
+
+void GlobalPlanner::AddClosedBorderDoors(const std::vector<char>& reached,
+                                         PlanResult& result) const {
   for (int d = 0; d < graph_.door_count(); ++d) {
     const auto [a, b] = graph_.DoorRooms(d);
     if (!graph_.DoorPassable(d) && reached[a] != reached[b]) {
       result.closed_doors.push_back(graph_.door(d).id);
     }
   }
+}
+
+void GlobalPlanner::AddBlockedBorderPassages(const std::vector<char>& reached,
+                                             PlanResult& result) const {
   // Blocked passages leaving a reached state towards a node that was not reached.
   for (int r = 0; r < graph_.room_count(); ++r) {
     if (!reached[r] || !graph_.HasBlockedPassages(r)) continue;
@@ -271,7 +287,10 @@ void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& s
       if (a_to_b || b_to_a) result.blocked_passages.push_back(p);
     }
   }
-  (void)start_state;
+}
+
+void GlobalPlanner::AddBlockedEnds(int start_room, int goal_room, const PassageSides& sides,
+                                   const std::vector<char>& reached, PlanResult& result) const {
   // Obstacles inside the start or goal node that cut the robot or the goal off from doors.
   const auto far_of = [&](int d, int r) {
     const auto [a, b] = graph_.DoorRooms(d);
@@ -298,6 +317,9 @@ void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& s
   if (start_room == goal_room && !sides.start_reaches_goal_inside) {
     result.blocked_passages.push_back(BlockedPassage{graph_.room(start_room).id, kRobot, kGoal});
   }
+}
+
+bool GlobalPlanner::JoinedWithAllOpen(int start_room, int goal_room) const {
   // Would the graph join the nodes with every door open and every passage free?
   std::vector<char> seen(static_cast<std::size_t>(graph_.room_count()), 0);
   std::vector<int> stack{start_room};
@@ -312,44 +334,47 @@ void GlobalPlanner::Explain(int start_room, int goal_room, const PassageSides& s
       }
     }
   }
-  result.disconnected = !seen[goal_room];
+  return seen[goal_room] != 0;
+}
 
+std::string GlobalPlanner::NoPathMessage(int start_room, int goal_room,
+                                         const PlanResult& result) const {
   std::ostringstream msg;
   msg << "no path from node '" << graph_.room(start_room).id << "' to node '"
       << graph_.room(goal_room).id << "'";
   if (result.disconnected) {
     msg << ": the graph has no sequence of doors between them";
-  } else {
-    std::vector<std::string> causes;
-    if (!result.closed_doors.empty()) {
-      std::string text = result.closed_doors.size() == 1 ? "door " : "doors ";
-      for (std::size_t i = 0; i < result.closed_doors.size() && i < kMaxCausesNamed; ++i) {
-        text += (i ? ", " : "") + result.closed_doors[i];
-      }
-      if (result.closed_doors.size() > kMaxCausesNamed) {
-        text += " and " + std::to_string(result.closed_doors.size() - kMaxCausesNamed) + " more";
-      }
-      text += result.closed_doors.size() == 1 ? " is closed" : " are closed";
-      causes.push_back(text);
-    }
-    for (std::size_t i = 0; i < result.blocked_passages.size() && i < kMaxCausesNamed; ++i) {
-      const BlockedPassage& p = result.blocked_passages[i];
-      const auto name = [](const std::string& end) {
-        return end == kRobot || end == kGoal ? "the " + end : "door " + end;
-      };
-      const bool doors = name(p.door_a)[0] == 'd' && name(p.door_b)[0] == 'd';
-      causes.push_back("node '" + p.room + "' is blocked between " +
-                       (doors ? "doors " + p.door_a + " and " + p.door_b
-                              : name(p.door_a) + " and " + name(p.door_b)));
-    }
-    if (result.blocked_passages.size() > kMaxCausesNamed) {
-      causes.push_back(std::to_string(result.blocked_passages.size() - kMaxCausesNamed) +
-                       " more blocked passages");
-    }
-    msg << ": ";
-    for (std::size_t i = 0; i < causes.size(); ++i) msg << (i ? "; " : "") << causes[i];
+    return msg.str();
   }
-  result.message = msg.str();
+  std::vector<std::string> causes;
+  if (!result.closed_doors.empty()) {
+    std::string text = result.closed_doors.size() == 1 ? "door " : "doors ";
+    for (std::size_t i = 0; i < result.closed_doors.size() && i < kMaxCausesNamed; ++i) {
+      text += (i ? ", " : "") + result.closed_doors[i];
+    }
+    if (result.closed_doors.size() > kMaxCausesNamed) {
+      text += " and " + std::to_string(result.closed_doors.size() - kMaxCausesNamed) + " more";
+    }
+    text += result.closed_doors.size() == 1 ? " is closed" : " are closed";
+    causes.push_back(text);
+  }
+  for (std::size_t i = 0; i < result.blocked_passages.size() && i < kMaxCausesNamed; ++i) {
+    const BlockedPassage& p = result.blocked_passages[i];
+    const auto name = [](const std::string& end) {
+      return end == kRobot || end == kGoal ? "the " + end : "door " + end;
+    };
+    const bool doors = name(p.door_a)[0] == 'd' && name(p.door_b)[0] == 'd';
+    causes.push_back("node '" + p.room + "' is blocked between " +
+                     (doors ? "doors " + p.door_a + " and " + p.door_b
+                            : name(p.door_a) + " and " + name(p.door_b)));
+  }
+  if (result.blocked_passages.size() > kMaxCausesNamed) {
+    causes.push_back(std::to_string(result.blocked_passages.size() - kMaxCausesNamed) +
+                     " more blocked passages");
+  }
+  msg << ": ";
+  for (std::size_t i = 0; i < causes.size(); ++i) msg << (i ? "; " : "") << causes[i];
+  return msg.str();
 }
 
 }  // namespace spott_global_planner

@@ -46,12 +46,8 @@ std::vector<std::string> ValidateParameters(const WindowParameters& p) {
 }
 
 Box WindowAround(const Vec2& centre, double size_m, double resolution_m) {
-  const double n = std::max(1.0, std::round(size_m / resolution_m));
-  const double side = n * resolution_m;
-  const Vec2 corner = centre - Vec2(0.5 * side, 0.5 * side);
-  const Vec2 origin(std::round(corner.x() / resolution_m) * resolution_m,
-                    std::round(corner.y() / resolution_m) * resolution_m);
-  return Box{origin, origin + Vec2(side, side)};
+  const int cells = std::max(1, static_cast<int>(std::lround(size_m / resolution_m)));
+  return spott_map::LatticeWindow(centre, cells, resolution_m);
 }
 
 double SideToHold(const Vec2& centre, const spott_map::Polygon& polygon, double resolution_m) {

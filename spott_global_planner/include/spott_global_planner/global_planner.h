@@ -109,7 +109,16 @@ class GlobalPlanner {
  private:
   PlanResult Search(int start_room, int goal_room, const Vec2& start, const Vec2& goal,
                     const PassageSides& sides);
+  // Why a search failed (closed doors, blocked passages on the border of what it reached, the
+  // robot or the goal cut off inside its node, no doors at all), into `result`.
   void Explain(int start_room, int goal_room, const PassageSides& sides, PlanResult& result);
+  std::vector<char> ReachedNodes(int start_room) const;
+  void AddClosedBorderDoors(const std::vector<char>& reached, PlanResult& result) const;
+  void AddBlockedBorderPassages(const std::vector<char>& reached, PlanResult& result) const;
+  void AddBlockedEnds(int start_room, int goal_room, const PassageSides& sides,
+                      const std::vector<char>& reached, PlanResult& result) const;
+  bool JoinedWithAllOpen(int start_room, int goal_room) const;
+  std::string NoPathMessage(int start_room, int goal_room, const PlanResult& result) const;
   void EnsureScratch();
 
   PlanningGraph graph_;

@@ -26,8 +26,8 @@ struct WindowParameters {
 /// Every violated constraint, naming its parameter ("window_size_m must be > 0 (got -1)").
 std::vector<std::string> ValidateParameters(const WindowParameters& p);
 
-/// The square of side `size_m` centred on `centre`, its corner snapped to the lattice of
-/// `resolution_m` (as spott_map::LocalMap::Recentre does).
+/// The square of side `size_m` (rounded to whole cells) centred on `centre`, snapped to the
+/// lattice of `resolution_m` by spott_map::LatticeWindow, as the local map is.
 spott_map::Box WindowAround(const spott_map::Vec2& centre, double size_m, double resolution_m);
 
 /// The smallest side, a whole number of cells, of a window centred on `centre` that holds

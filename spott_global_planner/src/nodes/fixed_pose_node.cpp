@@ -1,40 +1,50 @@
 // fixed_pose: broadcasts a fixed robot pose as the static transform parent -> child, for running
 // the global planner without localization or a simulator (demonstrations, screenshots). Debian's
 // tf2_ros has no static_transform_publisher.
-//   rosrun spott_global_planner fixed_pose _x:=1.1 _y:=1.1 _yaw:=0
-// Parameters: ~x, ~y (m), ~yaw (rad), ~parent_frame (map), ~child_frame (base_link).
+//   rosrun spott_global_planner fixed_pose _x_m:=1.1 _y_m:=1.1 _yaw_rad:=0
+// Parameters: ~x_m, ~y_m, ~yaw_rad, ~parent_frame (map), ~child_frame (base_link).
 #include <cmath>
+#include <string>
 
 #include <ros/ros.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
+#include "spott_ros/parameter_reader.h"
+#include "spott_ros/pose_conversions.h"
+
+namespace {
+
+struct FixedPose {
+  double x_m = 0.0, y_m = 0.0, yaw_rad = 0.0;
+  std::string parent_frame = "map", child_frame = "base_link";
+};
+
+void Read(spott_ros::ParameterReader& r, FixedPose& p) {
+  r.Get("x_m", p.x_m, "m");
+  r.Get("y_m", p.y_m, "m");
+  r.Get("yaw_rad", p.yaw_rad, "rad");
+  r.Get("parent_frame", p.parent_frame);
+  r.Get("child_frame", p.child_frame);
+  r.Require(std::isfinite(p.x_m), "x_m", "finite", p.x_m);
+  r.Require(std::isfinite(p.y_m), "y_m", "finite", p.y_m);
+  r.Require(std::isfinite(p.yaw_rad), "yaw_rad", "finite", p.yaw_rad);
+  if (p.parent_frame.empty()) r.Fail("parent_frame must not be empty");
+  if (p.child_frame.empty()) r.Fail("child_frame must not be empty");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   ros::init(argc, argv, "fixed_pose");
   ros::NodeHandle pnh("~");
-  double x = 0.0, y = 0.0, yaw = 0.0;
-  std::string parent = "map", child = "base_link";
-  pnh.param("x", x, x);
-  pnh.param("y", y, y);
-  pnh.param("yaw", yaw, yaw);
-  pnh.param("parent_frame", parent, parent);
-  pnh.param("child_frame", child, child);
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw) || parent.empty() ||
-      child.empty()) {
-    ROS_FATAL("fixed_pose: ~x, ~y, ~yaw must be finite and the frames non-empty");
-    return 1;
-  }
+  const auto p = spott_ros::ReadNodeParameters<FixedPose>(pnh, "fixed_pose", Read);
+  if (!p) return 1;
   tf2_ros::StaticTransformBroadcaster broadcaster;
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = ros::Time::now();
-  t.header.frame_id = parent;
-  t.child_frame_id = child;
-  t.transform.translation.x = x;
-  t.transform.translation.y = y;
-  t.transform.rotation.z = std::sin(0.5 * yaw);
-  t.transform.rotation.w = std::cos(0.5 * yaw);
-  broadcaster.sendTransform(t);
-  ROS_INFO("fixed_pose: %s -> %s at (%.2f, %.2f, %.2f rad)", parent.c_str(), child.c_str(), x, y,
-           yaw);
+  broadcaster.sendTransform(
+      spott_ros::ToTransform(spott_ros::MakePose2D(p->x_m, p->y_m, p->yaw_rad), p->parent_frame,
+                             p->child_frame, ros::Time::now()));
+  ROS_INFO("fixed_pose: %s -> %s at (%.2f, %.2f, %.2f rad)", p->parent_frame.c_str(),
+           p->child_frame.c_str(), p->x_m, p->y_m, p->yaw_rad);
   ros::spin();
   return 0;
 }

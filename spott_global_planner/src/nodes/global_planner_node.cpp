@@ -4,13 +4,15 @@
 //
 // Subscribes: room_door_graph (spott_msgs/RoomDoorGraph, latched by the map's owner),
 // map_updates (door states), map_features (for blocked passages), global_goal
-// (geometry_msgs/PointStamped), local_window (geometry_msgs/PolygonStamped, the harmonic
-// planner's window, optional). Reads tf frame_id -> robot_frame.
-// Publishes (latched): global_path, projected_goal, global_plan_status, global_planner_markers.
+// (spott_msgs/GlobalGoal, from the Navigate server only), local_window
+// (geometry_msgs/PolygonStamped, the harmonic planner's window, optional). Reads tf
+// frame_id -> robot_frame.
+// Publishes (latched): global_path, projected_goal, global_plan_status (each carrying the
+// goal_id of the GlobalGoal they answer, re-sent for every new goal id), global_planner_markers.
 // Service: ~plan_global_path (spott_msgs/PlanGlobalPath). See the package README.
-#include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PolygonStamped.h>
 #include <ros/ros.h>
+#include <spott_msgs/GlobalGoal.h>
 #include <spott_msgs/GlobalPlanStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/MapUpdate.h>
@@ -24,6 +26,8 @@
 #include "spott_global_planner/ros/conversions.h"
 #include "spott_global_planner/ros/parameters.h"
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/parameter_reader.h"
+#include "spott_ros/robot_geometry.h"
 
 namespace spott_global_planner {
 namespace {
@@ -82,6 +86,13 @@ class GlobalPlannerNode {
                 msg.world.c_str(), error.c_str(), session_.has_graph() ? "last one" : "none");
       return;
     }
+    if (graph->rooms().empty() && session_.has_graph()) {
+      // A graph without rooms would leave nothing to plan in: keep the one we have.
+      ROS_ERROR_THROTTLE(10.0,
+                         "global_planner: refusing an empty room_door_graph (keeping the last "
+                         "one)");
+      return;
+    }
     const std::string structure = Structure(msg);
     if (session_.has_graph() && structure == structure_) {
       for (const spott_map::Door& d : graph->doors()) session_.SetDoorState(d.id, d.state);
@@ -124,27 +135,37 @@ class GlobalPlannerNode {
     Update();
   }
 
-  void OnGoal(const geometry_msgs::PointStamped& msg) {
+  // A new goal id is answered in full (status, path, projection), even when the target is the
+  // one of the last goal: the Navigate server waits for answers carrying its id.
+  void OnGoal(const spott_msgs::GlobalGoal& msg) {
+    if (msg.goal_id.empty()) {
+      session_.ClearGoal();
+      goal_id_.clear();
+      PublishStatus(spott_msgs::GlobalPlanStatus::NO_GOAL, "no goal", nullptr);
+      return;
+    }
+    goal_id_ = msg.goal_id;
+    answered_ = false;
     if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.frame_id) {
       RefuseGoal("goal is in frame '" + msg.header.frame_id + "', not '" + params_.frame_id +
                  "': goal refused");
       return;
     }
-    const PlanResult check = session_.SetGoal(map_conv::FromPoint(msg.point));
+    const PlanResult check = session_.SetGoal(map_conv::FromPoint(msg.target));
     if (check.error != PlanError::kNone) {
       RefuseGoal(check.message);
       return;
     }
-    ROS_INFO("global_planner: new goal (%.2f, %.2f)%s%s", msg.point.x, msg.point.y,
-             check.message.empty() ? "" : ": ", check.message.c_str());
+    ROS_INFO("global_planner: goal %s (%.2f, %.2f)%s%s", goal_id_.c_str(), msg.target.x,
+             msg.target.y, check.message.empty() ? "" : ": ", check.message.c_str());
     Update();
   }
 
   void RefuseGoal(const std::string& why) {
     ROS_WARN("global_planner: %s", why.c_str());
-    PublishStatus(
-        session_.goal() ? last_status_.state : std::uint8_t{spott_msgs::GlobalPlanStatus::NO_GOAL},
-        why + (session_.goal() ? " (the previous goal is kept)" : ""), nullptr);
+    session_.ClearGoal();  // the Navigate server ended the previous goal when it sent this one
+    answered_ = true;
+    PublishStatus(spott_msgs::GlobalPlanStatus::REFUSED, why, nullptr);
   }
 
   void OnLocalWindow(const geometry_msgs::PolygonStamped& msg) {
@@ -181,23 +202,32 @@ class GlobalPlannerNode {
     const spott_map::Vec2 robot(pose.transform.translation.x, pose.transform.translation.y);
     const SessionUpdate u = session_.Update(robot, local_window_ ? &*local_window_ : nullptr);
     const ros::Time now = ros::Time::now();
+    const bool answer = !goal_id_.empty() && !answered_;  // a new goal id: send everything
+    answered_ = true;
     if (u.replanned) {
       ROS_INFO("global_planner: replanned (%zu so far): %s", u.replans,
                u.path ? "new path found" : "no path left");
     }
-    if (u.path_changed) {
-      path_pub_.publish(u.path ? conv::ToMsg(*u.path, params_.frame_id, now)
-                               : conv::ToMsg(GlobalPath{}, params_.frame_id, now));
+    if (u.path_changed || answer) {
+      spott_msgs::GlobalPath path = u.path ? conv::ToMsg(*u.path, params_.frame_id, now)
+                                           : conv::ToMsg(GlobalPath{}, params_.frame_id, now);
+      path.goal_id = goal_id_;
+      path_pub_.publish(path);
     }
-    if (u.projection && u.projection_changed) {
-      goal_pub_.publish(conv::ToMsg(*u.projection, params_.frame_id, now));
+    if (u.projection && (u.projection_changed || answer)) {
+      spott_msgs::ProjectedGoal projection = conv::ToMsg(*u.projection, params_.frame_id, now);
+      projection.goal_id = goal_id_;
+      goal_pub_.publish(projection);
     }
-    if (u.path_changed || u.projection_changed) {
+    if (u.path_changed || u.projection_changed || answer) {
       markers_pub_.publish(conv::ToMarkers(session_.planner().graph(), u.path ? &*u.path : nullptr,
                                            u.projection ? &*u.projection : nullptr,
                                            params_.frame_id, now));
     }
-    if (u.path_changed || u.replans != last_status_.replans) {
+    // A refusal stays the latched answer to its goal until the next goal.
+    const bool refused = last_status_.state == spott_msgs::GlobalPlanStatus::REFUSED &&
+                         last_status_.goal_id == goal_id_;
+    if (!refused && (u.path_changed || answer || u.replans != last_status_.replans)) {
       switch (u.state) {
         case SessionState::kNoGoal:
           PublishStatus(spott_msgs::GlobalPlanStatus::NO_GOAL, "no goal", &u);
@@ -218,17 +248,16 @@ class GlobalPlannerNode {
     spott_msgs::GlobalPlanStatus s;
     s.header.frame_id = params_.frame_id;
     s.header.stamp = ros::Time::now();
+    s.goal_id = goal_id_;
     s.state = state;
     s.message = message;
+    if (u && u->path) s.path_summary = conv::PathSummary(*u->path);
     s.replans = u ? static_cast<std::uint32_t>(u->replans) : last_status_.replans;
     if (u && u->state == SessionState::kFailed) {
       s.closed_doors = u->failure.closed_doors;
       for (const BlockedPassage& p : u->failure.blocked_passages) {
         s.blocked_passages.push_back(p.room + ":" + p.door_a + ":" + p.door_b);
       }
-    } else if (!u) {
-      s.closed_doors = last_status_.closed_doors;
-      s.blocked_passages = last_status_.blocked_passages;
     }
     last_status_ = s;
     status_pub_.publish(s);
@@ -239,6 +268,8 @@ class GlobalPlannerNode {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   std::string structure_;
+  std::string goal_id_;   ///< Of the GlobalGoal being planned for; "" = none.
+  bool answered_ = true;  ///< Its status, path and projection went out.
   std::optional<spott_map::Box> local_window_;
   spott_msgs::GlobalPlanStatus last_status_;
   ros::Publisher path_pub_, goal_pub_, status_pub_, markers_pub_;
@@ -254,14 +285,23 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "global_planner");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
-  spott_global_planner::ros_parameters::NodeParameters params;
-  XmlRpc::XmlRpcValue values;  // stays invalid (all defaults) when nothing is set
-  nh.getParam(ros::this_node::getName(), values);
-  const auto violations = spott_global_planner::ros_parameters::ReadParameters(values, params);
+  using spott_global_planner::ros_parameters::NodeParameters;
+  spott_ros::ParameterReader reader = spott_ros::ParameterReader::FromNode(pnh);
+  NodeParameters params;
+  spott_global_planner::ros_parameters::ReadParameters(reader, params);
+  std::string error;
+  const auto radius = spott_ros::FootprintRadiusFromParameter(nh, params.robot_description,
+                                                              params.robot_frame, &error);
+  if (!radius) reader.Fail("robot_description: " + error);
+  params.core.passage.padding_m = radius.value_or(0.0) + params.max_localization_error_m;
+  spott_global_planner::ros_parameters::ValidateCore(reader, params);
+  const auto violations = reader.Finish();
   if (!violations.empty()) {
-    for (const auto& v : violations) ROS_FATAL("global_planner: %s", v.c_str());
+    for (const auto& v : violations) ROS_FATAL("global_planner: parameter %s", v.c_str());
     return 1;
   }
+  ROS_INFO("global_planner: passage padding %.4f m (robot radius %.4f + localization error %.3f)",
+           params.core.passage.padding_m, *radius, params.max_localization_error_m);
   spott_global_planner::GlobalPlannerNode node(nh, pnh, params);
   ros::spin();
   return 0;

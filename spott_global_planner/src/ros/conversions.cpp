@@ -40,6 +40,15 @@ spott_msgs::GlobalPath ToMsg(const GlobalPath& path, const std::string& frame_id
   return msg;
 }
 
+std::string PathSummary(const GlobalPath& path) {
+  std::string text;
+  for (std::size_t i = 0; i < path.rooms.size(); ++i) {
+    text += (i == 0 ? "" : " -> ") + path.rooms[i];
+    if (i < path.doors.size()) text += " -> " + path.doors[i];
+  }
+  return text;
+}
+
 geometry_msgs::Polygon WindowToPolygon(const spott_map::Box& w) {
   geometry_msgs::Polygon poly;
   const Vec2 corners[4] = {w.min, Vec2(w.max.x(), w.min.y()), w.max, Vec2(w.min.x(), w.max.y())};

@@ -5,11 +5,11 @@
 // as a map update blocks a passage through the hallway; bad requests (and a malformed graph) are
 // refused and the node keeps its goal and graph; the window the local planner publishes on
 // local_window is the one the goal is projected onto.
-#include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PolygonStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <spott_msgs/Door.h>
+#include <spott_msgs/GlobalGoal.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/GlobalPlanStatus.h>
 #include <spott_msgs/MapUpdate.h>
@@ -19,6 +19,8 @@
 #include <spott_msgs/SetDoorState.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
+#include "spott_ros/testing/node_process.h"
+
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -27,27 +29,7 @@ namespace {
 
 using Ids = std::vector<std::string>;
 
-template <class Msg>
-class Latest {
- public:
-  Latest(ros::NodeHandle& nh, const std::string& topic)
-      : sub_(nh.subscribe(topic, 10, &Latest::On, this)) {}
-  bool WaitFor(const std::function<bool(const Msg&)>& ok, double seconds = 15.0) {
-    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-    while (ros::ok() && ros::WallTime::now() < end) {
-      ros::spinOnce();
-      if (msg_ && ok(*msg_)) return true;
-      ros::WallDuration(0.01).sleep();
-    }
-    return false;
-  }
-  const std::optional<Msg>& msg() const { return msg_; }
-
- private:
-  void On(const Msg& m) { msg_ = m; }
-  ros::Subscriber sub_;
-  std::optional<Msg> msg_;
-};
+using spott_ros::testing::Latest;
 
 class GlobalPlannerTest : public ::testing::Test {
  protected:
@@ -55,7 +37,7 @@ class GlobalPlannerTest : public ::testing::Test {
     ASSERT_TRUE(ros::service::waitForService("/world_server/set_door_state", ros::Duration(30)));
     ASSERT_TRUE(
         ros::service::waitForService("/global_planner/plan_global_path", ros::Duration(30)));
-    goal_pub_ = nh_.advertise<geometry_msgs::PointStamped>("global_goal", 1, true);
+    goal_pub_ = nh_.advertise<spott_msgs::GlobalGoal>("global_goal", 1, true);
     updates_pub_ = nh_.advertise<spott_msgs::MapUpdate>("map_updates", 10);
     // Publishers connect before anything is sent.
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
@@ -65,13 +47,17 @@ class GlobalPlannerTest : public ::testing::Test {
     }
   }
 
-  void SendGoal(double x, double y, const std::string& frame = "map") {
-    geometry_msgs::PointStamped g;
+  // Sends a goal as the Navigate server does, with a new id; returns the id.
+  std::string SendGoal(double x, double y, const std::string& frame = "map") {
+    static int count = 0;
+    spott_msgs::GlobalGoal g;
     g.header.frame_id = frame;
     g.header.stamp = ros::Time::now();
-    g.point.x = x;
-    g.point.y = y;
+    g.goal_id = "goal_" + std::to_string(++count);
+    g.target.x = x;
+    g.target.y = y;
     goal_pub_.publish(g);
+    return g.goal_id;
   }
 
   void SetDoor(const std::string& id, uint8_t state) {
@@ -94,10 +80,11 @@ TEST_F(GlobalPlannerTest, ReplansWhenDoorsCloseAndFailsNamingThemWhenNoPathIsLef
   Latest<spott_msgs::GlobalPath> path(nh_, "global_path");
   Latest<spott_msgs::ProjectedGoal> projected(nh_, "projected_goal");
   Latest<spott_msgs::GlobalPlanStatus> status(nh_, "global_plan_status");
-  SendGoal(11, 1);
+  const std::string id = SendGoal(11, 1);
 
-  // A-dAB-B-dBC-C, 8 m.
+  // A-dAB-B-dBC-C, 8 m; every answer names the goal it answers.
   ASSERT_TRUE(path.WaitFor([](const auto& p) { return p.doors == Ids{"dAB", "dBC"}; }));
+  EXPECT_EQ(path.msg()->goal_id, id);
   EXPECT_EQ(path.msg()->rooms, (Ids{"A", "B", "C"}));
   EXPECT_NEAR(path.msg()->cost, 8.0, 1e-9);
   // The modelled window: 7 m around (1.1,1.1) on the 0.2 m lattice, [-2.4,4.6]^2. dAB (x = 4)
@@ -105,6 +92,7 @@ TEST_F(GlobalPlannerTest, ReplansWhenDoorsCloseAndFailsNamingThemWhenNoPathIsLef
   // (6,2) and dBC's centre (8,2) crosses the border at (4.6,2); B holds y in [0,4] of that side.
   ASSERT_TRUE(projected.WaitFor([](const auto& g) { return g.edge_id == "dBC"; }));
   const auto& g = *projected.msg();
+  EXPECT_EQ(g.goal_id, id);
   EXPECT_EQ(g.projection_case, spott_msgs::ProjectedGoal::CASE_GENERAL);
   EXPECT_EQ(g.node_id, "B");
   EXPECT_TRUE(g.on_border);
@@ -113,6 +101,8 @@ TEST_F(GlobalPlannerTest, ReplansWhenDoorsCloseAndFailsNamingThemWhenNoPathIsLef
               (Near(g.border_start, 4.6, 4.0) && Near(g.border_end, 4.6, 0.0)));
   ASSERT_TRUE(status.WaitFor(
       [](const auto& s) { return s.state == spott_msgs::GlobalPlanStatus::PLANNED; }));
+  EXPECT_EQ(status.msg()->goal_id, id);
+  EXPECT_EQ(status.msg()->path_summary, "A -> dAB -> B -> dBC -> C");
 
   // dBC closes: A-dAH-H-dCH-C.
   SetDoor("dBC", spott_msgs::Door::CLOSED);
@@ -161,7 +151,7 @@ TEST_F(GlobalPlannerTest, ReplansWhenDoorsCloseAndFailsNamingThemWhenNoPathIsLef
       [](const auto& s) { return s.state == spott_msgs::GlobalPlanStatus::PLANNED; }));
 }
 
-TEST_F(GlobalPlannerTest, BadRequestsAreRefusedWithTheReasonAndTheGoalIsKept) {
+TEST_F(GlobalPlannerTest, BadRequestsAndGoalsAreRefusedWithTheReason) {
   spott_msgs::PlanGlobalPath srv;
   srv.request.start.x = 1.0;
   srv.request.start.y = 1.0;
@@ -180,17 +170,23 @@ TEST_F(GlobalPlannerTest, BadRequestsAreRefusedWithTheReasonAndTheGoalIsKept) {
 
   Latest<spott_msgs::GlobalPlanStatus> status(nh_, "global_plan_status");
   Latest<spott_msgs::GlobalPath> path(nh_, "global_path");
-  SendGoal(50, 50);
-  ASSERT_TRUE(status.WaitFor([](const auto& s) {
-    return s.message.find("outside every room") != std::string::npos &&
-           s.message.find("previous goal is kept") != std::string::npos;
+  const std::string outside = SendGoal(50, 50);
+  ASSERT_TRUE(status.WaitFor([&](const auto& s) {
+    return s.goal_id == outside && s.state == spott_msgs::GlobalPlanStatus::REFUSED &&
+           s.message.find("outside every room") != std::string::npos;
   })) << (status.msg() ? status.msg()->message : "no status");
-  SendGoal(2, 2, "odom");
-  ASSERT_TRUE(status.WaitFor(
-      [](const auto& s) { return s.message.find("frame 'odom'") != std::string::npos; }));
-  // Still planning to (11,1): the path of the first test stands.
-  ASSERT_TRUE(path.WaitFor([](const auto& p) { return !p.waypoints.empty(); }));
+  const std::string odom = SendGoal(2, 2, "odom");
+  ASSERT_TRUE(status.WaitFor([&](const auto& s) {
+    return s.goal_id == odom && s.state == spott_msgs::GlobalPlanStatus::REFUSED &&
+           s.message.find("frame 'odom'") != std::string::npos;
+  }));
+  // The same target as the first test under a new id is answered in full again.
+  const std::string again = SendGoal(11, 1);
+  ASSERT_TRUE(path.WaitFor([&](const auto& p) { return p.goal_id == again; }));
   EXPECT_TRUE(Near(path.msg()->waypoints.back(), 11.0, 1.0));
+  ASSERT_TRUE(status.WaitFor([&](const auto& s) {
+    return s.goal_id == again && s.state == spott_msgs::GlobalPlanStatus::PLANNED;
+  }));
 
   // A malformed graph (a door naming a room that does not exist) is refused; the node keeps its
   // graph and still plans.
@@ -236,6 +232,15 @@ TEST_F(GlobalPlannerTest, FollowsTheWindowTheLocalPlannerPublishes) {
   ASSERT_EQ(g.window.points.size(), 4u);
   EXPECT_FLOAT_EQ(g.window.points[0].x, -1.0f);
   EXPECT_FLOAT_EQ(g.window.points[2].y, 3.0f);
+}
+
+TEST(GlobalPlannerNode, AnUnknownOrMistypedParameterStopsTheNodeNamingIt) {
+  const auto run = spott_ros::testing::RunNode(
+      GLOBAL_PLANNER_EXE, "__name:=bad_global_planner _update_rate:=5.0 _window/fit_node:=3");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("~update_rate is not a parameter"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("~window/fit_node must be true or false"), std::string::npos)
+      << run.output;
 }
 
 }  // namespace

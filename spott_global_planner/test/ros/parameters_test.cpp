@@ -9,10 +9,17 @@ namespace {
 using XmlRpc::XmlRpcValue;
 using Strings = std::vector<std::string>;
 
+Strings Read(const XmlRpcValue& v, NodeParameters& p) {
+  spott_ros::ParameterReader r(v);
+  ReadParameters(r, p);
+  p.core.passage.padding_m = 0.2 + p.max_localization_error_m;
+  ValidateCore(r, p);
+  return r.Finish();
+}
+
 TEST(NodeParameters, NothingSetKeepsTheDefaults) {
-  XmlRpcValue none;
   NodeParameters p;
-  EXPECT_TRUE(ReadParameters(none, p).empty());
+  EXPECT_TRUE(Read(XmlRpcValue{}, p).empty());
   EXPECT_EQ(p.frame_id, "map");
   EXPECT_DOUBLE_EQ(p.core.window.window_size_m, 7.0);
 }
@@ -20,12 +27,12 @@ TEST(NodeParameters, NothingSetKeepsTheDefaults) {
 TEST(NodeParameters, NestedValuesAreRead) {
   XmlRpcValue v;
   v["algorithm"] = "astar";
-  v["update_rate"] = 10;  // an int is a number
+  v["update_rate_hz"] = 10;  // an int is a number
   v["window"]["window_size_m"] = 9.0;
   v["window"]["fit_node"] = true;
   v["passage"]["max_cells"] = 1000;
   NodeParameters p;
-  EXPECT_EQ(ReadParameters(v, p), Strings{});
+  EXPECT_EQ(Read(v, p), Strings{});
   EXPECT_EQ(p.core.algorithm, SearchAlgorithm::kAStar);
   EXPECT_DOUBLE_EQ(p.update_rate_hz, 10.0);
   EXPECT_DOUBLE_EQ(p.core.window.window_size_m, 9.0);
@@ -36,20 +43,20 @@ TEST(NodeParameters, NestedValuesAreRead) {
 TEST(NodeParameters, EveryViolationNamesItsParameter) {
   XmlRpcValue v;
   v["algorithm"] = "bfs";
-  v["update_rate"] = 0.0;
+  v["update_rate_hz"] = 0.0;
   v["frame_id"] = 3;
   v["window"]["window_size_m"] = -1.0;
   v["window"]["fit_node"] = "yes";
   v["window"]["size"] = 5.0;  // a typo of window_size_m
-  v["passage"]["padding_m"] = -0.5;
+  v["passage"]["max_localization_error_m"] = -0.5;
   NodeParameters p;
-  EXPECT_EQ(ReadParameters(v, p), (Strings{"~frame_id must be a string",
-                                           "~algorithm must be dijkstra or astar (got 'bfs')",
-                                           "~window/fit_node must be true or false",
-                                           "~window/size is not a parameter of global_planner",
-                                           "~update_rate must be in (0, 100] Hz (got 0)",
-                                           "~window/window_size_m must be > 0 (got -1)",
-                                           "~passage/padding_m must be >= 0 (got -0.5)"}));
+  EXPECT_EQ(Read(v, p), (Strings{"~frame_id must be a string, not an integer",
+                                 "~algorithm must be dijkstra or astar (got 'bfs')",
+                                 "~window/fit_node must be true or false, not a string",
+                                 "~update_rate_hz must be in (0, 100] (got 0)",
+                                 "~passage/max_localization_error_m must be >= 0 (got -0.5)",
+                                 "~window/window_size_m must be > 0 (got -1)",
+                                 "~window/size is not a parameter of this node"}));
 }
 
 }  // namespace

@@ -19,6 +19,9 @@ spott_msgs::GlobalPath ToMsg(const GlobalPath& path, const std::string& frame_id
 spott_msgs::ProjectedGoal ToMsg(const ProjectedGoal& goal, const std::string& frame_id,
                                 const ros::Time& stamp);
 
+/// Rooms and doors in order: "hall_e -> d_lab_e -> lab" ("" for an empty path).
+std::string PathSummary(const GlobalPath& path);
+
 /// The window b_pf as its four corners, counter-clockwise from min.
 geometry_msgs::Polygon WindowToPolygon(const spott_map::Box& window);
 /// The box spanned by a polygon's points; nullopt for an empty or non-finite polygon.

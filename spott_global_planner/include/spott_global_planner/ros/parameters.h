@@ -1,28 +1,32 @@
-// The global_planner node's parameters, read from its private namespace as one XmlRpc struct
-// (what `ros::NodeHandle("~").getParam("", value)` returns) so that the checks run without a
-// ROS master in tests.
+// The global_planner node's parameters (config/global_planner.yaml), read through spott_ros's
+// reader: wrong types, values out of range and unknown keys are refused, each named. The
+// robot's radius is not a parameter: the node takes it from the robot description.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include <xmlrpcpp/XmlRpcValue.h>
-
 #include "spott_global_planner/planning_session.h"
+#include "spott_ros/parameter_reader.h"
 
 namespace spott_global_planner::ros_parameters {
 
 struct NodeParameters {
   std::string frame_id = "map";           ///< frame of the graph, goals and outputs
-  std::string robot_frame = "base_link";  ///< pose = tf frame_id -> robot_frame
-  double update_rate_hz = 5.0;            ///< (0, 100]
-  bool follow_local_window = true;        ///< use the window received on local_window
-  GlobalPlannerParameters core;
+  std::string robot_frame = "base_link";  ///< pose = tf frame_id -> robot_frame; its URDF link
+  std::string robot_description = "robot_description";  ///< parameter holding the URDF
+  double update_rate_hz = 5.0;                          ///< (0, 100]
+  bool follow_local_window = true;                      ///< use the window received on local_window
+  /// Passage padding = robot radius (robot description) + this (m), >= 0.
+  double max_localization_error_m = 0.075;
+  GlobalPlannerParameters core;  ///< core.passage.padding_m is set by the node
 };
 
-/// Fills `p` from the private namespace `params` (a struct; missing names keep their defaults)
-/// and returns every violation, each naming its parameter ("~window/window_size_m must be > 0
-/// (got -1)"): wrong types, values out of range, and names that are no parameter of the node.
-std::vector<std::string> ReadParameters(XmlRpc::XmlRpcValue& params, NodeParameters& p);
+/// Fills `p` (missing keys keep their defaults) and records every violation in `r`, each named
+/// ("~window/window_size_m must be > 0 (got -1)").
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p);
+
+/// The core's checks once the padding is known.
+void ValidateCore(spott_ros::ParameterReader& r, const NodeParameters& p);
 
 }  // namespace spott_global_planner::ros_parameters
