@@ -1,0 +1,29 @@
+// cmd_vel_arbiter core types <-> ROS messages.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/Twist.h>
+#include <ros/time.h>
+#include <spott_msgs/ArbiterStatus.h>
+#include <spott_msgs/BumperRing.h>
+
+#include "cmd_vel_arbiter/arbiter.h"
+
+namespace cmd_vel_arbiter::ros_conversions {
+
+/// linear.x and angular.z; the components a planar base cannot follow (linear.y/z, angular.x/y)
+/// are dropped, and `*ignored` says so when one of them is not zero.
+Velocity FromTwist(const geometry_msgs::Twist& t, bool* ignored);
+geometry_msgs::Twist ToTwist(const Velocity& v);
+
+/// The angles (rad, base frame) of the pressed segments; nullopt with `error` when the arrays
+/// do not match or an angle of a pressed segment is not finite.
+std::optional<std::vector<double>> PressedAngles(const spott_msgs::BumperRing& ring,
+                                                 std::string* error);
+
+spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp);
+
+}  // namespace cmd_vel_arbiter::ros_conversions

@@ -1,0 +1,174 @@
+// cmd_vel_arbiter: the one node that publishes the robot's cmd_vel (see arbiter.h for the
+// rules). Glue only: reads and validates parameters, feeds the core from the sources' inputs,
+// the bumper and a timer, serves take/release/limits and publishes the status.
+//
+// Subscribes: cmd_vel/<source> (geometry_msgs/Twist) for every configured source, bumper
+// (spott_msgs/BumperRing). Publishes: cmd_vel (geometry_msgs/Twist), ~status
+// (spott_msgs/ArbiterStatus, latched). Services: ~take_wheels, ~release_wheels,
+// ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
+#include <ros/ros.h>
+#include <spott_msgs/ReleaseWheels.h>
+#include <spott_msgs/SetSpeedLimits.h>
+#include <spott_msgs/TakeWheels.h>
+
+#include <map>
+
+#include "cmd_vel_arbiter/ros/conversions.h"
+#include "spott_ros/parameter_reader.h"
+
+namespace cmd_vel_arbiter {
+namespace {
+
+namespace conv = ros_conversions;
+
+struct NodeParameters {
+  ArbiterParameters arbiter;
+  double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), (0, 1000].
+  double status_rate_hz = 2.0;   ///< Status also at this rate besides every change (Hz), [0, 100].
+};
+
+void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
+  for (const std::string& name : r.Keys("sources")) {
+    SourceParameters s;
+    s.name = name;
+    r.Get("sources/" + name + "/priority", s.priority);
+    r.Get("sources/" + name + "/timeout_s", s.timeout_s, "s");
+    p.arbiter.sources.push_back(s);
+  }
+  r.Get("limits/max_linear_mps", p.arbiter.max_linear_mps, "m/s");
+  r.Get("limits/max_angular_rps", p.arbiter.max_angular_rps, "rad/s");
+  r.Get("update_rate_hz", p.update_rate_hz, "Hz");
+  r.Get("status_rate_hz", p.status_rate_hz, "Hz");
+  for (const std::string& e : ValidateParameters(p.arbiter)) r.Fail(e);
+  r.Require(p.update_rate_hz > 0 && p.update_rate_hz <= 1000, "update_rate_hz", "in (0, 1000]",
+            p.update_rate_hz);
+  r.Require(p.status_rate_hz >= 0 && p.status_rate_hz <= 100, "status_rate_hz", "in [0, 100]",
+            p.status_rate_hz);
+}
+
+class ArbiterNode {
+ public:
+  ArbiterNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
+      : arbiter_(p.arbiter) {
+    cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
+    status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
+    const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+    for (const SourceParameters& s : p.arbiter.sources) {
+      const std::string name = s.name;
+      inputs_.push_back(nh.subscribe<geometry_msgs::Twist>(
+          "cmd_vel/" + name, 10,
+          [this, name](const geometry_msgs::Twist::ConstPtr& m) { OnCommand(name, *m); },
+          ros::VoidConstPtr(), hints));
+    }
+    bumper_sub_ = nh.subscribe("bumper", 10, &ArbiterNode::OnBumper, this, hints);
+    take_srv_ = pnh.advertiseService("take_wheels", &ArbiterNode::OnTake, this);
+    release_srv_ = pnh.advertiseService("release_wheels", &ArbiterNode::OnRelease, this);
+    limits_srv_ = pnh.advertiseService("set_speed_limits", &ArbiterNode::OnLimits, this);
+    update_timer_ =
+        nh.createTimer(ros::Duration(1.0 / p.update_rate_hz),
+                       [this](const ros::TimerEvent&) { Emit(arbiter_.Update(Now())); });
+    if (p.status_rate_hz > 0) {
+      status_timer_ = nh.createTimer(ros::Duration(1.0 / p.status_rate_hz),
+                                     [this](const ros::TimerEvent&) { PublishStatus(); });
+    }
+    PublishStatus();
+    std::string sources;
+    for (const SourceStatus& s : arbiter_.Sources())
+      sources += (sources.empty() ? "" : ", ") + s.name + " (" + std::to_string(s.priority) + ")";
+    ROS_INFO("cmd_vel_arbiter: sources by priority: %s; limits %.2f m/s, %.2f rad/s",
+             sources.c_str(), arbiter_.max_linear_mps(), arbiter_.max_angular_rps());
+  }
+
+ private:
+  static double Now() { return ros::Time::now().toSec(); }
+
+  void OnCommand(const std::string& source, const geometry_msgs::Twist& msg) {
+    bool ignored = false;
+    std::string refused;
+    const Output out = arbiter_.Command(source, conv::FromTwist(msg, &ignored), Now(), &refused);
+    if (!refused.empty()) {
+      ROS_WARN_THROTTLE(1.0, "cmd_vel_arbiter: refused a command of '%s': %s", source.c_str(),
+                        refused.c_str());
+    } else if (ignored) {
+      ROS_WARN_THROTTLE(10.0,
+                        "cmd_vel_arbiter: '%s' sends linear.y/z or angular.x/y, which a planar "
+                        "base ignores",
+                        source.c_str());
+    }
+    Emit(out);
+  }
+
+  void OnBumper(const spott_msgs::BumperRing& ring) {
+    std::string error;
+    const auto angles = conv::PressedAngles(ring, &error);
+    if (!angles) {
+      ROS_WARN_THROTTLE(1.0, "cmd_vel_arbiter: refused a bumper message: %s", error.c_str());
+      return;
+    }
+    Emit(arbiter_.SetContacts(*angles, Now()));
+  }
+
+  bool OnTake(spott_msgs::TakeWheels::Request& req, spott_msgs::TakeWheels::Response& res) {
+    Output out;
+    res.success = arbiter_.Take(req.source, Now(), &res.message, &res.preempted, &out);
+    ROS_INFO("cmd_vel_arbiter: take_wheels: %s", res.message.c_str());
+    Emit(out);
+    return true;
+  }
+
+  bool OnRelease(spott_msgs::ReleaseWheels::Request& req,
+                 spott_msgs::ReleaseWheels::Response& res) {
+    Output out;
+    res.success = arbiter_.Release(req.source, Now(), &res.message, &out);
+    ROS_INFO("cmd_vel_arbiter: release_wheels: %s", res.message.c_str());
+    Emit(out);
+    return true;
+  }
+
+  bool OnLimits(spott_msgs::SetSpeedLimits::Request& req,
+                spott_msgs::SetSpeedLimits::Response& res) {
+    Output out;
+    res.success = arbiter_.SetSpeedLimits(req.max_linear_mps, req.max_angular_rps, req.reason,
+                                          &res.message, Now(), &out);
+    if (res.success) {
+      ROS_INFO("cmd_vel_arbiter: set_speed_limits (%s): %s", req.reason.c_str(),
+               res.message.c_str());
+    } else {
+      ROS_WARN("cmd_vel_arbiter: set_speed_limits refused: %s", res.message.c_str());
+    }
+    Emit(out);
+    return true;
+  }
+
+  void Emit(const Output& out) {
+    if (out.publish) cmd_pub_.publish(conv::ToTwist(out.command));
+    if (arbiter_.revision() != published_revision_) PublishStatus();
+  }
+
+  void PublishStatus() {
+    published_revision_ = arbiter_.revision();
+    status_pub_.publish(conv::ToStatus(arbiter_, ros::Time::now()));
+  }
+
+  Arbiter arbiter_;
+  std::uint64_t published_revision_ = ~std::uint64_t{0};
+  ros::Publisher cmd_pub_, status_pub_;
+  std::vector<ros::Subscriber> inputs_;
+  ros::Subscriber bumper_sub_;
+  ros::ServiceServer take_srv_, release_srv_, limits_srv_;
+  ros::Timer update_timer_, status_timer_;
+};
+
+}  // namespace
+}  // namespace cmd_vel_arbiter
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "cmd_vel_arbiter");
+  ros::NodeHandle nh, pnh("~");
+  const auto params = spott_ros::ReadNodeParameters<cmd_vel_arbiter::NodeParameters>(
+      pnh, "cmd_vel_arbiter", cmd_vel_arbiter::Read);
+  if (!params) return 1;
+  cmd_vel_arbiter::ArbiterNode node(nh, pnh, *params);
+  ros::spin();
+  return 0;
+}

@@ -1,0 +1,62 @@
+#include "cmd_vel_arbiter/ros/conversions.h"
+
+#include <cmath>
+
+namespace cmd_vel_arbiter::ros_conversions {
+
+Velocity FromTwist(const geometry_msgs::Twist& t, bool* ignored) {
+  *ignored = t.linear.y != 0.0 || t.linear.z != 0.0 || t.angular.x != 0.0 || t.angular.y != 0.0;
+  return Velocity{t.linear.x, t.angular.z};
+}
+
+geometry_msgs::Twist ToTwist(const Velocity& v) {
+  geometry_msgs::Twist t;
+  t.linear.x = v.linear_mps;
+  t.angular.z = v.angular_rps;
+  return t;
+}
+
+std::optional<std::vector<double>> PressedAngles(const spott_msgs::BumperRing& ring,
+                                                 std::string* error) {
+  if (ring.pressed.size() != ring.segment_angles.size()) {
+    *error = "bumper: " + std::to_string(ring.pressed.size()) + " pressed flags but " +
+             std::to_string(ring.segment_angles.size()) + " segment_angles";
+    return std::nullopt;
+  }
+  std::vector<double> angles;
+  for (std::size_t i = 0; i < ring.pressed.size(); ++i) {
+    if (!ring.pressed[i]) continue;
+    if (!std::isfinite(ring.segment_angles[i])) {
+      *error = "bumper: segment_angles[" + std::to_string(i) + "] is not finite";
+      return std::nullopt;
+    }
+    angles.push_back(ring.segment_angles[i]);
+  }
+  return angles;
+}
+
+spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp) {
+  spott_msgs::ArbiterStatus s;
+  s.header.stamp = stamp;
+  s.driver = arbiter.driver();
+  s.exclusive_holder = arbiter.exclusive_holder();
+  for (const SourceStatus& src : arbiter.Sources()) {
+    spott_msgs::ArbiterSource m;
+    m.name = src.name;
+    m.priority = src.priority;
+    m.state = static_cast<std::uint8_t>(src.state);
+    m.exclusive = src.exclusive;
+    m.commands = src.commands;
+    m.refused = src.refused;
+    s.sources.push_back(m);
+  }
+  s.max_linear_mps = arbiter.max_linear_mps();
+  s.max_angular_rps = arbiter.max_angular_rps();
+  s.limits_reason = arbiter.limits_reason();
+  s.bumper_stop = arbiter.bumper_stop();
+  s.bumper_stops = arbiter.bumper_stops();
+  s.refused = arbiter.refused();
+  return s;
+}
+
+}  // namespace cmd_vel_arbiter::ros_conversions
