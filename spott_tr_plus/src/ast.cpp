@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "spott_text/lexemes.h"
 #include "spott_tr_plus/value.h"
 
 namespace spott_tr_plus {
@@ -18,6 +19,19 @@ int ConditionDecl::NumInputs() const {
 
 int ConditionDecl::NumOutputs() const { return static_cast<int>(params.size()) - NumInputs(); }
 
+bool OutputsOmitted(const CondExpr& atom, const ConditionDecl& decl) {
+  return decl.NumOutputs() > 0 && static_cast<int>(atom.args.size()) == decl.NumInputs();
+}
+
+const Arg* ArgForParam(const CondExpr& atom, const ConditionDecl& decl, size_t k) {
+  if (k >= decl.params.size()) return nullptr;
+  if (!OutputsOmitted(atom, decl)) return k < atom.args.size() ? &atom.args[k] : nullptr;
+  if (decl.params[k].is_output) return nullptr;
+  size_t input = 0;  // the k-th parameter is the input-th input
+  for (size_t j = 0; j < k; ++j) input += decl.params[j].is_output ? 0 : 1;
+  return input < atom.args.size() ? &atom.args[input] : nullptr;
+}
+
 namespace {
 
 std::string FormatNumber(double v) {
@@ -27,19 +41,6 @@ std::string FormatNumber(double v) {
   return s;
 }
 
-std::string QuoteString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
-
 }  // namespace
 
 std::string ValueToString(const Value& value) {
@@ -47,7 +48,7 @@ std::string ValueToString(const Value& value) {
     std::string operator()(std::monostate) const { return "nil"; }
     std::string operator()(bool b) const { return b ? "true" : "false"; }
     std::string operator()(double d) const { return FormatNumber(d); }
-    std::string operator()(const std::string& s) const { return QuoteString(s); }
+    std::string operator()(const std::string& s) const { return spott_text::QuoteString(s); }
     std::string operator()(const std::vector<double>& v) const {
       std::string s = "[";
       for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + FormatNumber(v[i]);
@@ -62,7 +63,7 @@ std::string Arg::ToString() const {
     case Kind::kNumber:
       return FormatNumber(number);
     case Kind::kString:
-      return QuoteString(text);
+      return spott_text::QuoteString(text);
     case Kind::kVariable:
       return text;
   }

@@ -35,15 +35,38 @@ struct Process {
   uint64_t demand_pass = 0;  ///< Last scan pass that demanded the value.
   uint64_t computed_pass = 0;
   uint64_t computed_call = 0;  ///< Scan() call of the last asynchronous start.
+  /// Made for the inputs a dynamic atom read (outputs to its left): dropped once no atom
+  /// reads it, so changing values (poses, room ids) do not pile up processes.
+  bool transient = false;
+};
+
+/// Where an input of an atom comes from: a constant (a literal or a program parameter) or an
+/// output of an atom to its left in a sequential AND (SPOTT Fig. 13: "find a new room", then
+/// "in that room").
+struct InputSource {
+  Value constant;
+  int node = -1;  ///< >= 0: the atom whose output it reads
+  int out = -1;   ///< that atom's output index
 };
 
 /// One compiled condition node of a frame; atoms point at their process.
 struct CNode {
   CondOp op = CondOp::kTrue;
   double timeout_s = -1.0;
-  Process* proc = nullptr;
+  Process* proc = nullptr;  ///< Null for a dynamic atom not evaluated yet.
   const CondExpr* expr = nullptr;
   int a = -1, b = -1;
+  /// Atoms whose inputs read outputs bound to their left: the process (one per input values)
+  /// is looked up again each time the atom is evaluated.
+  bool dynamic = false;
+  std::vector<InputSource> sources;
+};
+
+/// An output variable of a rule's condition: atom `node`'s output `out`.
+struct Binding {
+  std::string var;
+  int node = -1;
+  int out = -1;
 };
 
 struct Frame;
@@ -60,7 +83,9 @@ struct Run {
   int owner_frame = -1;  ///< Root only: the frame and rule that started it.
   int rule = -1;
   bool ballistic = false;
+  std::vector<Value> args;           ///< Primitive action or call: the arguments it started with.
   uint64_t done_call = 0;            ///< Root only: the Scan() call in which it completed.
+  uint64_t started_call = 0;         ///< Root only: the Scan() call in which it started.
   std::map<std::string, Value> env;  ///< Root only: variables bound when the action started.
 };
 
@@ -73,12 +98,17 @@ struct Frame {
   int caller_frame = -1;
   Run* caller_run = nullptr;  ///< The call leaf this frame completes.
   std::vector<CNode> nodes;
-  std::vector<int> roots;  ///< Per rule: root node of its condition.
+  std::vector<int> roots;                      ///< Per rule: root node of its condition.
+  std::vector<std::vector<Binding>> bindings;  ///< Per rule: its condition's output variables.
+  /// Per rule: indices into bindings[rule] of the variables its action reads (a change of
+  /// their values restarts a sustained action with the new values).
+  std::vector<std::vector<int>> watched;
   std::vector<char> values, prev_values, armed;
   int firing = -1;
   std::unique_ptr<Run> energized;
   int energized_rule = -1;
   std::vector<std::unique_ptr<Run>> ballistic;
+  bool dynamic = false;  ///< Some atom's process follows the outputs to its left.
 };
 
 Value ArgValue(const Arg& a, const std::map<std::string, Value>& env) {
@@ -121,17 +151,29 @@ struct Interpreter::Impl {
   std::vector<Process*> demanded;
   std::vector<int> completed_frames;
   std::vector<int> scan_ids;
+  /// Per program and rule: the variables its action reads.
+  std::vector<std::vector<std::set<std::string>>> action_vars;
+  /// While an action is replaced, released processes are forgotten only after the new action
+  /// has started, so the conditions both actions' subroutines read keep their values.
+  int hold_releases = 0;
+  std::vector<Process*> held;
+  std::vector<std::string> garbage;  ///< Keys of forgotten transient processes.
+
+  /// What a leaf of a new action takes over from the action it replaces: a running primitive
+  /// action (its ticket) or a called subroutine's frame, possibly at its goal (`done`).
+  struct Adopted {
+    std::string action;  ///< the primitive action's name
+    Ticket ticket = 0;
+    int callee = -1;
+    bool done = false;
+  };
+  std::map<const Run*, Adopted> adoptions;
 
   // --- Frames ---------------------------------------------------------------------------------
 
-  Process* GetProcess(const CondExpr& atom, const std::map<std::string, Value>& env) {
-    const ConditionDecl* d = file.FindCondition(atom.name);
-    std::vector<Value> inputs;
-    std::string key = atom.name;
-    for (size_t k = 0; k < atom.args.size() && k < d->params.size(); ++k) {
-      if (d->params[k].is_output) continue;
-      inputs.push_back(ArgValue(atom.args[k], env));
-    }
+  // The process of condition `d` with these input values (one per declared input).
+  Process* GetProcess(const ConditionDecl* d, std::vector<Value> inputs) {
+    std::string key = d->name;
     if (!inputs.empty()) {
       key += "(";
       for (size_t k = 0; k < inputs.size(); ++k) key += (k ? ", " : "") + ValueToString(inputs[k]);
@@ -152,26 +194,81 @@ struct Interpreter::Impl {
     return slot.get();
   }
 
-  int Compile(Frame& f, const CondExpr& c) {
+  // Compiles condition c of a rule into f's nodes, left to right; `bindings` collects the
+  // rule's output variables as they are bound (the checker made sure that an input reading one
+  // is to its right across a sequential AND).
+  int Compile(Frame& f, const CondExpr& c, std::vector<Binding>& bindings) {
     CNode n;
     n.op = c.op;
     n.timeout_s = c.timeout_s;
     n.expr = &c;
-    if (c.op == CondOp::kAtom) {
-      n.proc = GetProcess(c, f.params);
-      ++n.proc->refs;
-    }
     const int index = static_cast<int>(f.nodes.size());
+    if (c.op == CondOp::kAtom) {
+      const ConditionDecl* d = file.FindCondition(c.name);
+      std::vector<Value> constants;
+      int out = 0;
+      for (size_t k = 0; k < d->params.size(); ++k) {
+        const Arg* arg = ArgForParam(c, *d, k);
+        if (d->params[k].is_output) {
+          if (arg) bindings.push_back(Binding{arg->text, index, out});
+          ++out;
+          continue;
+        }
+        InputSource src;
+        if (arg && arg->kind == Arg::Kind::kVariable && !f.params.count(arg->text)) {
+          for (auto b = bindings.rbegin(); b != bindings.rend(); ++b) {
+            if (b->var == arg->text && b->node != index) {
+              src.node = b->node;
+              src.out = b->out;
+              n.dynamic = true;
+              break;
+            }
+          }
+        } else if (arg) {
+          src.constant = ArgValue(*arg, f.params);
+        }
+        constants.push_back(src.constant);
+        n.sources.push_back(std::move(src));
+      }
+      if (n.dynamic) {
+        f.dynamic = true;
+      } else {
+        n.sources.clear();
+        n.proc = GetProcess(d, std::move(constants));
+        ++n.proc->refs;
+      }
+    }
     f.nodes.push_back(n);
     if (!c.children.empty()) {
-      const int a = Compile(f, c.children[0]);
+      const int a = Compile(f, c.children[0], bindings);
       f.nodes[index].a = a;
     }
     if (c.children.size() > 1) {
-      const int b = Compile(f, c.children[1]);
+      const int b = Compile(f, c.children[1], bindings);
       f.nodes[index].b = b;
     }
     return index;
+  }
+
+  // A dynamic atom: the process for the input values its sources hold now.
+  void Rebind(Frame& f, CNode& n) {
+    std::vector<Value> inputs;
+    inputs.reserve(n.sources.size());
+    for (const InputSource& s : n.sources) {
+      if (s.node < 0) {
+        inputs.push_back(s.constant);
+      } else {
+        const Process* from = f.nodes[s.node].proc;
+        inputs.push_back(from ? from->outputs[s.out] : Value{});
+      }
+    }
+    if (n.proc && n.proc->inputs == inputs) return;
+    const size_t before = processes.size();
+    Process* next = GetProcess(file.FindCondition(n.expr->name), std::move(inputs));
+    if (processes.size() != before) next->transient = true;
+    ++next->refs;
+    if (n.proc) ReleaseProcess(n.proc);
+    n.proc = next;  // read at once by the caller (Read computes it when due)
   }
 
   Frame* NewFrame(int program, std::vector<Value> args, int caller, Run* caller_run, int depth) {
@@ -187,7 +284,15 @@ struct Interpreter::Impl {
     f->depth = depth;
     const size_t m = p.rules.size();
     f->roots.reserve(m);
-    for (const Rule& r : p.rules) f->roots.push_back(Compile(*f, r.condition));
+    f->bindings.resize(m);
+    f->watched.resize(m);
+    for (size_t i = 0; i < m; ++i) {
+      f->roots.push_back(Compile(*f, p.rules[i].condition, f->bindings[i]));
+      const std::set<std::string>& reads = action_vars[program][i];
+      for (size_t k = 0; k < f->bindings[i].size(); ++k) {
+        if (reads.count(f->bindings[i][k].var)) f->watched[i].push_back(static_cast<int>(k));
+      }
+    }
     f->values.assign(m, 0);
     f->prev_values.assign(m, 0);
     f->armed.assign(m, 0);
@@ -200,7 +305,24 @@ struct Interpreter::Impl {
   void ReleaseProcess(Process* p) {
     if (--p->refs > 0) return;
     if (p->binding && p->binding->kind == Registry::ConditionKind::kExternal) return;
-    // Deactivated: stop computing and forget the value.
+    if (hold_releases > 0) {
+      held.push_back(p);
+      return;
+    }
+    Forget(p);
+  }
+
+  void FlushReleases() {
+    std::vector<Process*> ps;
+    ps.swap(held);
+    for (Process* p : ps) {
+      if (p->refs == 0) Forget(p);
+    }
+  }
+
+  // Deactivated: stop computing and forget the value.
+  void Forget(Process* p) {
+    if (p->transient) garbage.push_back(p->key);
     if (p->ticket) condition_tickets.erase(p->ticket);
     p->ticket = 0;
     p->computing = false;
@@ -220,8 +342,9 @@ struct Interpreter::Impl {
     f.energized.reset();
     for (auto& r : f.ballistic) Cancel(r.get());
     f.ballistic.clear();
-    for (const CNode& n : f.nodes) {
+    for (CNode& n : f.nodes) {
       if (n.proc) ReleaseProcess(n.proc);
+      n.proc = nullptr;
     }
     frames.erase(id);
     dirty = true;
@@ -267,6 +390,13 @@ struct Interpreter::Impl {
         std::vector<Value> args;
         args.reserve(a.args.size());
         for (const Arg& arg : a.args) args.push_back(ArgValue(arg, env));
+        r->args = args;
+        auto adopted = adoptions.find(r);
+        if (adopted != adoptions.end()) {
+          const Adopted taken = adopted->second;
+          adoptions.erase(adopted);
+          if (Adopt(r, taken)) return;
+        }
         if (a.is_call) {
           if (f.depth + 1 > options.max_call_depth) {
             r->done = true;  // Recursion guard: the call is refused (checker warned).
@@ -370,35 +500,147 @@ struct Interpreter::Impl {
   std::map<std::string, Value> RuleEnv(const Frame& f, int rule) const {
     std::map<std::string, Value> env = f.params;
     if (rule < 0) return env;
-    BindOutputs(f, f.roots[rule], env);
+    for (const Binding& b : f.bindings[rule]) env[b.var] = OutputValue(f, b);
     return env;
   }
 
-  void BindOutputs(const Frame& f, int node, std::map<std::string, Value>& env) const {
-    const CNode& n = f.nodes[node];
-    if (n.op == CondOp::kAtom) {
-      int out = 0;
-      const ConditionDecl* d = n.proc->decl;
-      for (size_t k = 0; k < d->params.size() && k < n.expr->args.size(); ++k) {
-        if (!d->params[k].is_output) continue;
-        env[n.expr->args[k].text] = n.proc->outputs[out++];
-      }
-      return;
-    }
-    if (n.a >= 0) BindOutputs(f, n.a, env);
-    if (n.b >= 0) BindOutputs(f, n.b, env);
+  static Value OutputValue(const Frame& f, const Binding& b) {
+    const Process* p = f.nodes[b.node].proc;
+    return p ? p->outputs[b.out] : Value{};
   }
 
-  std::unique_ptr<Run> StartRule(Frame& f, int rule, bool ballistic) {
+  // True when a variable the running action of `rule` reads has a new value.
+  bool BindingsChanged(const Frame& f, int rule, const Run& run) const {
+    for (int k : f.watched[rule]) {
+      const Binding& b = f.bindings[rule][k];
+      auto it = run.env.find(b.var);
+      if (it == run.env.end() || it->second != OutputValue(f, b)) return true;
+    }
+    return false;
+  }
+
+  std::unique_ptr<Run> PrepareRule(Frame& f, int rule, bool ballistic) {
     const Rule& r = file.programs[f.program].rules[rule];
     auto run = MakeRun(r.action, nullptr);
     run->owner_frame = f.id;
     run->rule = rule;
     run->ballistic = ballistic;
     run->env = RuleEnv(f, rule);
+    run->started_call = scan_calls;
+    return run;
+  }
+
+  std::unique_ptr<Run> StartRule(Frame& f, int rule, bool ballistic) {
+    auto run = PrepareRule(f, rule, ballistic);
     StartRun(run.get(), f, run->env);
     if (run->done) run->done_call = scan_calls;
     return run;
+  }
+
+  // Starts rule `rule`'s action in place of `old` (f's sustained action, or null). SPOTT
+  // III.C.1, footnote 11: the active conditions are those of the main program and of "the
+  // currently called set of subroutines"; a subroutine that the old and the new action both
+  // call (same arguments) stays in that set: it is handed to the new action, not torn down and
+  // restarted, and so are primitive actions both start at once with the same arguments. The
+  // rest of the old action is cancelled before the new one starts; conditions that both
+  // actions' subroutines read keep their values.
+  std::unique_ptr<Run> ReplaceAction(Frame& f, std::unique_ptr<Run> old, int rule, bool ballistic) {
+    auto run = PrepareRule(f, rule, ballistic);
+    if (old) Reserve(run.get(), run->env, old.get());
+    ++hold_releases;
+    Cancel(old.get());
+    old.reset();
+    StartRun(run.get(), f, run->env);
+    // Whatever was reserved and not taken (a refused call) is cancelled now.
+    for (const auto& [leaf, taken] : adoptions) Release(taken);
+    adoptions.clear();
+    --hold_releases;
+    FlushReleases();
+    if (run->done) run->done_call = scan_calls;
+    dirty = true;
+    return run;
+  }
+
+  // Reserves for the leaves that starting `r` starts at once (every branch of `||`, the first
+  // element of `>`) the matching live leaves of `old`.
+  void Reserve(Run* r, const std::map<std::string, Value>& env, Run* old) {
+    const ActExpr& a = *r->expr;
+    switch (a.op) {
+      case ActOp::kNil:
+        return;
+      case ActOp::kParallel:
+        for (auto& k : r->kids) Reserve(k.get(), env, old);
+        return;
+      case ActOp::kSequence:
+        if (!r->kids.empty()) Reserve(r->kids[0].get(), env, old);
+        return;
+      case ActOp::kInvoke:
+        break;
+    }
+    std::vector<Value> args;
+    for (const Arg& arg : a.args) args.push_back(ArgValue(arg, env));
+    Run* match = FindLiveLeaf(old, a, args);
+    if (!match) return;
+    Adopted taken;
+    taken.action = a.name;
+    taken.done = match->done;
+    taken.callee = match->callee;
+    if (!match->done) taken.ticket = match->ticket;
+    if (taken.ticket) action_tickets.erase(taken.ticket);
+    if (taken.callee >= 0) {
+      auto it = frames.find(taken.callee);
+      if (it != frames.end()) it->second->caller_run = nullptr;  // the old leaf is going away
+    }
+    match->ticket = 0;
+    match->callee = -1;
+    match->done = true;
+    adoptions[r] = taken;
+  }
+
+  static Run* FindLiveLeaf(Run* r, const ActExpr& want, const std::vector<Value>& args) {
+    const ActExpr& a = *r->expr;
+    if (a.op == ActOp::kInvoke) {
+      const bool live = a.is_call ? r->callee >= 0 : (!r->done && r->ticket != 0);
+      return live && a.is_call == want.is_call && a.name == want.name && r->args == args ? r
+                                                                                         : nullptr;
+    }
+    for (auto& k : r->kids) {
+      if (Run* m = FindLiveLeaf(k.get(), want, args)) return m;
+    }
+    return nullptr;
+  }
+
+  // Leaf r takes over what it adopted; false when there is nothing left to take (it is then
+  // started as usual).
+  bool Adopt(Run* r, const Adopted& taken) {
+    if (taken.callee >= 0) {
+      auto it = frames.find(taken.callee);
+      if (it == frames.end()) return false;
+      it->second->caller_run = r;
+      r->callee = taken.callee;
+      if (taken.done) {
+        // The subroutine's goal held: a monitoring call stays active; in a sequence or a
+        // ballistic action the call is complete and the subroutine leaves.
+        r->done = true;
+        if (!KeepsCalleeActive(r)) {
+          r->callee = -1;
+          Deactivate(taken.callee);
+        }
+      }
+      return true;
+    }
+    if (!taken.ticket) return false;
+    r->ticket = taken.ticket;
+    action_tickets[r->ticket] = r;
+    return true;
+  }
+
+  void Release(const Adopted& taken) {
+    if (taken.ticket) {
+      const auto* b = registry.FindAction(taken.action);
+      if (b && b->stop) b->stop(taken.ticket);
+    }
+    if (taken.callee >= 0) Deactivate(taken.callee);
   }
 
   // --- Conditions -----------------------------------------------------------------------------
@@ -441,14 +683,15 @@ struct Interpreter::Impl {
     return p->has_value && p->value;
   }
 
-  bool Eval(const Frame& f, int node, double& oldest) {
-    const CNode& n = f.nodes[node];
+  bool Eval(Frame& f, int node, double& oldest) {
+    CNode& n = f.nodes[node];
     switch (n.op) {
       case CondOp::kTrue:
         return true;
       case CondOp::kFalse:
         return false;
       case CondOp::kAtom:
+        if (n.dynamic) Rebind(f, n);
         return Read(n.proc, oldest);
       case CondOp::kNot:
         return !Eval(f, n.a, oldest);
@@ -551,33 +794,53 @@ struct Interpreter::Impl {
     const bool ballistic = ActionSemantics(file, rule) == Semantics::kBallistic;
     if (!ballistic) {
       if (f.energized_rule != r) {
-        Cancel(f.energized.get());
-        f.energized = StartRule(f, r, false);
+        f.energized = ReplaceAction(f, std::move(f.energized), r, false);
         f.energized_rule = r;
+      } else if (f.energized && !f.watched[r].empty() && BindingsChanged(f, r, *f.energized)) {
+        // The action follows its condition's outputs: restarted with their new values (what
+        // both the old and the new binding run goes on, ReplaceAction). At most once per
+        // Scan() call, so outputs that change on every computation cannot spin the scan: a
+        // change pushed re-entrantly during the call that started the action is taken at the
+        // next event.
+        if (f.energized->started_call < scan_calls) {
+          f.energized = ReplaceAction(f, std::move(f.energized), r, false);
+        }
       } else if (f.energized && f.energized->done && f.energized->done_call < scan_calls &&
                  !HasLiveCallee(f.energized.get())) {
         f.energized = StartRule(f, r, false);  // sustained: restarted at a later scan
       }
       return;
     }
-    if (f.energized) {
-      Cancel(f.energized.get());
-      f.energized.reset();
-      f.energized_rule = -1;
-      dirty = true;
-    }
+    bool start = false;
     if (f.armed[r]) {
       f.armed[r] = 0;
-      bool running = false;
-      for (const auto& b : f.ballistic) running = running || b->rule == r;
-      if (!running) {
-        auto run = StartRule(f, r, true);
-        if (!run->done) f.ballistic.push_back(std::move(run));
+      start = true;
+      for (const auto& b : f.ballistic) start = start && b->rule != r;
+    }
+    if (start) {
+      auto run = ReplaceAction(f, std::move(f.energized), r, true);
+      if (!run->done) f.ballistic.push_back(std::move(run));
+    } else if (f.energized) {
+      Cancel(f.energized.get());
+      dirty = true;
+    }
+    f.energized.reset();
+    f.energized_rule = -1;
+  }
+
+  // Drops forgotten transient processes; called where no pointer to a process is held.
+  void Sweep() {
+    for (const std::string& key : garbage) {
+      auto it = processes.find(key);
+      if (it != processes.end() && it->second->refs == 0 && !it->second->ticket) {
+        processes.erase(it);
       }
     }
+    garbage.clear();
   }
 
   void DoScan(double t) {
+    if (!in_scan) Sweep();
     now = t;
     ++scan_calls;
     in_scan = true;
@@ -668,6 +931,23 @@ std::unique_ptr<Interpreter> Interpreter::Create(const ProgramFile& file, const 
   impl.options = options;
   impl.main_name = main->name;
   impl.main_program = impl.file.ProgramIndex(main->name);
+  for (const Program& p : impl.file.programs) {
+    std::vector<std::set<std::string>> rules;
+    for (const Rule& r : p.rules) {
+      std::set<std::string> vars;
+      std::vector<const ActExpr*> stack{&r.action};
+      while (!stack.empty()) {
+        const ActExpr* a = stack.back();
+        stack.pop_back();
+        for (const Arg& arg : a->args) {
+          if (arg.kind == Arg::Kind::kVariable) vars.insert(arg.text);
+        }
+        for (const ActExpr& k : a->children) stack.push_back(&k);
+      }
+      rules.push_back(std::move(vars));
+    }
+    impl.action_vars.push_back(std::move(rules));
+  }
   return in;
 }
 
@@ -709,22 +989,7 @@ bool Interpreter::SetCondition(const std::string& name, bool value, double now,
   const auto* b = m.registry.FindCondition(name);
   if (!b || b->kind != Registry::ConditionKind::kExternal) return false;
   if (static_cast<int>(inputs.size()) != d->NumInputs()) return false;
-  CondExpr atom;
-  atom.op = CondOp::kAtom;
-  atom.name = name;
-  // Build the process key from the inputs, as GetProcess does for a compiled atom.
-  std::map<std::string, Value> env;
-  size_t in = 0;
-  for (const ConditionParam& p : d->params) {
-    Arg a;
-    a.kind = Arg::Kind::kVariable;
-    if (!p.is_output) {
-      a.text = "#" + std::to_string(in);
-      env[a.text] = inputs[in++];
-    }
-    atom.args.push_back(a);
-  }
-  Process* p = m.GetProcess(atom, env);
+  Process* p = m.GetProcess(d, std::move(inputs));
   outputs.resize(p->outputs.size());
   const bool changed = !p->has_value || p->value != value || p->outputs != outputs;
   p->value = value;

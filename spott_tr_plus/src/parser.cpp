@@ -1,19 +1,33 @@
 // Recursive-descent parser of the TR+ text format. Grammar (README "The TR+ language"):
 //
-//   file      := { condition_decl | action_decl | program }
+// clang-format off
+//   file           := { condition_decl | action_decl | program }
 //   condition_decl := 'condition' NAME [ '(' cparam { ',' cparam } ')' ] { cattr } ';'
-//   cparam    := [ 'in' | 'out' ] NAME
-//   cattr     := 'energized' | 'ballistic' | 'at' NUMBER 'hz' | 'every' DURATION
-//   action_decl := 'action' NAME [ '(' [ NAME { ',' NAME } ] ')' ] [ 'energized' | 'ballistic' ]
-//   ';' program   := ( 'main' | 'sub' ) NAME [ '(' [ NAME { ',' NAME } ] ')' ] '{' { rule } '}'
-//   rule      := cond '->' [ 'energized' | 'ballistic' ] act [ 'effects' '{' [ lit { ',' lit } ]
-//   '}' ] ';' cond      := xor { ( 'or' | '|' ) [ timeout ] xor } xor       := conj { '^' [ timeout
-//   ] conj } conj      := unary { ( 'and' | '&' ) [ timeout ] unary } unary     := 'not' unary |
-//   'true' | 'false' | '(' cond ')' | NAME [ '(' [ arg { ',' arg } ] ')' ] timeout   := '['
-//   DURATION ']'            DURATION := NUMBER ( 's' | 'ms' ) act       := par { '>' par } par :=
-//   aatom { '||' aatom } aatom     := 'nil' | '(' act ')' | NAME [ '(' [ arg { ',' arg } ] ')' ]
-//   arg       := [ '-' ] NUMBER | STRING | NAME
-//   lit       := [ 'not' ] NAME [ '(' [ arg { ',' arg } ] ')' ]
+//   cparam         := [ 'in' | 'out' ] NAME
+//   cattr          := 'energized' | 'ballistic' | 'at' NUMBER 'hz' | 'every' DURATION
+//   action_decl    := 'action' NAME [ '(' [ NAME { ',' NAME } ] ')' ] [ 'energized' | 'ballistic' ] ';'
+//   program        := ( 'main' | 'sub' ) NAME [ '(' [ NAME { ',' NAME } ] ')' ] '{' { rule } '}'
+//   rule           := cond '->' [ 'energized' | 'ballistic' ] act
+//                     [ 'effects' '{' [ lit { ',' lit } ] '}' ] ';'
+//   cond           := xor { ( 'or' | '|' ) [ timeout ] xor }
+//   xor            := conj { '^' [ timeout ] conj }
+//   conj           := unary { ( 'and' | '&' ) [ timeout ] unary }
+//   unary          := 'not' unary | 'true' | 'false' | '(' cond ')' | NAME [ '(' [ arg { ',' arg } ] ')' ]
+//   timeout        := '[' DURATION ']'
+//   DURATION       := NUMBER ( 's' | 'ms' )
+//   act            := par { '>' par }
+//   par            := aatom { '||' aatom }
+//   aatom          := 'nil' | '(' act ')' | NAME [ '(' [ arg { ',' arg } ] ')' ]
+//   arg            := [ '-' ] NUMBER | STRING | NAME
+//   lit            := [ 'not' ] NAME [ '(' [ arg { ',' arg } ] ')' ]
+// clang-format on
+//
+// Error recovery: an error in a rule skips to the rule's ';' (braces of `effects { }` are
+// balanced), or to the start of a later line that reads as a rule (an unterminated string eats
+// its line's ';'); a rule complete but for its ';' is kept when a rule or '}' follows; an error
+// in a program's header skips to its '{' and the rules are parsed; a declaration keyword ends
+// the program it appears in. So one run reports each error once and no error of a later rule
+// is skipped.
 #include "spott_tr_plus/parser.h"
 
 #include <fstream>
@@ -133,16 +147,66 @@ class Parser {
     throw ParseAbort{};
   }
 
+  bool IsDeclarationKeyword(const Token& t) const {
+    return IsWord(t, "condition") || IsWord(t, "action") || IsWord(t, "main") || IsWord(t, "sub");
+  }
+
   void RecoverTopLevel() {
     // Skip to the next declaration keyword at the start of a statement, or past a '}'.
     while (Peek().kind != Tok::kEnd) {
       const Token& t = Peek();
-      if (IsWord(t, "condition") || IsWord(t, "action") || IsWord(t, "main") || IsWord(t, "sub")) {
-        return;
-      }
+      if (IsDeclarationKeyword(t)) return;
       Next();
       if (t.kind == Tok::kSemicolon || t.kind == Tok::kRBrace) return;
     }
+  }
+
+  // True when the tokens from the current one read as the start of a rule: an '->' comes
+  // before the next ';', '}', '{' or declaration keyword.
+  bool RuleAhead() const {
+    for (size_t i = pos_; i < tokens_.size(); ++i) {
+      const Token& t = tokens_[i];
+      if (t.kind == Tok::kArrow) return true;
+      if (t.kind == Tok::kSemicolon || t.kind == Tok::kRBrace || t.kind == Tok::kLBrace ||
+          t.kind == Tok::kEnd || IsDeclarationKeyword(t)) {
+        return false;
+      }
+    }
+    return false;
+  }
+
+  // After an error in the rule that started at token `start`: skips to the end of the rule.
+  // Stops after its ';', before the '}' closing the program (braces opened inside the rule,
+  // `effects { }`, are balanced), before a declaration keyword, or at the first token of a
+  // later line than the error that reads as a new rule.
+  void RecoverRule(size_t start) {
+    int depth = 0;
+    for (size_t i = start; i < pos_; ++i) {
+      if (tokens_[i].kind == Tok::kLBrace) ++depth;
+      if (tokens_[i].kind == Tok::kRBrace && depth > 0) --depth;
+    }
+    const int error_line = Peek().where.line;
+    while (Peek().kind != Tok::kEnd) {
+      const Token& t = Peek();
+      if (t.kind == Tok::kRBrace) {
+        if (depth == 0) return;
+        --depth;
+      } else if (t.kind == Tok::kLBrace) {
+        ++depth;
+      } else if (t.kind == Tok::kSemicolon) {
+        Next();
+        return;
+      } else if (IsDeclarationKeyword(t)) {
+        return;
+      } else if (t.where.line > error_line && depth == 0 && FirstOnItsLine() && RuleAhead()) {
+        return;
+      }
+      Next();
+    }
+  }
+
+  bool FirstOnItsLine() const {
+    return pos_ == 0 || tokens_[pos_ - 1].where.line < tokens_[pos_].where.line;
   }
 
   void TopLevel() {
@@ -232,16 +296,25 @@ class Parser {
     const Token& kw = Next();
     p.is_main = kw.lexeme == "main";
     p.where = kw.where;
-    p.name = Name("a program name");
-    if (Accept(Tok::kLParen)) {
-      if (!Accept(Tok::kRParen)) {
-        do {
-          p.params.push_back(Name("a parameter name"));
-        } while (Accept(Tok::kComma));
-        Expect(Tok::kRParen, "',' or ')'");
+    try {
+      p.name = Name("a program name");
+      if (Accept(Tok::kLParen)) {
+        if (!Accept(Tok::kRParen)) {
+          do {
+            p.params.push_back(Name("a parameter name"));
+          } while (Accept(Tok::kComma));
+          Expect(Tok::kRParen, "',' or ')'");
+        }
       }
+      Expect(Tok::kLBrace, "'{'");
+    } catch (const ParseAbort&) {
+      // A bad header: its rules are still parsed when its '{' follows.
+      while (Peek().kind != Tok::kEnd && Peek().kind != Tok::kLBrace &&
+             !IsDeclarationKeyword(Peek())) {
+        Next();
+      }
+      if (!Accept(Tok::kLBrace)) return;
     }
-    Expect(Tok::kLBrace, "'{'");
     while (true) {
       const Token& t = Peek();
       if (t.kind == Tok::kRBrace) {
@@ -249,19 +322,17 @@ class Parser {
         Next();
         break;
       }
-      if (t.kind == Tok::kEnd) {
+      if (t.kind == Tok::kEnd || IsDeclarationKeyword(t)) {
         Error(t.where, "expected a rule or '}' to close program '" + p.name + "' (opened at line " +
-                           std::to_string(p.where.line) + "), found end of input");
+                           std::to_string(p.where.line) + "), found " + internal::Describe(t));
         break;
       }
       if (result_.diagnostics.size() >= kMaxErrors) break;
+      const size_t start = pos_;
       try {
         p.rules.push_back(ParseRule());
       } catch (const ParseAbort&) {
-        // Skip to the end of this rule.
-        while (Peek().kind != Tok::kEnd && Peek().kind != Tok::kRBrace) {
-          if (Next().kind == Tok::kSemicolon) break;
-        }
+        RecoverRule(start);
       }
     }
     result_.program.programs.push_back(std::move(p));
@@ -295,7 +366,14 @@ class Parser {
         Expect(Tok::kRBrace, "',' or '}'");
       }
     }
-    Expect(Tok::kSemicolon, "';' to end the rule ('||' or '>' to compose actions)");
+    const char* end = "';' to end the rule ('||' or '>' to compose actions)";
+    if (Peek().kind != Tok::kSemicolon && (Peek().kind == Tok::kRBrace || RuleAhead())) {
+      // Complete but for its ';', and a rule or the program's end follows: keep it and go on.
+      const Token& t = Peek();
+      Error(t.where, std::string("expected ") + end + ", found " + internal::Describe(t));
+      return r;
+    }
+    Expect(Tok::kSemicolon, end);
     return r;
   }
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "lexer.h"
+#include "spott_map/world.h"
 
 namespace spott_tr_plus {
 
@@ -84,7 +85,7 @@ Signature SignatureOf(const std::string& word) {
   if (word == "wall" || word == "line") return {{4}, "(x1, y1, x2, y2)"};
   if (word == "chair") return {{2, 3}, "(x, y[, radius])"};
   if (word == "desk") return {{2, 4, 5}, "(x, y[, length, width[, theta]])"};
-  if (word == "point") return {{2}, "(x, y)"};
+  if (word == "point") return {{2}, "(x, y) or (NAME)"};
   if (word == "rectangle") return {{4, 5}, "(x, y, length, width[, theta])"};
   if (word == "ellipse")
     return {{4, 5, 6}, "(x, y, a, b[, theta]) as a 2-D model or (x, y, z, a, b, c) as a geon"};
@@ -93,9 +94,10 @@ Signature SignatureOf(const std::string& word) {
   return {{}, ""};
 }
 
+// Targets a map knows by id: places, objects, and named places of the world as points.
 bool AcceptsName(const std::string& word) {
   return word == "door" || word == "room" || word == "hallway" || word == "wall" ||
-         word == "chair" || word == "desk";
+         word == "chair" || word == "desk" || word == "point";
 }
 
 class TaskParser {
@@ -109,6 +111,7 @@ class TaskParser {
     try {
       TaskCommand c;
       const Token& verb = Peek();
+      c.where = verb.where;
       if (IsWord(verb, "go")) {
         c.verb = Verb::kGo;
       } else if (IsWord(verb, "find")) {
@@ -117,12 +120,10 @@ class TaskParser {
         Fail(verb, "a verb ('go' or 'find')");
       }
       Next();
-      // DESTINATION
+      // DESTINATION: the same for both verbs (for `find` the target is the object sought and
+      // its attributes with the preposition where to look). Every part may be empty.
       const Token& t = Peek();
-      if (c.verb == Verb::kFind) {
-        if (!IsTarget(t)) Fail(t, "the object to find (" + Join(TargetWords()) + ")");
-        c.destination = ParseTarget();
-      } else if (IsTarget(t)) {
+      if (IsTarget(t)) {
         c.destination = ParseTarget();
       } else if (t.kind == Tok::kIdent && In(Prepositions(), t.lexeme)) {
         c.preposition = std::string(Next().lexeme);
@@ -156,9 +157,6 @@ class TaskParser {
         Next();
       }
       if (Peek().kind != Tok::kEnd) Fail(Peek(), Expected(c));
-      if (c.verb == Verb::kGo && !c.destination && c.orientation.empty() && c.path.empty()) {
-        Fail(Peek(), "a destination, an orientation or a path after 'go'");
-      }
       result.command = std::move(c);
     } catch (const Abort&) {
     }
@@ -170,7 +168,7 @@ class TaskParser {
   // What may follow at the end of what was parsed.
   std::string Expected(const TaskCommand& c) {
     std::vector<std::string> parts;
-    if (c.verb == Verb::kGo && !c.destination && c.orientation.empty() && c.path.empty()) {
+    if (!c.destination && c.orientation.empty() && c.path.empty() && !c.speed_given) {
       parts.push_back("a preposition or a target");
     }
     if (c.orientation.empty() && c.path.empty() && !c.speed_given) {
@@ -214,6 +212,29 @@ class TaskParser {
     throw Abort{};
   }
 
+  const Token& Peek(size_t ahead) const {
+    return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
+  }
+  // `b` follows `a` with no space between them.
+  static bool Adjacent(const Token& b, const Token& a) {
+    return b.kind != Tok::kEnd && b.where.line == a.where.line &&
+           b.where.column == a.where.column + static_cast<int>(a.lexeme.size());
+  }
+  // The attribute starting at `first` is neither a number nor an id: names it whole (up to
+  // the next ',', ')' or space) in the error.
+  [[noreturn]] void NotAnId(const Token& first) {
+    std::string text(first.lexeme);
+    const Token* prev = &first;
+    for (size_t k = pos_ + 1; k < tokens_.size(); ++k) {
+      const Token& t = tokens_[k];
+      if (!Adjacent(t, *prev) || t.kind == Tok::kComma || t.kind == Tok::kRParen) break;
+      text += std::string(t.lexeme);
+      prev = &t;
+    }
+    FailAt(first.where, "'" + text + "' is neither a number in metres nor a name: names are " +
+                            "the ids of the world's map, and " + spott_map::kIdRule);
+  }
+
   Target ParseTarget() {
     Target t;
     const Token& w = Next();
@@ -244,10 +265,19 @@ class TaskParser {
         if (!n.unit.empty() && n.unit != "m") Fail(n, "a number in metres (no unit or 'm')");
         t.numbers.push_back(-Next().number);
       } else if (v.kind == Tok::kNumber) {
-        if (!v.unit.empty() && v.unit != "m") Fail(v, "a number in metres (no unit or 'm')");
+        if (!v.unit.empty() && v.unit != "m") {
+          if (AcceptsName(t.word)) NotAnId(v);
+          Fail(v, "a number in metres (no unit or 'm')");
+        }
         t.numbers.push_back(Next().number);
       } else if (v.kind == Tok::kIdent && AcceptsName(t.word) && t.numbers.empty() &&
                  t.name.empty()) {
+        // A name is a world id (spott_map's id rule, world.h): exactly what the world loader
+        // accepts, so every id of a world can be named and nothing else is taken for one.
+        const Token& after = Peek(1);
+        const bool glued =
+            Adjacent(after, v) && after.kind != Tok::kComma && after.kind != Tok::kRParen;
+        if (!spott_map::IsValidId(std::string(v.lexeme)) || glued) NotAnId(v);
         t.name = std::string(Next().lexeme);
       } else {
         Fail(v, AcceptsName(t.word) ? "a number or a name" : "a number");

@@ -23,6 +23,13 @@ bool HasMessage(const CheckReport& r, const std::string& part, int line = 0) {
   return false;
 }
 
+std::string FirstError(const CheckReport& r) {
+  for (const auto& d : r.diagnostics) {
+    if (d.IsError()) return d.ToString();
+  }
+  return "";
+}
+
 const char* kDecls = "condition a; condition b; condition c; action x; action y;\n";
 
 TEST(Checker, ComplementaryLiteralsMakeAProgramComplete) {
@@ -172,11 +179,102 @@ INSTANTIATE_TEST_SUITE_P(
                  "timeout must be > 0"}));
 
 TEST(Checker, OutputVariablesBindIntoTheRulesAction) {
+  // Under `not` the condition is written without its outputs.
   const CheckReport r = Check(
       "condition status(out s); action interpret(s);\n"
-      "main m {\n  status(st) -> interpret(st);\n  not status(st2) -> nil;\n}");
+      "main m {\n  status(st) -> interpret(st);\n  not status -> nil;\n}");
   EXPECT_TRUE(r.ok()) << FormatDiagnostics(r.diagnostics);
   EXPECT_TRUE(r.Find("m")->complete);  // outputs are not part of the atom
+}
+
+TEST(Checker, OutputBoundUnderNotIsRefusedWithItsLocation) {
+  const CheckReport r = Check(
+      "condition status(out s); action interpret(s);\n"
+      "main m {\n  status(st) -> interpret(st);\n  not status(st2) -> interpret(st2);\n}");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(FirstError(r),
+            "p.tr:4:14: output variable 'st2' of 'status' is bound under 'not': the rule fires "
+            "when 'status' is FALSE, and then 'st2' has no value (write 'status' with its inputs "
+            "only, outputs left out)");
+  // Deeper under a `not` too.
+  const CheckReport deep = Check(
+      "condition a; condition status(out s); action x;\n"
+      "main m {\n  not (a and status(st)) -> x;\n  true -> nil;\n}");
+  EXPECT_FALSE(deep.ok());
+  EXPECT_TRUE(HasMessage(deep, "'st' of 'status' is bound under 'not'", 3));
+}
+
+// SPOTT Fig. 13: "find a new room", then "in that room": the first condition's output is the
+// second's input, across a sequential AND.
+const char* kRooms =
+    "condition new_room(out r); condition in_room(room); action go_to(room); action "
+    "search(room);\n";
+
+TEST(Checker, OutputFeedsAnInputToItsRightAcrossASequentialAnd) {
+  const CheckReport r = Check(std::string(kRooms) +
+                              "main m {\n  new_room(r) and in_room(r) -> search(r);\n"
+                              "  new_room(r) -> go_to(r) effects { in_room(r) };\n"
+                              "  not new_room -> nil;\n}");
+  ASSERT_TRUE(r.ok()) << FormatDiagnostics(r.diagnostics);
+  EXPECT_TRUE(r.Find("m")->complete);
+  EXPECT_EQ(r.Find("m")->parent[1], 0);  // going to the room achieves being in it
+}
+
+TEST(Checker, OutputDoesNotFeedAConcurrentOperandOrAConditionToItsLeft) {
+  const CheckReport par = Check(std::string(kRooms) +
+                                "main m {\n  new_room(r) & in_room(r) -> search(r);\n"
+                                "  true -> nil;\n}");
+  ASSERT_FALSE(par.ok());
+  EXPECT_EQ(FirstError(par),
+            "p.tr:3:25: variable 'r' is read before it is bound: 'new_room' binds it at line 3, "
+            "column 12; an output feeds an input only to its right across a sequential 'and' "
+            "(concurrent operators compute their operands together)");
+  const CheckReport left = Check(std::string(kRooms) +
+                                 "main m {\n  in_room(r) and new_room(r) -> search(r);\n"
+                                 "  true -> nil;\n}");
+  ASSERT_FALSE(left.ok());
+  EXPECT_TRUE(HasMessage(left,
+                         "undefined variable 'r' (neither a parameter of this program nor "
+                         "an output variable bound by this rule's condition)",
+                         3));
+}
+
+TEST(Checker, OutputBoundUnderOrMayHaveNoValueWhereItIsUsed) {
+  const CheckReport r = Check(std::string(kRooms) +
+                              "condition a;\nmain m {\n  a or new_room(r) -> search(r);\n"
+                              "  true -> nil;\n}");
+  ASSERT_FALSE(r.ok());
+  EXPECT_TRUE(HasMessage(r,
+                         "variable 'r' may have no value here: 'new_room' binds it under 'or' "
+                         "(line 4, column 17)",
+                         4));
+  // Bound under `or` and not used: nothing to refuse.
+  EXPECT_TRUE(Check(std::string(kRooms) +
+                    "condition a;\nmain m {\n  a or new_room(r) -> search(\"hall\");\n"
+                    "  true -> go_to(\"hall\");\n  not a -> nil;\n}")
+                  .ok());
+}
+
+TEST(Checker, DeclaredButUnusedConditionsAndActionsAreWarned) {
+  const CheckReport r = Check(
+      "condition a; condition spare;\naction x; action unused(d);\n"
+      "main m {\n  a -> nil;\n  not a -> x;\n}");
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(HasMessage(r, "condition 'spare' is declared but no rule reads it", 1));
+  EXPECT_TRUE(HasMessage(r, "action 'unused' is declared but no rule runs it", 2));
+  EXPECT_FALSE(HasMessage(r, "'a' is declared"));
+  EXPECT_FALSE(HasMessage(r, "'x' is declared"));
+}
+
+TEST(Checker, ProgramWithAnUnboundVariableGetsNoVerdict) {
+  const CheckReport r = Check(
+      "condition a; action x(d);\nmain m {\n  a -> x(dist);\n  not a -> nil;\n}\n"
+      "sub s() {\n  a -> nil;\n  not a -> nil;\n}");
+  ASSERT_FALSE(r.ok());
+  EXPECT_FALSE(r.Find("m")->analyzed);
+  EXPECT_TRUE(r.Find("s")->analyzed);
+  EXPECT_EQ(r.Summary(), "m: no verdict (the program has errors)\ns: complete\n");
+  EXPECT_FALSE(HasMessage(r, "not complete"));
 }
 
 TEST(Checker, NavigationProgramOfTheRepositoryChecksClean) {

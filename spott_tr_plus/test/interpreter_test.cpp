@@ -3,6 +3,7 @@
 // and deactivation, output variables. The clock is the test's: no sleeping, no timing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "spott_tr_plus/interpreter.h"
@@ -282,6 +283,19 @@ class AsyncWorld : public World {
   }
 };
 
+// kSharedCalls' bindings: `located` computed asynchronously, the rest pushed or long-running.
+class AsyncWorldForShared : public AsyncWorld {
+ public:
+  AsyncWorldForShared() {
+    External("task");
+    Async("located");
+    External("arrived");
+    LongAction("update_pose");
+    LongAction("drive");
+    LongAction("beep");
+  }
+};
+
 TEST(Interpreter, BallisticConditionIsFalseWhileItRecomputesEnergizedHoldsItsValue) {
   AsyncWorld w;
   w.Async("e");
@@ -442,10 +456,122 @@ TEST(Interpreter, OutputVariablesBindIntoTheAction) {
   w.LongAction("move_away");
   auto in = w.Load(
       "condition bumper(out where); action move_away(p, d);\n"
-      "main m { not bumper(w) -> nil; bumper(w) -> move_away(w, 0.3); }");
+      "main m { not bumper -> nil; bumper(w) -> move_away(w, 0.3); }");
   in->Start(0.0);
   EXPECT_EQ(w.Log(), "start move_away([1.5, -0.25],0.3)");
   EXPECT_EQ(FindProcess(in->State(), "bumper")->outputs[0].second, "[1.5, -0.25]");
+}
+
+// SPOTT Fig. 13: "find a new room", then "in that room". The first condition's output is the
+// second's input: the second's process follows the room the first one gives.
+TEST(Interpreter, AnOutputFeedsTheInputOfTheConditionToItsRight) {
+  World w;
+  std::string next = "R2";
+  w.registry.Condition("new_room", [&next](const ConditionCall&, std::vector<Value>& out) {
+    out[0] = next;
+    return true;
+  });
+  std::vector<std::string> asked;
+  w.registry.Condition("in_room", [&asked](const ConditionCall& c, std::vector<Value>&) {
+    asked.push_back(ValueToString(c.inputs[0]));
+    return std::get<std::string>(c.inputs[0]) == "R3";
+  });
+  w.LongAction("search");
+  w.LongAction("go_to");
+  auto in = w.Load(
+      "condition new_room(out r); condition in_room(room); action search(room);"
+      " action go_to(room);\n"
+      "main m { new_room(r) and in_room(r) -> search(r); new_room(r) -> go_to(r);"
+      " not new_room -> nil; }");
+  in->Start(0.0);
+  EXPECT_EQ(w.Log(), "start go_to(\"R2\")");
+  ASSERT_FALSE(asked.empty());
+  EXPECT_EQ(asked.back(), "\"R2\"");
+  EXPECT_TRUE(FindProcess(in->State(), "in_room(\"R2\")")->active);
+  // The schedule moves on to R3, where the robot is: the rule with both conditions fires.
+  next = "R3";
+  in->Scan(0.1);
+  EXPECT_EQ(asked.back(), "\"R3\"");
+  EXPECT_EQ(w.Log(), "start go_to(\"R2\"); stop go_to; start search(\"R3\")");
+  const InterpreterState s = in->State();
+  EXPECT_TRUE(FindProcess(s, "in_room(\"R3\")")->active);
+  // No atom reads in_room("R2") any more: its process is dropped, not kept forever.
+  in->Scan(0.2);
+  EXPECT_EQ(FindProcess(in->State(), "in_room(\"R2\")"), nullptr);
+}
+
+// The program of SPOTT's main rule 2 and 3 in small: LOC() runs in both rules, the task only in
+// rule 1. SPOTT III.C.1 footnote 11: only the conditions "in the currently called set of
+// subroutines" are active; a rule change keeps in that set the subroutines both rules call.
+const char* kSharedCalls =
+    "condition task(out t); condition located every 1s; condition arrived(goal);\n"
+    "action update_pose; action drive(goal); action beep;\n"
+    "main m { task(t) -> LOC() || beep || TASK(t); true -> LOC() || beep; }\n"
+    "sub LOC() { not located -> nil; located -> update_pose; }\n"
+    "sub TASK(G) { arrived(G) -> nil; true -> drive(G); }";
+
+TEST(Interpreter, SubroutinesBothRulesCallKeepRunningWhenTheFiringRuleChanges) {
+  AsyncWorldForShared w;
+  auto in = w.Load(kSharedCalls);
+  in->Start(0.0);
+  ASSERT_EQ(w.computed["located"], 1);
+  ASSERT_TRUE(in->CompleteCondition(w.pending["located"], true, 0.1));
+  EXPECT_EQ(w.Log(), "start beep; start update_pose");
+  // A task: rule 1 replaces rule 2. LOC and beep run in both: neither is stopped or restarted,
+  // LOC's condition keeps its value and is not recomputed before its period.
+  in->SetCondition("task", true, 0.2, {std::string("door")});
+  EXPECT_EQ(w.Log(), "start beep; start update_pose; start drive(\"door\")");
+  EXPECT_EQ(w.computed["located"], 1);
+  EXPECT_TRUE(FindProcess(in->State(), "located")->value);
+  EXPECT_EQ(FindFrame(in->State(), "LOC")->firing_rule, 1);
+  EXPECT_TRUE(FindFrame(in->State(), "LOC")->action_running);
+  // The kept action completes into the new rule: its ticket is the new rule's.
+  ASSERT_TRUE(in->CompleteAction(w.running["update_pose"], true, 0.3));
+  EXPECT_EQ(w.log.back(), "start update_pose");  // sustained in LOC, restarted
+  // The task ends: back to rule 2; TASK leaves, LOC and beep go on.
+  in->SetCondition("task", false, 0.4);
+  EXPECT_EQ(w.log.back(), "stop drive");
+  EXPECT_EQ(FindFrame(in->State(), "TASK"), nullptr);
+  EXPECT_NE(FindFrame(in->State(), "LOC"), nullptr);
+  EXPECT_EQ(std::count(w.log.begin(), w.log.end(), "start beep"), 1);
+  EXPECT_EQ(std::count(w.log.begin(), w.log.end(), "stop beep"), 0);
+}
+
+TEST(Interpreter, NewOutputValuesRestartTheActionKeepingWhatBothBindingsRun) {
+  AsyncWorldForShared w;
+  auto in = w.Load(kSharedCalls);
+  in->Start(0.0);
+  in->SetCondition("task", true, 0.1, {std::string("door")});
+  EXPECT_EQ(w.Log(), "start beep; start drive(\"door\")");
+  // A new task while rule 1 stays the highest: TASK is called with the new value; LOC and beep,
+  // called the same way by both, keep running.
+  in->SetCondition("task", true, 0.2, {std::string("desk")});
+  EXPECT_EQ(w.Log(), "start beep; start drive(\"door\"); stop drive; start drive(\"desk\")");
+  const InterpreterState s = in->State();
+  EXPECT_EQ(FindFrame(s, "TASK")->args, std::vector<std::string>{"\"desk\""});
+  EXPECT_EQ(FindProcess(s, "arrived(\"door\")")->active, false);
+  EXPECT_EQ(FindProcess(s, "arrived(\"desk\")")->active, true);
+  // The same value again: nothing restarts.
+  in->SetCondition("task", true, 0.3, {std::string("desk")});
+  EXPECT_EQ(w.log.back(), "start drive(\"desk\")");
+  EXPECT_EQ(std::count(w.log.begin(), w.log.end(), "start beep"), 1);
+}
+
+TEST(Interpreter, OutputsThatChangeOnEveryComputationRestartTheActionOncePerScan) {
+  World w;
+  double n = 0;
+  w.registry.Condition("counter", [&n](const ConditionCall&, std::vector<Value>& out) {
+    out[0] = ++n;  // a new value each time it is computed (every scan pass at frequency 0)
+    return true;
+  });
+  w.LongAction("show");
+  auto in = w.Load("condition counter(out n); action show(n);\nmain m { counter(n) -> show(n); }");
+  in->Start(0.0);
+  EXPECT_EQ(w.log.size(), 1u) << w.Log();
+  EXPECT_LT(in->scans(), 5u);
+  in->Scan(0.1);
+  ASSERT_EQ(w.log.size(), 3u) << w.Log();  // stop show; start show(newer value)
+  EXPECT_EQ(w.log[1], "stop show");
 }
 
 TEST(Interpreter, UnboundNamesAreRefusedWithLocatedErrors) {

@@ -52,9 +52,12 @@ class Navigation : public ::testing::Test {
 TEST_F(Navigation, TaskWithAPrioriMapSetsTheGoalAndBumperReactionRunsAlongside) {
   const Value task = std::string("go near door(3.2, 1.0)");
   in_->Start(0.0);
-  // No task yet: localize and map with sonar (rule 3 of main), nothing else.
-  EXPECT_EQ(Chain(),
-            (std::vector<std::string>{"SPOTT", "LOCALIZE_THE_ROBOT", "MAP_OBJECTS_WITH_SONAR"}));
+  // No task yet: localize, map with sonar and QUADRIS, monitor bumper and infrared (the last
+  // rule of main), nothing else.
+  const std::vector<std::string> monitors{
+      "SPOTT",        "LOCALIZE_THE_ROBOT", "MAP_OBJECTS_WITH_SONAR", "MAP_OBJECTS_WITH_QUADRIS",
+      "BUMPER_CHECK", "INFRARED_CHECK"};
+  EXPECT_EQ(Chain(), monitors);
   in_->SetCondition("apriori_map", true, 0.1);
   in_->SetCondition("target_known", true, 0.1, {}, {task});
   in_->SetCondition("task_status", true, 0.2, {task});
@@ -76,10 +79,63 @@ TEST_F(Navigation, TaskWithAPrioriMapSetsTheGoalAndBumperReactionRunsAlongside) 
   EXPECT_FALSE(Logged("stop move_away_from"));
   ASSERT_TRUE(in_->CompleteAction(tickets_["move_away_from"], true, 1.0));
   EXPECT_FALSE(Logged("stop set_goal"));  // the task went on meanwhile
-  // The task is done: the main goal rule fires, the task subroutines are deactivated.
+  // The task is done: the main goal rule fires, the task subroutines are deactivated; the
+  // monitors are handed over to it, not restarted.
   in_->SetCondition("task_done", true, 2.0);
   EXPECT_TRUE(Logged("report_done()"));
-  EXPECT_EQ(Chain(), std::vector<std::string>{"SPOTT"});
+  EXPECT_EQ(Chain(), monitors);
+}
+
+size_t Count(const std::vector<std::string>& log, const std::string& entry) {
+  return std::count(log.begin(), log.end(), entry);
+}
+
+// The case: a task given, then a new task. Localization, sonar mapping and the bumper
+// and infrared monitors are called by the rules before and after: they keep running (their
+// actions are not stopped, their conditions keep their values); only INTERPRET_TASK follows
+// the new task.
+TEST_F(Navigation, NewTaskDoesNotRestartLocalizationMappingOrBumperMonitoring) {
+  const Value first = std::string("go near door(3.2, 1.0)");
+  const Value second = std::string("go in room(lab)");
+  in_->Start(0.0);
+  in_->SetCondition("apriori_map", true, 0.1);
+  in_->SetCondition("target_known", true, 0.1, {}, {first});
+  in_->SetCondition("target_known", true, 0.1, {}, {second});
+  // Localized, sonar segments arriving: update_pose and add_features run.
+  in_->SetCondition("localized", true, 0.2);
+  in_->SetCondition("sonar_segments", true, 0.2, {std::vector<double>{0, 0, 1, 0}});
+  ASSERT_TRUE(Logged("update_pose()"));
+  ASSERT_TRUE(Logged("add_features([0, 0, 1, 0])"));
+  const auto frames_before = Chain();
+  // Idle (main rule 3) -> a task (rule 2).
+  in_->SetCondition("task_status", true, 0.3, {first});
+  in_->SetCondition("task_given", true, 0.3);
+  EXPECT_TRUE(Logged("set_goal(\"go near door(3.2, 1.0)\")"));
+  EXPECT_FALSE(Logged("stop update_pose"));
+  EXPECT_FALSE(Logged("stop add_features"));
+  EXPECT_EQ(Count(log_, "update_pose()"), 1u);
+  EXPECT_EQ(Count(log_, "add_features([0, 0, 1, 0])"), 1u);
+  const auto with_task = Chain();
+  ASSERT_NE(std::find(with_task.begin(), with_task.end(), "BUMPER_CHECK"), with_task.end());
+  // A new task: the task subroutines restart with it, nothing else does.
+  in_->SetCondition("task_status", true, 0.4, {second});
+  EXPECT_TRUE(Logged("stop set_goal"));
+  EXPECT_TRUE(Logged("set_goal(\"go in room(lab)\")"));
+  EXPECT_FALSE(Logged("stop update_pose"));
+  EXPECT_FALSE(Logged("stop add_features"));
+  EXPECT_FALSE(Logged("stop set_ptu_pattern"));
+  EXPECT_EQ(Count(log_, "update_pose()"), 1u);
+  EXPECT_EQ(Count(log_, "set_ptu_pattern(\"hallway\")"), 1u);
+  // The pose condition kept its value throughout (it never read FALSE).
+  for (const auto& p : in_->State().processes) {
+    if (p.name == "localized") {
+      EXPECT_TRUE(p.value);
+    }
+  }
+  // The bumper monitor is the same one: a contact now still gets its reaction.
+  in_->SetCondition("bumper_contact", true, 0.5, {std::vector<double>{1.0, 0.2}});
+  EXPECT_TRUE(Logged("add_obstacle_at([1, 0.2])"));
+  (void)frames_before;
 }
 
 TEST_F(Navigation, FindWithoutKnownTargetSearchesRoomByRoom) {
@@ -93,6 +149,10 @@ TEST_F(Navigation, FindWithoutKnownTargetSearchesRoomByRoom) {
   const std::vector<std::string> chain = Chain();
   EXPECT_NE(std::find(chain.begin(), chain.end(), "SEARCH_THE_MAP_ENVIRONMENT"), chain.end());
   EXPECT_TRUE(Logged("goto_room(\"R2\")"));
+  // In that room (Fig. 13): 'in that room' reads the room 'find a new room' gave.
+  in_->SetCondition("in_that_room", true, 0.25, {}, {std::string("R2")});
+  EXPECT_TRUE(Logged("stop goto_room"));
+  EXPECT_TRUE(Logged("search_room(\"R2\", \"find chair\")"));
   // No room left: random search (Fig. 13, footnote 14).
   in_->SetCondition("room_to_search", false, 0.3);
   const std::vector<std::string> after = Chain();

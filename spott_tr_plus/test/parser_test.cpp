@@ -17,7 +17,7 @@ action plan(goal);
 main run {
   at_goal -> nil;
   bumper_hit(where) -> ballistic stop > back_away(where);
-  path_clear and not bumper_hit(w2) -> plan("door 3") || stop effects { at_goal };
+  path_clear and not bumper_hit -> plan("door 3") || stop effects { at_goal };
   true -> GOTO(1.5);
 }
 
@@ -138,6 +138,93 @@ TEST(Parser, ReportsSeveralErrorsInOneRun) {
   ASSERT_EQ(r.program.programs.size(), 1u);
   ASSERT_EQ(r.program.programs[0].rules.size(), 1u);
   EXPECT_EQ(r.program.programs[0].rules[0].where.line, 4);
+}
+
+// Errors as "line:column: message", for the multi-error cases below.
+std::vector<std::string> Errors(const std::string& text) {
+  const ParseResult r = ParseProgramText(text, "f.tr");
+  std::vector<std::string> out;
+  for (const auto& d : r.diagnostics) {
+    out.push_back(std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + ": " +
+                  d.message);
+  }
+  return out;
+}
+
+TEST(Parser, AnErrorInsideEffectsDoesNotEndTheProgram) {
+  // The '}' of `effects { not }` closes the effects, not the program: no follow-on errors, the
+  // later rules are parsed and the error in the last one is reported.
+  const std::string text =
+      "main m {\n  a -> x effects { not };\n  b -> y;\n  c d -> z;\n  e -> w;\n}\n";
+  const std::vector<std::string> e = Errors(text);
+  ASSERT_EQ(e.size(), 2u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0], "2:24: expected a condition name, found '}'");
+  EXPECT_EQ(e[1], "4:5: expected '->' or a condition operator (and, or, &, |, ^), found 'd'");
+  const ParseResult r = ParseProgramText(text, "f.tr");
+  ASSERT_EQ(r.program.programs.size(), 1u);
+  ASSERT_EQ(r.program.programs[0].rules.size(), 2u);  // b -> y and e -> w
+  EXPECT_EQ(r.program.programs[0].rules[1].where.line, 5);
+}
+
+TEST(Parser, AMissingSemicolonKeepsTheRuleAndTheNextRuleIsStillChecked) {
+  const std::vector<std::string> e = Errors("main m {\n  a -> x\n  b c -> y;\n  d -> z;\n}");
+  ASSERT_EQ(e.size(), 2u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0], "3:3: expected ';' to end the rule ('||' or '>' to compose actions), found 'b'");
+  EXPECT_EQ(e[1], "3:5: expected '->' or a condition operator (and, or, &, |, ^), found 'c'");
+  const ParseResult r = ParseProgramText("main m {\n  a -> x\n  d -> z;\n}", "f.tr");
+  ASSERT_EQ(r.program.programs[0].rules.size(), 2u);
+  // A missing operator between two actions is one error, not a second "expected '->'".
+  EXPECT_EQ(Errors("main m {\n  a -> x\n     y;\n  b -> z;\n}").size(), 1u);
+}
+
+TEST(Parser, AnUnterminatedStringDoesNotHideTheNextRulesError) {
+  // The string runs to the end of its line and takes the ';' with it.
+  const std::vector<std::string> e =
+      Errors("main m {\n  a -> x(\"open);\n  b c -> y;\n  d -> z;\n}");
+  ASSERT_EQ(e.size(), 2u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0].substr(0, 25), "2:10: unterminated string");
+  EXPECT_EQ(e[1], "3:5: expected '->' or a condition operator (and, or, &, |, ^), found 'c'");
+}
+
+TEST(Parser, AnErrorInAProgramHeaderStillParsesItsRules) {
+  const std::vector<std::string> e =
+      Errors("sub S(a b) {\n  a -> x;\n  c d -> y;\n}\nmain m {\n  a -> S(1);\n}");
+  ASSERT_EQ(e.size(), 2u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0], "1:9: expected ',' or ')', found 'b'");
+  EXPECT_EQ(e[1], "3:5: expected '->' or a condition operator (and, or, &, |, ^), found 'd'");
+}
+
+TEST(Parser, AMissingClosingBraceEndsTheProgramAtTheNextDeclaration) {
+  const std::vector<std::string> e =
+      Errors("main m {\n  a -> x;\nsub s() {\n  b -> y;\n  c d -> z;\n}");
+  ASSERT_EQ(e.size(), 2u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0],
+            "3:1: expected a rule or '}' to close program 'm' (opened at line 1), found 'sub'");
+  EXPECT_EQ(e[1], "5:5: expected '->' or a condition operator (and, or, &, |, ^), found 'd'");
+  const ParseResult r = ParseProgramText("main m {\n  a -> x;\nsub s() {\n  b -> y;\n}", "f.tr");
+  ASSERT_EQ(r.program.programs.size(), 2u);
+  EXPECT_EQ(r.program.programs[1].rules.size(), 1u);
+}
+
+TEST(Parser, SeveralErrorsInOneProgramAreEachReportedOnce) {
+  const std::string text =
+      "condition a; condition b(out p);\n"  // 1
+      "action x; action y(q);\n"            // 2
+      "main m {\n"                          // 3
+      "  a -> x effects { a, };\n"          // 4: a literal missing after ','
+      "  b(p) -> y(p) ||;\n"                // 5: an action missing after '||'
+      "  not a -> y(\"z\")\n"               // 6: ';' missing (the next line is a rule)
+      "  a &[5] b -> x;\n"                  // 7: a timeout without its unit
+      "  true -> x;\n"                      // 8
+      "}\n";
+  const std::vector<std::string> e = Errors(text);
+  ASSERT_EQ(e.size(), 4u) << ::testing::PrintToString(e);
+  EXPECT_EQ(e[0].substr(0, 5), "4:23:");
+  EXPECT_EQ(e[1].substr(0, 5), "5:18:");
+  EXPECT_EQ(e[2].substr(0, 4), "7:3:");
+  EXPECT_EQ(e[3].substr(0, 4), "7:7:");
+  const ParseResult r = ParseProgramText(text, "f.tr");
+  ASSERT_EQ(r.program.programs[0].rules.size(), 2u);  // not a -> y("z"), true -> x
 }
 
 TEST(Parser, DeepNestingIsAnErrorNotACrash) {

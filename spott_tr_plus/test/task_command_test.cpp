@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "spott_map/world_loader.h"
 #include "spott_tr_plus/task_command.h"
 
 namespace spott_tr_plus {
@@ -120,6 +121,43 @@ TEST(TaskGrammar, EveryWordOfEveryProduction) {
   EXPECT_EQ(Parse("go door(1, 2)").preposition, "");  // a bare target
 }
 
+// The BNF lets every part after the verb be empty and gives `find` the same DESTINATION as
+// `go`: the parser accepts what the grammar (task_command.h) allows.
+TEST(TaskGrammar, BareVerbsAndFindWithAPrepositionParse) {
+  for (const char* text : {"go", "go quickly", "find", "find slowly", "find near door(1, 2)",
+                           "find forward", "find chair north quickly"}) {
+    const TaskCommand c = Parse(text);
+    EXPECT_EQ(ToText(c), text);
+  }
+  const TaskCommand g = Parse("go quickly");
+  EXPECT_FALSE(g.destination);
+  EXPECT_EQ(g.speed, Speed::kQuickly);
+  const TaskCommand f = Parse("find near door(1, 2)");
+  EXPECT_EQ(f.verb, Verb::kFind);
+  EXPECT_EQ(f.preposition, "near");
+  EXPECT_EQ(f.destination->word, "door");
+  EXPECT_EQ(f.destination->numbers, (std::vector<double>{1, 2}));
+  EXPECT_EQ(Parse("  go").where.column, 3);
+}
+
+// Names are world ids: every id and place name of a shipped world parses as one.
+TEST(TaskGrammar, EveryIdOfAShippedWorldIsAName) {
+  const spott_map::WorldLoadResult w = spott_map::LoadWorldFile(WORLDS_DIR "/cim_office.yaml");
+  ASSERT_TRUE(w.ok()) << spott_map::FormatErrors(w.errors);
+  for (const auto& r : w.world->rooms) {
+    EXPECT_EQ(Parse("go in room(" + r.id + ")").destination->name, r.id);
+  }
+  for (const auto& d : w.world->doors) {
+    EXPECT_EQ(Parse("go near door(" + d.id + ") quickly").destination->name, d.id);
+  }
+  for (const auto& o : w.world->objects) {
+    EXPECT_EQ(Parse("go behind desk(" + o.id + ")").destination->name, o.id);
+  }
+  for (const auto& p : w.world->places) {
+    EXPECT_EQ(Parse("go to point(" + p.name + ")").path_target->name, p.name);
+  }
+}
+
 struct BadTask {
   const char* text;
   int column;
@@ -143,19 +181,22 @@ INSTANTIATE_TEST_SUITE_P(
     Each, TaskErrors,
     ::testing::Values(
         BadTask{"walk to door(1, 2)", 1, "expected a verb ('go' or 'find')"},
-        BadTask{"", 1, "expected a verb"},
-        BadTask{"go", 3, "a destination, an orientation or a path after 'go'"},
-        BadTask{"go near", 8, "a target after 'near'"},
+        BadTask{"", 1, "expected a verb"}, BadTask{"go near", 8, "a target after 'near'"},
         BadTask{"go near table(1, 2)", 9, "a target after 'near'"},
         BadTask{"go near door(1, 2, 3, 4, 5)", 13, "'door' takes (x, y[, width[, theta]])"},
         BadTask{"go near door(1 2)", 16, "expected ',' or ')'"},
-        BadTask{"go near point(A)", 15, "expected a number"},
+        BadTask{"go near line(A)", 14, "expected a number"},
         BadTask{"go near door(1, 2) fast", 20, "a speed ('slowly', 'quickly', 'normal')"},
         BadTask{"go near door(1, 2) quickly now", 28, "expected the end of the command"},
         BadTask{"go near door(1cm, 2)", 14, "a number in metres"},
         BadTask{"go near door(R1, 2)", 13, "a name or numbers, not both"},
         BadTask{"go to", 6, "a target after 'to'"},
-        BadTask{"find near chair", 6, "the object to find"},
+        // Names are world ids (spott_map's one id rule): what the world loader refuses, the
+        // task parser does not read as a name either.
+        BadTask{"go near door(d-1)", 14, "'d-1' is neither a number in metres nor a name"},
+        BadTask{"go near door(1door)", 14, "'1door' is neither a number in metres nor a name"},
+        BadTask{"go in room(my-room)", 12, "'my-room' is neither a number in metres nor a name"},
+        BadTask{"go near door(d_1-2, 3)", 14, "'d_1-2' is neither"},
         BadTask{"go near ellipse(1, 2, 3)", 16, "found 3 number(s)"},
         BadTask{"go near door(1, 2) $", 20, "unexpected character '$'"},
         // Regression (task_command_fuzz): an overflowing number became inf and printed as a name.
@@ -326,6 +367,47 @@ TEST(TaskInterpretation, NamedPlacesComeFromTheMap) {
       InterpretTask(Parse("go inside room(R9)"), 0, 0, 0, TaskInterpretationParameters{}, map);
   ASSERT_FALSE(missing.ok());
   EXPECT_EQ(missing.diagnostics[0].ToString(), "task:1:11: room 'R9' is not in the map");
+}
+
+TaskInterpretResult Refused(const std::string& text) {
+  const TaskInterpretResult r = InterpretTask(Parse(text), 0, 0, 0, TaskInterpretationParameters{});
+  EXPECT_FALSE(r.ok()) << text;
+  EXPECT_EQ(r.diagnostics.size(), 1u) << text;
+  return r;
+}
+
+// README "Task commands": a bare `go` is refused, not taken for tele-operation forward. SPOTT's
+// go "assumes that the goal is a known spatial location" (III-B) and its tele-operation is
+// "based on frequent operator-specified directional commands (e.g. go forward)" (VI-A).
+TEST(TaskInterpretation, ABareGoIsRefusedWithTheReason) {
+  for (const char* text : {"go", "go quickly", "go normal"}) {
+    const TaskInterpretResult r = Refused(text);
+    EXPECT_EQ(r.diagnostics[0].where.column, 1);
+    EXPECT_NE(r.diagnostics[0].message.find("'go' alone names no goal"), std::string::npos);
+    EXPECT_NE(r.diagnostics[0].message.find("(go forward)"), std::string::npos);
+  }
+}
+
+TEST(TaskInterpretation, FindNeedsAnObjectAndALocationForItsPreposition) {
+  EXPECT_EQ(Refused("find").diagnostics[0].ToString(),
+            "task:1:1: 'find' needs the object to find: a target (door, hallway, room, wall, "
+            "chair, desk, ellipse, line, point, rectangle, cuboid, cylinder)");
+  Refused("find forward quickly");
+  EXPECT_EQ(Refused("find near chair").diagnostics[0].ToString(),
+            "task:1:11: 'near' needs the location of the chair to look near: give its "
+            "attributes (find near chair(x, y)) or leave the preposition out (find chair)");
+  // find near door(1, 2): look for a door within `near` of (1, 2).
+  const TaskInterpretation f = Interpret("find near door(1, 2)");
+  EXPECT_EQ(f.mode, TaskInterpretation::Mode::kSearch);
+  EXPECT_EQ(f.sought->word, "door");
+  ASSERT_TRUE(f.goal);
+  EXPECT_EQ(f.goal->kind, GoalRegion::Kind::kWithin);
+  EXPECT_TRUE(f.goal->Contains(1, 1.5));
+  EXPECT_FALSE(f.goal->Contains(1, 0));  // 2 m away
+  const TaskInterpretation behind = Interpret("find behind chair(4, 0)");
+  EXPECT_EQ(behind.goal->kind, GoalRegion::Kind::kSide);
+  EXPECT_TRUE(behind.goal->Contains(4.6, 0));
+  EXPECT_FALSE(behind.goal->Contains(3.4, 0));
 }
 
 TEST(TaskInterpretation, ParametersAreValidatedByName) {

@@ -131,6 +131,16 @@ struct ProgramFile {
   const Program* Main() const;
 };
 
+/// An atom names a condition either with one argument per declared parameter (inputs and output
+/// variables, in order) or with its inputs only, its outputs left unbound: `not bumper_contact`
+/// for `condition bumper_contact(out where)` (outputs cannot be bound under `not`). True for the
+/// second form (only when the condition has outputs).
+bool OutputsOmitted(const CondExpr& atom, const ConditionDecl& decl);
+
+/// The argument an atom gives for parameter `k` of its declaration; null when the atom omits its
+/// outputs and `k` is an output, or when the atom has too few arguments.
+const Arg* ArgForParam(const CondExpr& atom, const ConditionDecl& decl, size_t k);
+
 /// Marks every invocation of a subroutine as a call (ActExpr::is_call).
 void ResolveCalls(ProgramFile& file);
 

@@ -2,7 +2,9 @@
 // regression property.
 //
 // - Names: undefined conditions, actions and subroutines, wrong numbers of arguments, input
-//   variables that are not in scope, output variables bound twice, duplicate declarations.
+//   variables that are not in scope, output variables bound twice or under `not` (or used
+//   where they may have no value), duplicate declarations; warnings for declared conditions
+//   and actions no rule uses. An output feeds inputs to its right across a sequential `and`.
 // - Unreachable rules: rule i can never fire when K_i implies K_1 v ... v K_{i-1} (in
 //   particular when it implies one higher rule's condition, which the warning then names).
 // - Completeness: K_1 v ... v K_m is a tautology over the program's atomic conditions (the
@@ -27,10 +29,14 @@ namespace spott_tr_plus {
 
 struct ProgramVerdict {
   std::string program;
+  /// False when the program has errors in its names or variables: its logic is not analysed
+  /// and it has no verdict.
+  bool analyzed = false;
   bool complete = false;
   bool regression = false;
   bool universal() const { return complete && regression; }
-  /// "universal", "complete", "regression" or "neither".
+  /// "universal", "complete", "regression" or "neither"; "no verdict (the program has errors)"
+  /// when it was not analysed.
   std::string Verdict() const;
   std::vector<int> unreachable_rules;      ///< 0-based rule indices.
   std::vector<int> rules_without_effects;  ///< Rules below the first that declare no effects.
@@ -49,7 +55,7 @@ struct CheckReport {
 };
 
 /// Checks a parsed program file. Logic analysis (completeness, reachability, regression) runs
-/// on every program whose names resolve.
+/// on every program whose names and variables are free of errors; the others get no verdict.
 CheckReport CheckProgram(const ProgramFile& file);
 
 }  // namespace spott_tr_plus

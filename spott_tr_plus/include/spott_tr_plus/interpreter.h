@@ -17,7 +17,13 @@
 // - A ballistic condition reads FALSE while it computes; an energized one holds its last value.
 // - Energized action: started when its rule becomes the highest true rule of its program,
 //   sustained while it stays so (restarted at a later scan if it finishes), cancelled (primitive
-//   actions stopped, called subroutines deactivated) as soon as it does not.
+//   actions stopped, called subroutines deactivated) as soon as it does not. While its rule
+//   stays highest, a new value of an output variable it reads restarts it with that value.
+// - When the action of a program is replaced (another rule fires, or the same rule with new
+//   output values), the subroutines the new action calls at once with the same arguments as
+//   the old one are handed over, not restarted: they stay in the "currently called set of
+//   subroutines" (SPOTT III.C.1, footnote 11), their actions go on and their conditions keep
+//   their values. So are primitive actions both start at once with the same arguments.
 // - Ballistic action: started when its rule is the highest true rule after a FALSE-to-TRUE
 //   transition of its condition that has not started it yet, and run to completion. It is not
 //   restarted while its condition stays TRUE. When a higher rule fires meanwhile the ballistic
@@ -33,7 +39,9 @@
 // - The highest true rule is acted on as soon as the scan reaches it; the rules below it are
 //   evaluated afterwards in the same scan (all active conditions are monitored).
 // - Output variables of a rule's conditions are bound into its action's arguments when the
-//   action starts.
+//   action starts. Across a sequential AND an output also feeds the inputs of the conditions
+//   to its right (SPOTT Fig. 13: "find a new room", then "in that room"): their process is the
+//   one for the values the output holds when they are evaluated.
 #pragma once
 
 #include <cstdint>

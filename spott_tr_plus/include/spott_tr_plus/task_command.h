@@ -19,7 +19,13 @@
 // (x, y, z, a, b, c); without attributes it names either. `along` and `around` are both
 // prepositions and path words: right after the verb they are the destination's preposition,
 // after a destination they are the direction's path word. Values are in metres and radians
-// (the paper used cm); a value is a number or a name (`room(R2)`).
+// (the paper used cm); a value is a number or a name (`room(R2)`, `point(corner)`): a world
+// id, read by exactly spott_map's id rule (spott_map::IsValidId).
+// Every part after the verb may be empty, so `go`, `go quickly` and `find` parse, and `find`
+// takes a preposition as `go` does (`find near door(1, 2)`: look for a door near (1, 2)). The
+// interpretation refuses, with the reason, what names no goal: a `go` without destination,
+// orientation or path, a `find` without an object, a preposition about an object whose
+// location is not given.
 #pragma once
 
 #include <functional>
@@ -27,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "spott_map/map_database.h"
 #include "spott_tr_plus/diagnostic.h"
 
 namespace spott_tr_plus {
@@ -47,6 +54,7 @@ struct Target {
 
 struct TaskCommand {
   Verb verb = Verb::kGo;
+  Location where;           ///< the verb
   std::string preposition;  ///< empty: no preposition (a bare target or no destination)
   std::optional<Target> destination;
   std::string orientation;  ///< forward, ..., west; empty if none
@@ -78,6 +86,9 @@ struct TargetGeometry {
   double half_length = 0;                          ///< along the long axis (m)
   double half_width = 0;                           ///< across it (m)
   std::vector<std::pair<double, double>> polygon;  ///< optional exact outline (m)
+  /// The map element it was looked up as (a room, door, feature or place id); empty when
+  /// given by coordinates.
+  std::string map_id;
 };
 
 /// A goal region (SPOTT III-B: "spatial prepositions act as modifiers of the target location").
@@ -89,14 +100,24 @@ struct GoalRegion {
     kOutside,    ///< outside it, within max_distance of it
     kAlongside,  ///< within max_distance, beside the long axis (projection inside its extent)
     kDisc,       ///< within `tolerance` of (goal_x, goal_y)
+    /// On one side of the footprint: past its extent in direction (side_x, side_y), at a
+    /// distance in [min_distance, max_distance] from it; with `both_sides` the opposite side too.
+    kSide,
   };
   Kind kind = Kind::kDisc;
   TargetGeometry target;
   double min_distance = 0, max_distance = 0, tolerance = 0;
-  double goal_x = 0, goal_y = 0;  ///< the point sent to the planners (m, map frame)
-  /// kDisc of `beside` / `to-the-side-of`: either side will do, (alt_x, alt_y) is the other.
-  bool has_alternative = false;
-  double alt_x = 0, alt_y = 0;
+  double side_x = 0, side_y = 0;  ///< kSide: unit vector (map frame)
+  double half_span = 0;     ///< kSide: largest distance from the target's centre across it (m)
+  bool both_sides = false;  ///< kSide: `beside`, `to-the-side-of`: either side will do
+  /// The point sent to the planners (m, map frame). With a map (TaskMap) it lies in the free,
+  /// reachable part of the region in `rooms`.
+  double goal_x = 0, goal_y = 0;
+  /// With a map: the rooms the goal is restricted to (the target's room(s)), and the area of
+  /// the region's free part reachable from the robot there (m^2). Without a map: empty, 0.
+  std::vector<std::string> rooms;
+  double free_area_m2 = 0;
+  /// Geometric membership (the map is not consulted).
   bool Contains(double x, double y) const;
 };
 
@@ -133,6 +154,8 @@ struct TaskInterpretationParameters {
   double default_door_width_m = 0.9, default_chair_radius_m = 0.3;
   double default_desk_length_m = 1.2, default_desk_width_m = 0.6;
   double slow_fraction = 0.3, normal_fraction = 0.6, quick_fraction = 1.0;
+  /// Cell side of the free-space raster goals are fitted in (m), in (0, 0.5] (TaskMap).
+  double free_space_resolution_m = 0.05;
 };
 
 /// Every violation by parameter name (empty: valid).
@@ -151,6 +174,25 @@ struct TaskInterpretation {
 /// Looks up a named place (`room(R2)`) or a place given without attributes in the map.
 using PlaceResolver = std::function<std::optional<TargetGeometry>(const Target&)>;
 
+/// The map a goal point must respect (SPOTT III-A, the map database). With it a goal region is
+/// intersected with the free space of the target's room(s) that the robot can reach (through
+/// open doors, around known obstacles), obstacles grown by `padding_m`, before its point is
+/// chosen: the point the geometry prefers when it is there, else the nearest one there; a
+/// region with no such point is refused with the reason.
+struct TaskMap {
+  /// Walls and sensed features (every feature is an obstacle, as in the planners' rasters),
+  /// rooms and doors with their states (closed doors are obstacles). Must outlive the call.
+  const spott_map::MapDatabase* database = nullptr;
+  /// Robot radius + localization error (m), >= 0: the same padding as the planners'.
+  double padding_m = 0.0;
+};
+
+/// A resolver looking names up in a map database (ids of its rooms and hallways, doors and
+/// features: walls, chairs, desks, ...) and in `places` (`point(NAME)`). Captures references:
+/// `db` and `places` must outlive it.
+PlaceResolver MapPlaceResolver(const spott_map::MapDatabase& db,
+                               const std::vector<spott_map::Place>& places = {});
+
 struct TaskInterpretResult {
   std::optional<TaskInterpretation> interpretation;
   std::vector<Diagnostic> diagnostics;
@@ -163,10 +205,18 @@ std::optional<TargetGeometry> GeometryFromAttributes(const Target& t,
 
 /// Turns a parsed task into a goal region + direction bias + speed, a search, or tele-operation.
 /// (robot_x, robot_y, robot_yaw) is the robot's pose in the map frame: the deictic prepositions
-/// (in-front-of, behind, to-the-left-of, ...) are taken from the robot's point of view.
+/// (in-front-of, behind, to-the-left-of, ...) are taken from the robot's point of view. This
+/// form has no map: goal points are the geometry's (SPOTT without an a priori map).
 TaskInterpretResult InterpretTask(const TaskCommand& command, double robot_x, double robot_y,
                                   double robot_yaw, const TaskInterpretationParameters& params,
                                   const PlaceResolver& resolve = nullptr,
+                                  const std::string& source = "task");
+
+/// The same with the map: goal points lie in the free space of the right room that the robot
+/// can reach (TaskMap); unreachable goal regions are refused with why.
+TaskInterpretResult InterpretTask(const TaskCommand& command, double robot_x, double robot_y,
+                                  double robot_yaw, const TaskInterpretationParameters& params,
+                                  const TaskMap& map, const PlaceResolver& resolve = nullptr,
                                   const std::string& source = "task");
 
 }  // namespace spott_tr_plus

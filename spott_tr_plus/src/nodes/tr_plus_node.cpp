@@ -18,6 +18,7 @@
 #include <cmath>
 #include <map>
 
+#include "spott_ros/parameter_reader.h"
 #include "spott_tr_plus/checker.h"
 #include "spott_tr_plus/dot_export.h"
 #include "spott_tr_plus/interpreter.h"
@@ -37,16 +38,13 @@ struct NodeParameters {
   TaskInterpretationParameters task;  ///< ~task/... (task_command.h)
 };
 
-std::vector<std::string> Validate(const NodeParameters& p) {
-  std::vector<std::string> v;
-  if (p.program_file.empty()) v.push_back("program_file is required (a .tr file)");
-  if (p.max_call_depth < 1) v.push_back("max_call_depth must be >= 1");
-  for (const std::string& t : ValidateParameters(p.task)) v.push_back("task/" + t);
-  return v;
-}
-
-void ReadTaskParameters(const ros::NodeHandle& pnh, TaskInterpretationParameters& t) {
-  const std::pair<const char*, double*> fields[] = {
+// Every key under ~ through the one reader: a misspelt or mistyped key stops the node by name.
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
+  r.Get("program_file", p.program_file);
+  r.Get("main", p.main);
+  r.Get("max_call_depth", p.max_call_depth);
+  TaskInterpretationParameters& t = p.task;
+  const std::pair<const char*, double*> distances[] = {
       {"task/at_distance_m", &t.at_distance_m},
       {"task/against_distance_m", &t.against_distance_m},
       {"task/near_distance_m", &t.near_distance_m},
@@ -56,11 +54,14 @@ void ReadTaskParameters(const ros::NodeHandle& pnh, TaskInterpretationParameters
       {"task/default_door_width_m", &t.default_door_width_m},
       {"task/default_chair_radius_m", &t.default_chair_radius_m},
       {"task/default_desk_length_m", &t.default_desk_length_m},
-      {"task/default_desk_width_m", &t.default_desk_width_m},
-      {"task/slow_fraction", &t.slow_fraction},
-      {"task/normal_fraction", &t.normal_fraction},
-      {"task/quick_fraction", &t.quick_fraction}};
-  for (const auto& [name, field] : fields) pnh.param(name, *field, *field);
+      {"task/default_desk_width_m", &t.default_desk_width_m}};
+  for (const auto& [name, field] : distances) r.Get(name, *field, "m");
+  r.Get("task/slow_fraction", t.slow_fraction);
+  r.Get("task/normal_fraction", t.normal_fraction);
+  r.Get("task/quick_fraction", t.quick_fraction);
+  if (p.program_file.empty()) r.Fail("program_file is required (a .tr file)");
+  r.Require(p.max_call_depth >= 1, "max_call_depth", ">= 1", p.max_call_depth);
+  for (const std::string& v : ValidateParameters(t)) r.Fail("task/" + v);
 }
 
 class TrPlusNode {
@@ -245,16 +246,10 @@ class TrPlusNode {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "tr_plus_node");
   ros::NodeHandle pnh("~");
-  spott_tr_plus::NodeParameters params;
-  pnh.param("program_file", params.program_file, params.program_file);
-  pnh.param("main", params.main, params.main);
-  pnh.param("max_call_depth", params.max_call_depth, params.max_call_depth);
-  spott_tr_plus::ReadTaskParameters(pnh, params.task);
-  const auto violations = spott_tr_plus::Validate(params);
-  if (!violations.empty()) {
-    for (const auto& v : violations) ROS_FATAL("tr_plus_node: parameter %s", v.c_str());
-    return 1;
-  }
+  const auto read = spott_ros::ReadNodeParameters<spott_tr_plus::NodeParameters>(
+      pnh, "tr_plus_node", spott_tr_plus::ReadParameters);
+  if (!read) return 1;
+  const spott_tr_plus::NodeParameters& params = *read;
   spott_tr_plus::TrPlusNode node(pnh, params);
   std::vector<spott_tr_plus::Diagnostic> diags;
   spott_tr_plus::CheckReport report;

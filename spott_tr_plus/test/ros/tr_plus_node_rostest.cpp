@@ -9,6 +9,8 @@
 #include <spott_msgs/TRProgramState.h>
 #include <std_msgs/String.h>
 
+#include "spott_ros/testing/node_process.h"
+
 #include <functional>
 #include <optional>
 
@@ -149,6 +151,19 @@ TEST_F(TrPlusNodeTest, ParseTaskInterpretsOrReportsTheColumn) {
   EXPECT_FALSE(srv.response.success);
   EXPECT_EQ(srv.response.message.rfind("task:1:9: expected a target after 'near'", 0), 0u)
       << srv.response.message;
+}
+
+TEST(TrPlusNodeParameters, BadParametersAreRefusedByName) {
+  std::string program;
+  ros::NodeHandle("~").getParam("program_file", program);
+  const auto run = spott_ros::testing::RunNode(
+      TR_PLUS_NODE_EXE, "__name:=bad_tr_plus _program_file:=" + program +
+                            " _task/near_distnce_m:=1.0 _max_call_depth:=0 _main:=7");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  for (const char* key :
+       {"~task/near_distnce_m is not a parameter", "~max_call_depth must be >= 1", "~main"}) {
+    EXPECT_NE(run.output.find(key), std::string::npos) << key << " in:\n" << run.output;
+  }
 }
 
 }  // namespace

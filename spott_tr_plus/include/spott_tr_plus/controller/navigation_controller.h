@@ -1,0 +1,289 @@
+// SPOTT's behavioural controller (Zelek and Levine, section III-C, Figs. 3-13) on the robot:
+// the TR+ navigation program (programs/spott_navigation.tr) run by the interpreter, its
+// conditions and actions bound in C++ through the Registry. ROS-free: the node feeds it the
+// robot's pose, the sensors, the map database's messages and Navigate's answers, and carries out
+// what it asks through ControllerIo (Navigate goals, velocity commands on the arbiter's inputs,
+// the wheels valve, map updates, task feedback and results). Every call takes the caller's
+// clock; the controller never reads one.
+//
+// What the controller owns (README "The controller on the robot"):
+// - Tasks (III-B): a command is parsed (a malformed one is refused with its column), and once
+//   the robot has stopped (a new task preempts the running one: the robot stops first) it is
+//   interpreted from the robot's pose against the map database (goal regions in the free,
+//   reachable space of the right room; direction biases; speeds to speed modes).
+// - The map database's sensed part (III-A): sonar and QUADRIS features that are not already in
+//   the map, bumper and infrared contacts, door states; each change is applied to its own copy
+//   and sent to every other copy (MapChange -> spott_msgs/MapUpdate).
+// - The reflexes (Figs. 7-8): take the wheels as source `reflex`, move away, hand them back,
+//   always from within a TR+ rule (move_away_from).
+// - Intelligent tele-operation (VI-A) on source `teleop`.
+// - LOCALIZE_THE_ROBOT (Fig. 4): the pose of markov_localization taken into the world model at
+//   the rates of footnote 19 (time, distance travelled, predefined places).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "spott_map/map_database.h"
+#include "spott_tr_plus/ast.h"
+#include "spott_tr_plus/controller/motions.h"
+#include "spott_tr_plus/controller/sensor_mapper.h"
+#include "spott_tr_plus/diagnostic.h"
+#include "spott_tr_plus/interpreter.h"
+#include "spott_tr_plus/task_command.h"
+
+namespace spott_tr_plus::controller {
+
+/// A goal for the stack's Navigate action (spott_msgs/Navigate).
+struct NavigateGoal {
+  std::uint64_t seq = 0;  ///< Echoed by NavigateDone / NavigateFeedback.
+  double x = 0, y = 0;    ///< Target (m, map).
+  double tolerance_m = 0.25;
+  int speed_mode = 1;  ///< spott_msgs/Navigate SLOWLY 0, NORMAL 1, QUICKLY 2.
+  enum class Bias { kHeading, kToward, kAway, kVia, kAround };
+  Bias bias = Bias::kHeading;
+  std::optional<double> heading;  ///< kHeading (rad, map); none = no bias.
+  double bias_x = 0, bias_y = 0, bias_radius = 0, bias_sense = 1;
+};
+
+/// How a Navigate goal ended (spott_msgs/NavigateResult outcome).
+enum class NavigateOutcome { kSucceeded = 0, kUnreachable = 1, kPreempted = 2, kFailed = 3 };
+
+/// A change of the map database for every other copy (spott_msgs/MapUpdate).
+struct MapChange {
+  std::vector<spott_map::MapFeature> added;
+  std::vector<std::pair<std::string, spott_map::DoorState>> doors;
+};
+
+struct TaskFeedback {
+  std::int64_t id = 0;
+  std::string state;              ///< parsing | interpreting | driving | searching | teleoperating
+  std::string firing_rule;        ///< "PROGRAM[index]: condition -> action" (index 0-based)
+  double distance_remaining = 0;  ///< (m); NaN when unknown
+  Pose2 pose;
+};
+
+struct TaskResult {
+  std::int64_t id = 0;
+  bool success = false;
+  std::string outcome;  ///< reached | found | stopped | failed | rejected | preempted
+  std::string message;
+  Pose2 final_pose;
+  std::string interpretation;      ///< What the command was taken to mean ("" if never).
+  std::optional<Vec2> goal;        ///< The goal point sent to Navigate (map), if any.
+  std::vector<std::string> trace;  ///< The firing rules in order (compact TR trace).
+};
+
+/// What the controller does to the world.
+class ControllerIo {
+ public:
+  virtual ~ControllerIo() = default;
+  virtual void SendNavigate(const NavigateGoal& goal) = 0;
+  virtual void CancelNavigate() = 0;
+  /// cmd_vel_arbiter's take_wheels / release_wheels for `source`.
+  virtual void TakeWheels(const std::string& source) = 0;
+  virtual void ReleaseWheels(const std::string& source) = 0;
+  /// A velocity command on /cmd_vel/<source>.
+  virtual void Drive(const std::string& source, const Velocity& v) = 0;
+  virtual void SendMapUpdate(const MapChange& change) = 0;
+  /// The pan-tilt heads' scanning pattern (Fig. 10): "room" or "hallway".
+  virtual void SetPtuPattern(const std::string& pattern) = 0;
+  virtual void PublishTaskFeedback(const TaskFeedback& feedback) = 0;
+  virtual void TaskFinished(const TaskResult& result) = 0;
+};
+
+struct LocalizationParameters {
+  double period_s = 10.0;        ///< Localize at least this often (s), > 0 (footnote 19: time).
+  double distance_m = 2.0;       ///< ... and every this far travelled (m), > 0 (distance).
+  double place_radius_m = 0.75;  ///< ... and within this of a localization place (m), >= 0.
+  double max_age_s = 2.0;        ///< A localization status older than this is stale (s), > 0.
+};
+
+struct TaskParameters {
+  double goal_tolerance_m = 0.25;  ///< Asked of Navigate (m), > 0.
+  int navigate_retries = 2;        ///< Navigate failures retried before the task fails, >= 0.
+  double retry_delay_s = 2.0;      ///< Wait before a retry (s), >= 0.
+  double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
+  double stop_timeout_s = 3.0;     ///< Longest wait for the robot to stop (s), > 0.
+  double pose_timeout_s = 60.0;    ///< Longest wait for a pose before interpreting (s), > 0.
+  double search_turn_rps = 0.4;    ///< Looking around a room (rad/s), > 0.
+  double obstacle_ahead_m = 0.7;   ///< RANDOM_SEARCH: an echo ahead this close (m), > 0.
+  double feedback_period_s = 0.5;  ///< Feedback at least this often while a task runs (s), > 0.
+};
+
+struct ControllerParameters {
+  double robot_radius_m = 0.2285;           ///< From the robot description (not a parameter).
+  double max_localization_error_m = 0.075;  ///< Padding = radius + this (m), >= 0.
+  double max_linear_mps = 0.5;              ///< The robot's drive limits (m/s), > 0.
+  double max_angular_rps = 0.79;            ///< (rad/s), > 0.
+  int max_call_depth = 32;                  ///< Interpreter recursion guard, >= 1.
+  unsigned seed = 1;                        ///< RANDOM_SEARCH's headings.
+  MappingParameters mapping;
+  DoorSensingParameters doors;
+  ReflexParameters reflex;
+  TeleopParameters teleop;
+  LocalizationParameters localization;
+  TaskParameters tasks;
+  TaskInterpretationParameters interpretation;
+};
+
+/// Every violation, named as in config/tr_plus_controller.yaml ("mapping/cell_m must be ...").
+std::vector<std::string> ValidateParameters(const ControllerParameters& p);
+
+class NavigationController {
+ public:
+  /// Checks `program`, binds every condition and action it declares to the controller (a name
+  /// the controller does not know is an error at its location) and prepares to run `main_name`.
+  static std::unique_ptr<NavigationController> Create(const ProgramFile& program,
+                                                      const ControllerParameters& params,
+                                                      ControllerIo* io,
+                                                      std::vector<Diagnostic>* diagnostics,
+                                                      const std::string& main_name = "");
+  ~NavigationController();
+
+  void Start(double now);
+
+  // --- The map database's messages (world_server: room_door_graph, map_features, world_places)
+  void SetGraph(const spott_map::RoomDoorGraph& graph, double now);
+  void SetFeatures(const std::vector<spott_map::MapFeature>& features, double now);
+  void SetPlaces(const std::vector<spott_map::Place>& places);
+
+  // --- The robot
+  /// The localization's estimate (map -> base_link).
+  void SetPose(const Pose2& pose, double now);
+  /// Odometry: the pose in the odom frame and the speeds (m/s, rad/s).
+  void SetOdometry(const Pose2& odom, double linear_mps, double angular_rps, double now);
+  /// markov_localization's status: certain (TRACKING and not lost).
+  void SetLocalization(bool certain, double now);
+  void Sonar(const RangeRing& ring, double now);
+  void Infrared(const RangeRing& ring, double now);
+  /// A QUADRIS horizontal profile: its points (base frame) measured from `origin` (base frame).
+  void RangeProfile(const Vec2& origin, const std::vector<Vec2>& points, double now);
+  /// The pressed bumper segments as angles about +z from the robot's +x (rad); empty: none.
+  void Bumper(const std::vector<double>& pressed_angles_rad, double now);
+
+  // --- Navigate's answers
+  void NavigateFeedback(std::uint64_t seq, double distance_remaining_m, double now);
+  void NavigateDone(std::uint64_t seq, NavigateOutcome outcome, const std::string& reason,
+                    double now);
+
+  // --- Tasks
+  struct Acceptance {
+    bool accepted = false;
+    std::string message;  ///< Refused: "task:1:COLUMN: expected ..., found ...".
+  };
+  /// A new task command. A malformed one is refused (the running task goes on); an accepted
+  /// one preempts the running task (finished as "preempted"), waits for the robot to stop,
+  /// then is interpreted from the robot's pose.
+  Acceptance StartTask(std::int64_t id, const std::string& command, double now);
+  /// Cancels task `id` (finished as "preempted"; the robot stops).
+  void CancelTask(std::int64_t id, double now);
+  /// Parses and interprets `command` from the robot's pose against the map, without running it
+  /// (~parse_task). False with the located errors in `message`.
+  bool InterpretOnly(const std::string& command, std::string* interpretation,
+                     std::string* message) const;
+
+  /// The motions (reflexes, tele-operation, searches), the waits and the feedback. Call at the
+  /// controller's tick rate; Advance() at NextWakeTime() for the conditions' frequencies.
+  void Tick(double now);
+  void Advance(double now);
+  double NextWakeTime() const;
+
+  InterpreterState State() const;
+  const ProgramFile& program() const;
+  const std::string& main_name() const;
+  /// The rule that fired last with an action ("" before any): "PROGRAM[index]: cond -> action".
+  const std::string& firing_rule() const { return firing_rule_; }
+  const spott_map::MapDatabase& map() const { return db_; }
+  const std::optional<Pose2>& pose() const { return pose_; }
+  /// Features the controller added to the map so far (ids: sonar_N, quadris_N, contact_N).
+  const std::vector<std::string>& added_features() const { return added_ids_; }
+  int localization_fixes() const { return fixes_; }
+  bool has_task() const { return task_ != nullptr; }
+
+ private:
+  struct Task;
+  struct Reflex;
+  struct Drive;
+  NavigationController(const ControllerParameters& params, ControllerIo* io);
+  void Bind(Registry& registry);
+  void Settle(double now);
+  void Complete(Ticket ticket, bool ok) { completions_.emplace_back(ticket, ok); }
+  void Finish(const std::string& outcome, bool success, const std::string& message, double now,
+              bool defer = false);
+  void ApplyChange(MapChange change, double now);
+  void MapChanged();
+  void UpdateFiringRule();
+  void SendFeedback(double now);
+  bool Interpret(Task& task, double now, std::string* why);
+  bool SendGoalFor(Ticket ticket, const GoalRegion& goal, const TaskInterpretation& in, Speed speed,
+                   double now);
+  Task* TaskByStatus(const Value& status) const;
+  std::vector<Vec2> NewObstaclesNear(const Vec2& at, double radius) const;
+  bool Localized(double now) const;
+  bool InGoalRegion(const GoalRegion& region, const Vec2& p) const;
+  void ForgetPlacesLeft();
+  void StopDrive(Ticket ticket);
+  void DriveMotions(double now);
+  std::string PointToText(const Vec2& p) const;
+
+  ControllerParameters params_;
+  ControllerIo* io_;
+  std::unique_ptr<Interpreter> interpreter_;
+  spott_map::MapDatabase db_;
+  bool have_graph_ = false, have_features_ = false;
+  std::vector<spott_map::Place> places_;
+  SensorMapper sonar_mapper_, quadris_mapper_;
+  KnownStructure known_;
+  std::map<int, SensedBatch> batches_;
+  int next_batch_ = 0;
+  std::map<std::string, int> next_id_;
+  std::vector<std::string> added_ids_;
+
+  std::optional<Pose2> pose_;
+  double pose_time_ = -1e300;
+  std::optional<Pose2> odom_;
+  double odom_distance_m_ = 0.0;
+  double linear_mps_ = 0.0, angular_rps_ = 0.0;
+  bool certain_ = false;
+  double localization_time_ = -1e300;
+  double last_fix_time_ = -1e300;
+  double localized_at_ = -1e300;  ///< When `localized` was last computed TRUE.
+  double last_fix_odom_m_ = 0.0;
+  std::set<std::string> places_fixed_;  ///< Localization places the last fix was taken at.
+  int fixes_ = 0;
+  RangeRing sonar_, infrared_;
+  Pose2 sonar_pose_, infrared_pose_;
+  double sonar_time_ = -1e300, infrared_time_ = -1e300;
+  std::vector<Vec2> contact_;  ///< The pressed contact point (map), empty when none.
+
+  std::unique_ptr<Task> task_;
+  std::vector<std::unique_ptr<Task>> finishing_;  ///< Ended: reported once their scan settled.
+  std::vector<std::pair<Ticket, bool>> completions_;
+  std::map<Ticket, double> delayed_;  ///< Completions due later (retries).
+  bool dirty_ = false;                ///< A model change the conditions must see: scan.
+
+  std::uint64_t nav_seq_ = 0;
+  Ticket nav_owner_ = 0;
+  std::vector<std::unique_ptr<Reflex>> reflexes_;
+  bool wheels_taken_ = false;
+  std::map<Ticket, std::unique_ptr<Drive>> drives_;  ///< Tele-operation, searches.
+  std::string ptu_pattern_;
+  std::set<std::string> searched_;
+  std::mt19937 rng_;
+
+  std::string firing_rule_;
+  std::map<std::string, int> frame_rules_;  ///< Last firing rule of each active frame.
+  double last_feedback_s_ = -1e300;
+  std::string last_feedback_rule_;
+  std::string last_feedback_state_;
+};
+
+}  // namespace spott_tr_plus::controller

@@ -1,0 +1,142 @@
+// The perceptual mapping of SPOTT's condition processes MAP_OBJECTS_WITH_SONAR and
+// MAP_OBJECTS_WITH_QUADRIS (Figs. 5-6, section III-A): range data collected at the condition's
+// frequency, outliers removed, the rest fused into line segments; a feature enters the map
+// database only when it is not already there. Door states are sensed from the same beams (the
+// map database's graph keeps them: "sensor data may label existing map features").
+//
+// How (README "Sensed map"): every echo votes on an evidence grid (occupancy-grid fusion, the
+// paper's reference [10]): the cell of the echo gains, the cells the beam crossed lose. A cell is
+// confirmed when its score reaches `confirm_score`, which takes several consistent echoes: single
+// echoes (multipath, crosstalk) do not make features. Echoes are discarded when
+//   - they lie within `known_tolerance_m` of a feature the map holds (the CAD walls, closed door
+//     leaves, features sensed before): already there;
+//   - their beam crossed a known obstacle first (a reflection from beyond a wall);
+//   - they lie in a door's opening (the opening votes on the door's state instead) or outside
+//     every room;
+//   - the sonar reading is within `sonar_min_margin_m` of its minimum range (clamped readings say
+//     only "closer than this") or beyond `sonar_max_range_m`.
+// Newly confirmed cells are clustered and each cluster fused into line segments by recursive
+// splitting at the principal axis (a cluster whose cells all lie within `segment_residual_m` of
+// its axis is one segment); single cells are points.
+// ROS-free; the caller passes the robot's pose with each reading.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "spott_map/map_database.h"
+#include "spott_map/occupancy_raster.h"
+
+namespace spott_tr_plus::controller {
+
+using spott_map::Pose2;
+using spott_map::Vec2;
+
+/// One reading of a ring of range sensors (spott_msgs/RangeRing), in the robot's base frame.
+struct RangeRing {
+  std::vector<Pose2> mounts;   ///< Each transducer's position (m) and axis (rad), base frame.
+  std::vector<double> ranges;  ///< (m); NaN = dropped out; >= max_range_m = no echo.
+  double min_range_m = 0.0;
+  double max_range_m = 0.0;
+  double field_of_view_rad = 0.0;  ///< Full cone angle of each transducer.
+};
+
+struct MappingParameters {
+  double cell_m = 0.1;               ///< Evidence grid cell side (m), in [0.02, 0.5].
+  double sonar_max_range_m = 3.0;    ///< Sonar echoes farther away are not mapped (m), > 0.
+  double sonar_min_margin_m = 0.03;  ///< Echoes this close to the minimum range are clamped (m).
+  double range_finder_max_range_m = 3.5;  ///< QUADRIS points farther away are not mapped (m).
+  int sonar_hit_score = 1;                ///< Gained by an echo's cell, >= 1.
+  int range_finder_hit_score = 2;    ///< Gained by a QUADRIS point's cell (a laser line), >= 1.
+  int miss_score = 1;                ///< Lost by each cell a beam crossed, >= 0.
+  int confirm_score = 4;             ///< A cell this sure is an obstacle, >= 1.
+  int max_score = 8;                 ///< Scores are clamped to [-max_score, max_score].
+  double known_tolerance_m = 0.25;   ///< Echoes this close to a map feature are that feature (m).
+  double door_zone_m = 0.3;          ///< Half depth of a door opening's zone (m), > 0.
+  double segment_residual_m = 0.07;  ///< Fusion: cells this close to an axis form a segment (m).
+  double cluster_gap_m = 0.15;       ///< Confirmed cells this close form one cluster (m), > 0.
+};
+
+/// Door states from the beams that cross a door's opening.
+struct DoorSensingParameters {
+  double range_m = 3.0;           ///< Openings farther than this from the transducer: no vote (m).
+  double end_margin_m = 0.12;     ///< Beams crossing this close to a jamb: no vote (m), >= 0.
+  double match_m = 0.15;          ///< An echo this close to the opening's line: the leaf (m), > 0.
+  double beyond_m = 0.3;          ///< An echo this far past the opening: open (m), > 0.
+  double normal_angle_rad = 0.3;  ///< A no-echo beam this close to the door's normal: open (rad).
+  int votes = 3;                  ///< Net votes that decide a state, >= 1.
+  int max_votes = 6;              ///< Votes are clamped to [-max_votes, max_votes], >= votes.
+};
+
+std::vector<std::string> ValidateParameters(const MappingParameters& p);
+std::vector<std::string> ValidateParameters(const DoorSensingParameters& p);
+
+/// What the sensors found that the map does not hold yet.
+struct SensedBatch {
+  std::vector<spott_map::MapFeature> features;  ///< New features (ids empty: the owner names them).
+  std::vector<std::pair<std::string, spott_map::DoorState>> doors;  ///< Door states that changed.
+  bool empty() const { return features.empty() && doors.empty(); }
+};
+
+class SensorMapper {
+ public:
+  /// `sensor` labels the features' "sensor" attribute (sonar, quadris).
+  SensorMapper(std::string sensor, MappingParameters mapping, DoorSensingParameters doors,
+               bool sense_doors);
+
+  /// The map the echoes are compared with. Call when its features or door states change: what
+  /// is known is redrawn. The grid, the rooms and the doors' openings are taken from the first
+  /// map that has rooms (they do not change while the robot runs).
+  void SetMap(const spott_map::MapDatabase& db);
+
+  /// Integrates a sonar (or infrared) ring read with the robot at `robot` (map frame).
+  void AddRing(const RangeRing& ring, const Pose2& robot);
+  /// Integrates a range finder's points (QUADRIS profile; base frame) measured from `origin`
+  /// (base frame), with the robot at `robot`.
+  void AddPoints(const Vec2& origin, const std::vector<Vec2>& points, const Pose2& robot);
+
+  /// The features confirmed since the last call that `db` does not hold yet (fused), and the
+  /// door states sensed that differ from `db`'s.
+  SensedBatch Take(const spott_map::MapDatabase& db);
+
+  /// Confirmed cells waiting for Take (for tests and the live state).
+  std::size_t pending() const { return pending_.size(); }
+  /// Net door votes (> 0 closed, < 0 open) by door id.
+  const std::map<std::string, int>& door_votes() const { return door_votes_; }
+  int Score(const Vec2& p) const;  ///< Evidence at `p` (0 outside the grid).
+
+ private:
+  struct DoorZone {
+    std::string id;
+    spott_map::Segment opening;
+  };
+  void Beam(const Vec2& from, double angle, double range, bool echo, double max_range, int hit);
+  void VoteDoors(const Vec2& from, double angle, double range, bool echo, double max_range,
+                 double half_cone);
+  std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
+
+  std::string sensor_;
+  MappingParameters p_;
+  DoorSensingParameters d_;
+  bool sense_doors_;
+  std::uint64_t revision_ = ~0ull;
+  bool have_map_ = false;
+  bool static_drawn_ = false;
+  Vec2 origin_{0.0, 0.0};
+  int width_ = 0, height_ = 0;
+  std::vector<std::int8_t> score_;
+  std::vector<std::uint8_t> flags_;  ///< kKnown | kBlocked | kDoor | kOutside | kConfirmed.
+  std::vector<std::pair<int, int>> pending_;
+  std::vector<DoorZone> doors_;
+  std::map<std::string, int> door_votes_;
+};
+
+/// Fuses cell centres into line segments (recursive split at the principal axis) and points;
+/// `residual_m`: largest distance of a cell from its segment, `cell_m`: the cells' side.
+std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
+                                                    double residual_m, double cell_m);
+
+}  // namespace spott_tr_plus::controller

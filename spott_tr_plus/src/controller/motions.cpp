@@ -1,0 +1,207 @@
+#include "spott_tr_plus/controller/motions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "spott_map/local_map.h"
+
+namespace spott_tr_plus::controller {
+
+namespace {
+
+double Wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+std::string Violation(const std::string& name, const std::string& rule, double value) {
+  std::ostringstream out;
+  out << name << " must be " << rule << " (got " << value << ")";
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<std::string> ValidateParameters(const ReflexParameters& p) {
+  std::vector<std::string> v;
+  if (!(p.speed_mps > 0 && p.speed_mps <= 2))
+    v.push_back(Violation("speed_mps", "in (0, 2]", p.speed_mps));
+  if (!(p.turn_rps > 0 && p.turn_rps <= 5))
+    v.push_back(Violation("turn_rps", "in (0, 5]", p.turn_rps));
+  if (!(p.align_rad > 0 && p.align_rad < M_PI / 2))
+    v.push_back(Violation("align_rad", "in (0, pi/2)", p.align_rad));
+  if (!(p.timeout_s > 0)) v.push_back(Violation("timeout_s", "> 0", p.timeout_s));
+  if (!(p.infrared_close_m > 0))
+    v.push_back(Violation("infrared_close_m", "> 0", p.infrared_close_m));
+  if (!(p.known_tolerance_m >= 0))
+    v.push_back(Violation("known_tolerance_m", ">= 0", p.known_tolerance_m));
+  return v;
+}
+
+std::vector<std::string> ValidateParameters(const TeleopParameters& p) {
+  std::vector<std::string> v;
+  if (!(p.stop_distance_m > 0)) v.push_back(Violation("stop_distance_m", "> 0", p.stop_distance_m));
+  if (!(p.lookahead_m > 0)) v.push_back(Violation("lookahead_m", "> 0", p.lookahead_m));
+  if (!(p.clearance_m >= 0)) v.push_back(Violation("clearance_m", ">= 0", p.clearance_m));
+  if (!(p.max_deviation_rad >= 0 && p.max_deviation_rad <= M_PI / 2))
+    v.push_back(Violation("max_deviation_rad", "in [0, pi/2]", p.max_deviation_rad));
+  if (!(p.heading_gain_per_s > 0))
+    v.push_back(Violation("heading_gain_per_s", "> 0", p.heading_gain_per_s));
+  if (!(p.blocked_timeout_s > 0))
+    v.push_back(Violation("blocked_timeout_s", "> 0", p.blocked_timeout_s));
+  return v;
+}
+
+// --- MoveAway ------------------------------------------------------------------------------------
+
+MoveAway::MoveAway(const Vec2& source, double distance_m, const Pose2& start, double now_s,
+                   const ReflexParameters& params)
+    : source_(source),
+      target_distance_m_((start.Position() - source).norm() + std::max(0.0, distance_m)),
+      started_s_(now_s),
+      params_(params) {}
+
+std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
+  const Vec2 away = pose.Position() - source_;
+  const double d = away.norm();
+  if (d >= target_distance_m_) return std::nullopt;
+  if (now_s - started_s_ > params_.timeout_s) {
+    timed_out_ = true;
+    return std::nullopt;
+  }
+  const double want = d > 1e-6 ? std::atan2(away.y(), away.x()) : pose.yaw + M_PI;
+  // Forwards or backwards, whichever axis direction is closer to "away".
+  const double forward_error = Wrap(want - pose.yaw);
+  const double backward_error = Wrap(want - (pose.yaw + M_PI));
+  const bool forwards = std::abs(forward_error) <= std::abs(backward_error);
+  const double error = forwards ? forward_error : backward_error;
+  Velocity v;
+  if (std::abs(error) > params_.align_rad) {
+    v.angular_rps = std::copysign(params_.turn_rps, error);  // turn in place first
+    return v;
+  }
+  v.linear_mps = (forwards ? 1.0 : -1.0) * params_.speed_mps;
+  v.angular_rps = std::clamp(2.0 * error, -params_.turn_rps, params_.turn_rps);
+  return v;
+}
+
+// --- KnownStructure ------------------------------------------------------------------------------
+
+void KnownStructure::Build(const spott_map::MapDatabase& db) {
+  structure_ = spott_map::MapDatabase();
+  for (const spott_map::MapFeature& f : db.features()) {
+    if (f.source == spott_map::FeatureSource::kCad) structure_.AddFeature(f);
+  }
+  for (const spott_map::Door& door : db.graph().doors()) {
+    if (door.state != spott_map::DoorState::kClosed) continue;
+    structure_.AddFeature(spott_map::MakeSegment("door:" + door.id, door.opening, "door", 0.05));
+  }
+  built_ = true;
+}
+
+double KnownStructure::FreeRun(const Vec2& from, double heading, double radius_m,
+                               double max_m) const {
+  if (!built_) return max_m;
+  const Vec2 dir(std::cos(heading), std::sin(heading));
+  const Vec2 end = from + max_m * dir;
+  const spott_map::Box swept =
+      spott_map::Box{from.cwiseMin(end), from.cwiseMax(end)}.Inflated(radius_m + 0.01);
+  const std::vector<const spott_map::MapFeature*> near = structure_.FeaturesIn(swept);
+  if (near.empty()) return max_m;
+  const auto touches = [&](double s) {
+    const Vec2 c = from + s * dir;
+    for (const spott_map::MapFeature* f : near) {
+      if (f->DistanceTo(c) <= radius_m) return true;
+    }
+    return false;
+  };
+  if (touches(0.0)) return 0.0;
+  const double step = 0.02;
+  for (double s = step; s < max_m + step; s += step) {
+    const double at = std::min(s, max_m);
+    if (!touches(at)) continue;
+    double lo = at - step, hi = at;  // free at lo, touching at hi
+    while (hi - lo > 1e-3) {
+      const double mid = 0.5 * (lo + hi);
+      (touches(mid) ? hi : lo) = mid;
+    }
+    return lo;
+  }
+  return max_m;
+}
+
+// --- Teleop --------------------------------------------------------------------------------------
+
+Teleop::Teleop(double direction_rad, bool reverse, double speed_mps, double max_angular_rps,
+               double robot_radius_m, const TeleopParameters& params, double now_s)
+    : direction_(Wrap(direction_rad)),
+      reverse_(reverse),
+      speed_(speed_mps),
+      max_angular_(max_angular_rps),
+      radius_(robot_radius_m),
+      p_(params),
+      last_progress_s_(now_s) {}
+
+bool Teleop::Clear(const Vec2& from, double heading, const std::vector<Vec2>& obstacles) const {
+  const Vec2 dir(std::cos(heading), std::sin(heading));
+  const double half = radius_ + p_.clearance_m;
+  for (const Vec2& o : obstacles) {
+    const Vec2 d = o - from;
+    const double along = d.dot(dir);
+    if (along < 0.0 || along > p_.lookahead_m + radius_) continue;
+    const double across = std::abs(d.x() * dir.y() - d.y() * dir.x());
+    if (across < half) return false;
+  }
+  return true;
+}
+
+Teleop::Step Teleop::Update(const Pose2& pose, const KnownStructure& known,
+                            const std::vector<Vec2>& obstacles, double now_s) {
+  Step step;
+  const Vec2 at = pose.Position();
+  // The known structure in the commanded direction (the "original path").
+  step.structure_m = known.FreeRun(at, direction_, radius_, p_.stop_distance_m + 5.0);
+  if (step.structure_m <= p_.stop_distance_m) {
+    step.stopped = true;
+    std::ostringstream why;
+    why.precision(2);
+    why << std::fixed << "a known structure " << step.structure_m << " m ahead (stop distance "
+        << p_.stop_distance_m << " m)";
+    step.why = why.str();
+    return step;
+  }
+  // The heading closest to the commanded direction whose way is clear of new obstacles (and of
+  // known structure within the look-ahead).
+  std::optional<double> chosen;
+  const double step_rad = M_PI / 36;
+  for (double off = 0.0; off <= p_.max_deviation_rad + 1e-9 && !chosen; off += step_rad) {
+    for (const double sign : {1.0, -1.0}) {
+      if (off == 0.0 && sign < 0) continue;
+      const double h = Wrap(direction_ + sign * off);
+      if (!Clear(at, h, obstacles)) continue;
+      if (off > 0.0 && known.FreeRun(at, h, radius_, p_.lookahead_m) < p_.lookahead_m) continue;
+      chosen = h;
+      break;
+    }
+  }
+  if (!chosen) {
+    step.heading = direction_;
+    if (now_s - last_progress_s_ > p_.blocked_timeout_s) {
+      step.stopped = true;
+      step.why = "new obstacles block every way within the deviation allowed";
+    }
+    return step;  // wait for the way to clear
+  }
+  last_progress_s_ = now_s;
+  step.heading = *chosen;
+  const double facing = reverse_ ? pose.yaw + M_PI : pose.yaw;
+  const double error = Wrap(*chosen - facing);
+  step.command.angular_rps = std::clamp(p_.heading_gain_per_s * error, -max_angular_, max_angular_);
+  if (std::abs(error) < 0.6) {
+    // Slow down as the structure ahead comes near.
+    const double room = step.structure_m - p_.stop_distance_m;
+    const double v = std::min(speed_, std::max(0.05, room)) * std::cos(error);
+    step.command.linear_mps = reverse_ ? -v : v;
+  }
+  return step;
+}
+
+}  // namespace spott_tr_plus::controller

@@ -1,0 +1,394 @@
+#include "spott_tr_plus/controller/sensor_mapper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "spott_map/local_map.h"
+
+namespace spott_tr_plus::controller {
+
+namespace {
+
+enum Flag : std::uint8_t {
+  kKnown = 1,      // within known_tolerance_m of a map feature or a closed door
+  kBlocked = 2,    // a map obstacle meets the cell
+  kDoor = 4,       // in a door opening's zone
+  kOutside = 8,    // outside every room
+  kConfirmed = 16  // confirmed (sent to Take once)
+};
+
+std::string Violation(const std::string& name, const std::string& rule, double value) {
+  std::ostringstream out;
+  out << name << " must be " << rule << " (got " << value << ")";
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<std::string> ValidateParameters(const MappingParameters& p) {
+  std::vector<std::string> v;
+  const auto positive = [&](const char* n, double x) {
+    if (!(std::isfinite(x) && x > 0)) v.push_back(Violation(n, "> 0", x));
+  };
+  const auto non_negative = [&](const char* n, double x) {
+    if (!(std::isfinite(x) && x >= 0)) v.push_back(Violation(n, ">= 0", x));
+  };
+  if (!(p.cell_m >= 0.02 && p.cell_m <= 0.5))
+    v.push_back(Violation("cell_m", "in [0.02, 0.5]", p.cell_m));
+  positive("sonar_max_range_m", p.sonar_max_range_m);
+  non_negative("sonar_min_margin_m", p.sonar_min_margin_m);
+  positive("range_finder_max_range_m", p.range_finder_max_range_m);
+  if (p.sonar_hit_score < 1) v.push_back(Violation("sonar_hit_score", ">= 1", p.sonar_hit_score));
+  if (p.range_finder_hit_score < 1)
+    v.push_back(Violation("range_finder_hit_score", ">= 1", p.range_finder_hit_score));
+  if (p.miss_score < 0) v.push_back(Violation("miss_score", ">= 0", p.miss_score));
+  if (p.confirm_score < 1) v.push_back(Violation("confirm_score", ">= 1", p.confirm_score));
+  if (p.max_score < p.confirm_score || p.max_score > 127)
+    v.push_back(Violation("max_score", "in [confirm_score, 127]", p.max_score));
+  non_negative("known_tolerance_m", p.known_tolerance_m);
+  positive("door_zone_m", p.door_zone_m);
+  positive("segment_residual_m", p.segment_residual_m);
+  positive("cluster_gap_m", p.cluster_gap_m);
+  return v;
+}
+
+std::vector<std::string> ValidateParameters(const DoorSensingParameters& p) {
+  std::vector<std::string> v;
+  if (!(std::isfinite(p.range_m) && p.range_m > 0))
+    v.push_back(Violation("range_m", "> 0", p.range_m));
+  if (!(std::isfinite(p.end_margin_m) && p.end_margin_m >= 0))
+    v.push_back(Violation("end_margin_m", ">= 0", p.end_margin_m));
+  if (!(std::isfinite(p.match_m) && p.match_m > 0))
+    v.push_back(Violation("match_m", "> 0", p.match_m));
+  if (!(std::isfinite(p.beyond_m) && p.beyond_m > 0))
+    v.push_back(Violation("beyond_m", "> 0", p.beyond_m));
+  if (!(p.normal_angle_rad >= 0 && p.normal_angle_rad < M_PI / 2))
+    v.push_back(Violation("normal_angle_rad", "in [0, pi/2)", p.normal_angle_rad));
+  if (p.votes < 1) v.push_back(Violation("votes", ">= 1", p.votes));
+  if (p.max_votes < p.votes) v.push_back(Violation("max_votes", ">= votes", p.max_votes));
+  return v;
+}
+
+SensorMapper::SensorMapper(std::string sensor, MappingParameters mapping,
+                           DoorSensingParameters doors, bool sense_doors)
+    : sensor_(std::move(sensor)), p_(mapping), d_(doors), sense_doors_(sense_doors) {}
+
+void SensorMapper::SetMap(const spott_map::MapDatabase& db) {
+  // The grid covers every room (with a margin); it is laid out once, at the first map.
+  if (db.graph().rooms().empty()) return;
+  if (!have_map_) {
+    spott_map::Box box;
+    bool any = false;
+    for (const spott_map::Room& r : db.graph().rooms()) {
+      const spott_map::Box b = spott_map::BoundingBox(r.polygon);
+      if (!any) box = b;
+      box.min = box.min.cwiseMin(b.min);
+      box.max = box.max.cwiseMax(b.max);
+      any = true;
+    }
+    for (const spott_map::MapFeature& f : db.features()) {
+      const spott_map::Box b = f.Bounds();
+      if (!any) box = b;
+      box.min = box.min.cwiseMin(b.min);
+      box.max = box.max.cwiseMax(b.max);
+      any = true;
+    }
+    if (!any) return;
+    box = box.Inflated(1.0);
+    origin_ = box.min;
+    width_ = std::max(1, static_cast<int>(std::ceil((box.max.x() - box.min.x()) / p_.cell_m)));
+    height_ = std::max(1, static_cast<int>(std::ceil((box.max.y() - box.min.y()) / p_.cell_m)));
+    score_.assign(static_cast<std::size_t>(width_) * height_, 0);
+    flags_.assign(score_.size(), 0);
+    have_map_ = true;
+  }
+  // What does not change while the robot runs (the rooms, the doors' openings): once.
+  if (doors_.empty() && !static_drawn_) {
+    for (const spott_map::Door& door : db.graph().doors()) {
+      if (door.kind != spott_map::DoorKind::kDoor) continue;
+      doors_.push_back({door.id, door.opening});
+      door_votes_[door.id] = 0;
+    }
+    for (int iy = 0; iy < height_; ++iy) {
+      for (int ix = 0; ix < width_; ++ix) {
+        const Vec2 c = origin_ + p_.cell_m * Vec2(ix + 0.5, iy + 0.5);
+        std::uint8_t& f = flags_[Index(ix, iy)];
+        if (!db.graph().RoomContaining(c)) f |= kOutside;
+        for (const DoorZone& z : doors_) {
+          const Vec2 dir = z.opening.Direction();
+          const spott_map::Segment longer{z.opening.a - 0.1 * dir, z.opening.b + 0.1 * dir};
+          if (spott_map::DistancePointSegment(c, longer) <= p_.door_zone_m) {
+            f |= kDoor;
+            break;
+          }
+        }
+      }
+    }
+    static_drawn_ = true;
+  }
+  // What the map holds now: known (within the tolerance of a feature or a closed door) and
+  // blocked (an obstacle meets the cell).
+  spott_map::OccupancyRaster known(origin_, width_, height_, p_.cell_m);
+  spott_map::OccupancyRaster blocked(origin_, width_, height_, p_.cell_m);
+  spott_map::RasterizeDatabase(db, p_.known_tolerance_m, 0.05, known);
+  spott_map::RasterizeDatabase(db, 0.0, 0.05, blocked);
+  for (int iy = 0; iy < height_; ++iy) {
+    for (int ix = 0; ix < width_; ++ix) {
+      std::uint8_t& f = flags_[Index(ix, iy)];
+      f &= static_cast<std::uint8_t>(kConfirmed | kDoor | kOutside);
+      if (known.at(ix, iy) != spott_map::Cell::kFree) f |= kKnown;
+      if (blocked.at(ix, iy) == spott_map::Cell::kObstacle) f |= kBlocked;
+    }
+  }
+  revision_ = db.revision();
+}
+
+int SensorMapper::Score(const Vec2& p) const {
+  if (!have_map_) return 0;
+  const int ix = static_cast<int>(std::floor((p.x() - origin_.x()) / p_.cell_m));
+  const int iy = static_cast<int>(std::floor((p.y() - origin_.y()) / p_.cell_m));
+  if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return 0;
+  return score_[Index(ix, iy)];
+}
+
+void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo, double max_range,
+                        int hit) {
+  if (!echo || !have_map_) return;
+  const Vec2 dir(std::cos(angle), std::sin(angle));
+  const double free_to = std::min(range, max_range) - p_.cell_m;
+  const double step = 0.5 * p_.cell_m;
+  bool crossed = false;
+  int last = -1;
+  for (double s = 0.0; s < free_to; s += step) {
+    const Vec2 q = from + s * dir;
+    const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
+    const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
+    if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return;
+    const int index = static_cast<int>(Index(ix, iy));
+    if (index == last) continue;
+    last = index;
+    // A known obstacle crossed well before the echo: what echoed lies beyond it (a reflection).
+    if ((flags_[index] & kBlocked) && s > 0.05 && s < range - p_.known_tolerance_m) crossed = true;
+    if (!(flags_[index] & kConfirmed)) {
+      score_[index] =
+          static_cast<std::int8_t>(std::max(-p_.max_score, score_[index] - p_.miss_score));
+    }
+  }
+  if (crossed || range > max_range) return;
+  const Vec2 h = from + range * dir;
+  const int ix = static_cast<int>(std::floor((h.x() - origin_.x()) / p_.cell_m));
+  const int iy = static_cast<int>(std::floor((h.y() - origin_.y()) / p_.cell_m));
+  if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return;
+  const std::size_t index = Index(ix, iy);
+  if (flags_[index] & (kKnown | kBlocked | kDoor | kOutside)) return;
+  score_[index] = static_cast<std::int8_t>(std::min(p_.max_score, score_[index] + hit));
+  if (score_[index] >= p_.confirm_score && !(flags_[index] & kConfirmed)) {
+    flags_[index] |= kConfirmed;
+    pending_.emplace_back(ix, iy);
+  }
+}
+
+void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool echo,
+                             double max_range, double half_cone) {
+  if (!sense_doors_ || !have_map_) return;
+  const Vec2 dir(std::cos(angle), std::sin(angle));
+  for (const DoorZone& z : doors_) {
+    const double len = z.opening.Length();
+    if (len <= 2.0 * d_.end_margin_m) continue;
+    const Vec2 u = z.opening.Direction();
+    if (spott_map::DistancePointSegment(from, z.opening) > d_.range_m) continue;
+    const Vec2 normal(-u.y(), u.x());
+    const double incidence = std::acos(std::min(1.0, std::abs(normal.dot(dir))));
+    if (incidence > d_.normal_angle_rad) continue;  // oblique: a leaf would not echo
+    const spott_map::Segment ray{from, from + d_.range_m * dir};
+    const auto x = spott_map::SegmentIntersection(ray, z.opening);
+    if (!x) continue;
+    const double t = (*x - from).norm();
+    if (t < 0.05 || t > std::min(d_.range_m, max_range)) continue;
+    // The whole cone between the jambs (measured along the opening).
+    const double margin = d_.end_margin_m + t * std::tan(half_cone) / std::cos(incidence);
+    const double along = (*x - z.opening.a).dot(u);
+    if (along < margin || along > len - margin) continue;
+    // The way to the opening must be clear of known obstacles (not through a wall).
+    bool clear = true;
+    for (double s = 0.05; s < t - 0.1 && clear; s += 0.5 * p_.cell_m) {
+      const Vec2 q = from + s * dir;
+      const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
+      const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
+      if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) {
+        clear = false;
+      } else if (flags_[Index(ix, iy)] & kBlocked) {
+        clear = false;
+      }
+    }
+    if (!clear) continue;
+    int vote = 0;
+    if (echo && std::abs(range - t) <= d_.match_m) {
+      vote = 1;  // the leaf
+    } else if ((echo && range > t + d_.beyond_m) || !echo) {
+      vote = -1;  // through the opening (a leaf this square on would have echoed)
+    }
+    if (vote == 0) continue;
+    int& v = door_votes_[z.id];
+    v = std::clamp(v + vote, -d_.max_votes, d_.max_votes);
+  }
+}
+
+void SensorMapper::AddRing(const RangeRing& ring, const Pose2& robot) {
+  if (!have_map_) return;
+  const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
+  for (std::size_t i = 0; i < ring.mounts.size() && i < ring.ranges.size(); ++i) {
+    const double r = ring.ranges[i];
+    if (!std::isfinite(r)) continue;
+    const Pose2& m = ring.mounts[i];
+    const Vec2 from(robot.x + c * m.x - s * m.y, robot.y + s * m.x + c * m.y);
+    const double angle = robot.yaw + m.yaw;
+    const bool echo = r < ring.max_range_m - 1e-3;
+    VoteDoors(from, angle, r, echo, ring.max_range_m, 0.5 * ring.field_of_view_rad);
+    if (echo && r <= ring.min_range_m + p_.sonar_min_margin_m) continue;  // clamped reading
+    Beam(from, angle, r, echo, p_.sonar_max_range_m, p_.sonar_hit_score);
+  }
+}
+
+void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points,
+                             const Pose2& robot) {
+  if (!have_map_) return;
+  const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
+  const auto to_map = [&](const Vec2& b) {
+    return Vec2(robot.x + c * b.x() - s * b.y(), robot.y + s * b.x() + c * b.y());
+  };
+  const Vec2 from = to_map(origin);
+  for (const Vec2& p : points) {
+    const Vec2 q = to_map(p);
+    const Vec2 d = q - from;
+    const double r = d.norm();
+    if (!std::isfinite(r) || r < 1e-3) continue;
+    Beam(from, std::atan2(d.y(), d.x()), r, true, p_.range_finder_max_range_m,
+         p_.range_finder_hit_score);
+  }
+}
+
+SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
+  SensedBatch batch;
+  if (!have_map_) return batch;
+  // Cells that the map has come to hold meanwhile (a feature added from another sensor) are
+  // already there.
+  std::vector<Vec2> cells;
+  for (const auto& [ix, iy] : pending_) {
+    const Vec2 c = origin_ + p_.cell_m * Vec2(ix + 0.5, iy + 0.5);
+    bool known = false;
+    const spott_map::Box around{c - Vec2::Constant(p_.known_tolerance_m),
+                                c + Vec2::Constant(p_.known_tolerance_m)};
+    for (const spott_map::MapFeature* f : db.FeaturesIn(around)) {
+      if (f->DistanceTo(c) <= p_.known_tolerance_m) {
+        known = true;
+        break;
+      }
+    }
+    if (!known) cells.push_back(c);
+  }
+  pending_.clear();
+  // Clusters of cells within cluster_gap_m of each other, each fused into segments.
+  std::vector<bool> used(cells.size(), false);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (used[i]) continue;
+    std::vector<Vec2> cluster;
+    std::deque<std::size_t> queue{i};
+    used[i] = true;
+    while (!queue.empty()) {
+      const std::size_t k = queue.front();
+      queue.pop_front();
+      cluster.push_back(cells[k]);
+      for (std::size_t j = 0; j < cells.size(); ++j) {
+        if (!used[j] && (cells[j] - cells[k]).norm() <= p_.cluster_gap_m) {
+          used[j] = true;
+          queue.push_back(j);
+        }
+      }
+    }
+    for (spott_map::MapFeature& f : FuseIntoSegments(cluster, p_.segment_residual_m, p_.cell_m)) {
+      f.source = spott_map::FeatureSource::kSensed;
+      f.attributes["sensor"] = sensor_;
+      batch.features.push_back(std::move(f));
+    }
+  }
+  // Door states: a door whose net votes decide a state the map does not have.
+  if (sense_doors_) {
+    for (const spott_map::Door& door : db.graph().doors()) {
+      if (door.kind != spott_map::DoorKind::kDoor) continue;
+      auto it = door_votes_.find(door.id);
+      if (it == door_votes_.end()) continue;
+      if (it->second >= d_.votes && door.state != spott_map::DoorState::kClosed) {
+        batch.doors.emplace_back(door.id, spott_map::DoorState::kClosed);
+      } else if (it->second <= -d_.votes && door.state != spott_map::DoorState::kOpen) {
+        batch.doors.emplace_back(door.id, spott_map::DoorState::kOpen);
+      }
+    }
+  }
+  return batch;
+}
+
+namespace {
+
+void Fuse(const std::vector<Vec2>& cells, double residual, double cell, int depth,
+          std::vector<spott_map::MapFeature>& out) {
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& c : cells) mean += c;
+  mean /= static_cast<double>(cells.size());
+  if (cells.size() == 1) {
+    spott_map::MapFeature f = spott_map::MakePoint("", mean, "");
+    out.push_back(std::move(f));
+    return;
+  }
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const Vec2& c : cells) cov += (c - mean) * (c - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  const Vec2 axis = eig.eigenvectors().col(1).normalized();  // the largest eigenvalue's
+  const Vec2 normal(-axis.y(), axis.x());
+  double tmin = 1e300, tmax = -1e300, worst = 0.0;
+  std::vector<double> t(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    t[i] = (cells[i] - mean).dot(axis);
+    tmin = std::min(tmin, t[i]);
+    tmax = std::max(tmax, t[i]);
+    worst = std::max(worst, std::abs((cells[i] - mean).dot(normal)));
+  }
+  if (worst <= residual || depth >= 8) {
+    if (tmax - tmin < 0.9 * cell) {
+      out.push_back(spott_map::MakePoint("", mean, ""));
+      return;
+    }
+    // The cells' extent along the axis, to the outer edges of the end cells.
+    const spott_map::Segment s{mean + (tmin - 0.5 * cell) * axis,
+                               mean + (tmax + 0.5 * cell) * axis};
+    out.push_back(spott_map::MakeSegment("", s, "", 0.0));
+    return;
+  }
+  // Split at the median projection along the axis.
+  std::vector<double> sorted = t;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  std::vector<Vec2> low, high;
+  for (std::size_t i = 0; i < cells.size(); ++i) (t[i] < median ? low : high).push_back(cells[i]);
+  if (low.empty() || high.empty()) {  // all on one side of the median: split in halves
+    low.assign(cells.begin(), cells.begin() + cells.size() / 2);
+    high.assign(cells.begin() + cells.size() / 2, cells.end());
+  }
+  Fuse(low, residual, cell, depth + 1, out);
+  Fuse(high, residual, cell, depth + 1, out);
+}
+
+}  // namespace
+
+std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
+                                                    double residual_m, double cell_m) {
+  std::vector<spott_map::MapFeature> out;
+  if (!cells.empty()) Fuse(cells, residual_m, cell_m, 0, out);
+  return out;
+}
+
+}  // namespace spott_tr_plus::controller

@@ -1,0 +1,726 @@
+// tr_plus_controller: SPOTT's behavioural controller on the robot (Zelek and Levine III-C,
+// Figs. 3-13): the TR+ navigation program run by the interpreter with its conditions and
+// actions bound in C++ (controller/navigation_controller.h). Glue only: reads and validates the
+// parameters, converts messages for the ROS-free core, and carries out what it asks.
+//
+// Action /task (spott_msgs/Task): a task command; a malformed one is rejected with its column,
+// a new one preempts the running one (the robot stops first). Service ~parse_task: interprets a
+// command from the robot's real pose without running it.
+// Subscribes: room_door_graph, map_features, world_places (world_server, latched), sonar,
+// infrared (spott_msgs/RangeRing), bumper, range_profile (QUADRIS), odom, localization_status.
+// tf: map -> base_link (the localization's estimate), base_link -> the QUADRIS heads.
+// Publishes: map_updates (spott_msgs/MapUpdate: the sensed features, door states), cmd_vel/reflex,
+// cmd_vel/teleop, cmd_vel/executive (the arbiter's inputs), range_profile/point_head (the heads'
+// scanning pattern), ~state (spott_msgs/TRProgramState, latched, on change), ~tree_dot (the live
+// TR trees as DOT, latched, on change), ~firing_rule_marker (rviz text over the robot).
+// Calls: cmd_vel_arbiter/take_wheels, release_wheels; harmonic_planner/navigate (Navigate).
+#include <actionlib/client/simple_action_client.h>
+#include <actionlib/server/action_server.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <spott_msgs/BumperRing.h>
+#include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/MapUpdate.h>
+#include <spott_msgs/NavigateAction.h>
+#include <spott_msgs/ParseTask.h>
+#include <spott_msgs/RangeProfile.h>
+#include <spott_msgs/RangeRing.h>
+#include <spott_msgs/ReleaseWheels.h>
+#include <spott_msgs/RoomDoorGraph.h>
+#include <spott_msgs/TakeWheels.h>
+#include <spott_msgs/TaskAction.h>
+#include <spott_msgs/WorldPlaces.h>
+#include <std_msgs/String.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/Marker.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "spott_map/ros/conversions.h"
+#include "spott_ros/parameter_reader.h"
+#include "spott_ros/pose_conversions.h"
+#include "spott_ros/robot_geometry.h"
+#include "spott_tr_plus/checker.h"
+#include "spott_tr_plus/controller/navigation_controller.h"
+#include "spott_tr_plus/dot_export.h"
+#include "spott_tr_plus/parser.h"
+#include "spott_tr_plus/ros/conversions.h"
+
+namespace spott_tr_plus::controller {
+namespace {
+
+namespace mconv = spott_map::ros_conversions;
+namespace tconv = spott_tr_plus::ros_conversions;
+
+struct NodeParameters {
+  std::string program_file;  ///< Required: programs/spott_navigation.tr.
+  std::string main;          ///< Empty: the file's main program.
+  std::string frame_id = "map";
+  std::string base_frame = "base_link";
+  std::string robot_description = "robot_description";
+  std::string navigate_action = "harmonic_planner/navigate";
+  std::string arbiter = "cmd_vel_arbiter";
+  double tick_rate_hz = 20.0;  ///< Motions, waits, feedback (Hz), (0, 200].
+  /// No localization status (localization:=truth): the pose is taken as certain.
+  bool assume_localized = false;
+  std::vector<std::string> pan_joints{"quadris_1_pan_joint", "quadris_2_pan_joint"};
+  std::vector<std::string> tilt_joints{"quadris_1_tilt_joint", "quadris_2_tilt_joint"};
+  double ptu_sweep_rad = 0.8;        ///< "room": pan sweep amplitude (rad).
+  double ptu_sweep_period_s = 8.0;   ///< "room": sweep period (s), > 0.
+  double ptu_hallway_pan_rad = 0.3;  ///< "hallway": the heads look ahead, this far apart (rad).
+  double ptu_min_height_m = 0.05;    ///< QUADRIS points lower than this are the floor (m).
+  double ptu_max_height_m = 2.0;     ///< ... higher than this, above the robot (m).
+  double marker_height_m = 1.4;      ///< The firing rule's text over the robot (m).
+  ControllerParameters controller;
+};
+
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
+  r.Get("program_file", p.program_file);
+  r.Get("main", p.main);
+  r.Get("frame_id", p.frame_id);
+  r.Get("base_frame", p.base_frame);
+  r.Get("robot_description", p.robot_description);
+  r.Get("navigate_action", p.navigate_action);
+  r.Get("arbiter", p.arbiter);
+  r.Get("tick_rate_hz", p.tick_rate_hz, "Hz");
+  r.Get("assume_localized", p.assume_localized);
+  r.Get("ptu/pan_joints", p.pan_joints);
+  r.Get("ptu/tilt_joints", p.tilt_joints);
+  r.Get("ptu/sweep_rad", p.ptu_sweep_rad, "rad");
+  r.Get("ptu/sweep_period_s", p.ptu_sweep_period_s, "s");
+  r.Get("ptu/hallway_pan_rad", p.ptu_hallway_pan_rad, "rad");
+  r.Get("ptu/min_height_m", p.ptu_min_height_m, "m");
+  r.Get("ptu/max_height_m", p.ptu_max_height_m, "m");
+  r.Get("marker_height_m", p.marker_height_m, "m");
+  ControllerParameters& c = p.controller;
+  int seed = static_cast<int>(c.seed);
+  r.Get("seed", seed);
+  c.seed = static_cast<unsigned>(seed);
+  r.Get("max_call_depth", c.max_call_depth);
+  r.Get("max_localization_error_m", c.max_localization_error_m, "m");
+  r.Get("drive/max_linear_mps", c.max_linear_mps, "m/s");
+  r.Get("drive/max_angular_rps", c.max_angular_rps, "rad/s");
+  auto& m = c.mapping;
+  r.Get("mapping/cell_m", m.cell_m, "m");
+  r.Get("mapping/sonar_max_range_m", m.sonar_max_range_m, "m");
+  r.Get("mapping/sonar_min_margin_m", m.sonar_min_margin_m, "m");
+  r.Get("mapping/range_finder_max_range_m", m.range_finder_max_range_m, "m");
+  r.Get("mapping/sonar_hit_score", m.sonar_hit_score);
+  r.Get("mapping/range_finder_hit_score", m.range_finder_hit_score);
+  r.Get("mapping/miss_score", m.miss_score);
+  r.Get("mapping/confirm_score", m.confirm_score);
+  r.Get("mapping/max_score", m.max_score);
+  r.Get("mapping/known_tolerance_m", m.known_tolerance_m, "m");
+  r.Get("mapping/door_zone_m", m.door_zone_m, "m");
+  r.Get("mapping/segment_residual_m", m.segment_residual_m, "m");
+  r.Get("mapping/cluster_gap_m", m.cluster_gap_m, "m");
+  auto& d = c.doors;
+  r.Get("doors/range_m", d.range_m, "m");
+  r.Get("doors/end_margin_m", d.end_margin_m, "m");
+  r.Get("doors/match_m", d.match_m, "m");
+  r.Get("doors/beyond_m", d.beyond_m, "m");
+  r.Get("doors/normal_angle_rad", d.normal_angle_rad, "rad");
+  r.Get("doors/votes", d.votes);
+  r.Get("doors/max_votes", d.max_votes);
+  auto& x = c.reflex;
+  r.Get("reflex/speed_mps", x.speed_mps, "m/s");
+  r.Get("reflex/turn_rps", x.turn_rps, "rad/s");
+  r.Get("reflex/align_rad", x.align_rad, "rad");
+  r.Get("reflex/timeout_s", x.timeout_s, "s");
+  r.Get("reflex/infrared_close_m", x.infrared_close_m, "m");
+  r.Get("reflex/known_tolerance_m", x.known_tolerance_m, "m");
+  auto& t = c.teleop;
+  r.Get("teleop/stop_distance_m", t.stop_distance_m, "m");
+  r.Get("teleop/lookahead_m", t.lookahead_m, "m");
+  r.Get("teleop/clearance_m", t.clearance_m, "m");
+  r.Get("teleop/max_deviation_rad", t.max_deviation_rad, "rad");
+  r.Get("teleop/heading_gain_per_s", t.heading_gain_per_s, "1/s");
+  r.Get("teleop/blocked_timeout_s", t.blocked_timeout_s, "s");
+  auto& l = c.localization;
+  r.Get("localization/period_s", l.period_s, "s");
+  r.Get("localization/distance_m", l.distance_m, "m");
+  r.Get("localization/place_radius_m", l.place_radius_m, "m");
+  r.Get("localization/max_age_s", l.max_age_s, "s");
+  auto& k = c.tasks;
+  r.Get("tasks/goal_tolerance_m", k.goal_tolerance_m, "m");
+  r.Get("tasks/navigate_retries", k.navigate_retries);
+  r.Get("tasks/retry_delay_s", k.retry_delay_s, "s");
+  r.Get("tasks/stop_speed_mps", k.stop_speed_mps, "m/s");
+  r.Get("tasks/stop_timeout_s", k.stop_timeout_s, "s");
+  r.Get("tasks/pose_timeout_s", k.pose_timeout_s, "s");
+  r.Get("tasks/search_turn_rps", k.search_turn_rps, "rad/s");
+  r.Get("tasks/obstacle_ahead_m", k.obstacle_ahead_m, "m");
+  r.Get("tasks/feedback_period_s", k.feedback_period_s, "s");
+  auto& i = c.interpretation;
+  r.Get("task/at_distance_m", i.at_distance_m, "m");
+  r.Get("task/against_distance_m", i.against_distance_m, "m");
+  r.Get("task/near_distance_m", i.near_distance_m, "m");
+  r.Get("task/far_distance_m", i.far_distance_m, "m");
+  r.Get("task/beyond_distance_m", i.beyond_distance_m, "m");
+  r.Get("task/goal_tolerance_m", i.goal_tolerance_m, "m");
+  r.Get("task/default_door_width_m", i.default_door_width_m, "m");
+  r.Get("task/default_chair_radius_m", i.default_chair_radius_m, "m");
+  r.Get("task/default_desk_length_m", i.default_desk_length_m, "m");
+  r.Get("task/default_desk_width_m", i.default_desk_width_m, "m");
+  r.Get("task/slow_fraction", i.slow_fraction);
+  r.Get("task/normal_fraction", i.normal_fraction);
+  r.Get("task/quick_fraction", i.quick_fraction);
+  r.Get("task/free_space_resolution_m", i.free_space_resolution_m, "m");
+  if (p.program_file.empty()) r.Fail("program_file is required (a .tr file)");
+  if (p.frame_id.empty() || p.base_frame.empty()) r.Fail("frame_id and base_frame must be set");
+  r.Require(p.tick_rate_hz > 0 && p.tick_rate_hz <= 200, "tick_rate_hz", "in (0, 200]",
+            p.tick_rate_hz);
+  r.Require(p.ptu_sweep_period_s > 0, "ptu/sweep_period_s", "> 0", p.ptu_sweep_period_s);
+  if (p.pan_joints.size() != p.tilt_joints.size())
+    r.Fail("ptu/pan_joints and ptu/tilt_joints must have as many names");
+}
+
+using TaskServer = actionlib::ActionServer<spott_msgs::TaskAction>;
+using NavigateClient = actionlib::SimpleActionClient<spott_msgs::NavigateAction>;
+
+class ControllerNode : public ControllerIo {
+ public:
+  ControllerNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, NodeParameters params)
+      : nh_(nh),
+        params_(std::move(params)),
+        tf_listener_(tf_),
+        task_server_(nh, "task", false),
+        navigate_(nh, params_.navigate_action, false) {
+    updates_pub_ = nh.advertise<spott_msgs::MapUpdate>("map_updates", 20);
+    for (const char* source : {"reflex", "teleop", "executive"}) {
+      cmd_pubs_[source] = nh.advertise<geometry_msgs::Twist>(std::string("cmd_vel/") + source, 5);
+    }
+    heads_pub_ = nh.advertise<sensor_msgs::JointState>("range_profile/point_head", 2);
+    state_pub_ = pnh.advertise<spott_msgs::TRProgramState>("state", 1, true);
+    dot_pub_ = pnh.advertise<std_msgs::String>("tree_dot", 1, true);
+    marker_pub_ = pnh.advertise<visualization_msgs::Marker>("firing_rule_marker", 1, true);
+    take_ = nh.serviceClient<spott_msgs::TakeWheels>(params_.arbiter + "/take_wheels", true);
+    release_ =
+        nh.serviceClient<spott_msgs::ReleaseWheels>(params_.arbiter + "/release_wheels", true);
+  }
+
+  bool Load(std::vector<Diagnostic>* diags) {
+    const ParseResult parsed = ParseProgramFile(params_.program_file);
+    diags->insert(diags->end(), parsed.diagnostics.begin(), parsed.diagnostics.end());
+    if (!parsed.ok()) return false;
+    core_ =
+        NavigationController::Create(parsed.program, params_.controller, this, diags, params_.main);
+    if (!core_) return false;
+    const CheckReport report = CheckProgram(parsed.program);
+    for (const ProgramVerdict& v : report.programs) parents_[v.program] = v.parent;
+    verdict_ = report.Summary();
+    return true;
+  }
+
+  void Start() {
+    ros::NodeHandle& nh = nh_;
+    graph_sub_ = nh.subscribe("room_door_graph", 1, &ControllerNode::OnGraph, this);
+    features_sub_ = nh.subscribe("map_features", 1, &ControllerNode::OnFeatures, this);
+    places_sub_ = nh.subscribe("world_places", 1, &ControllerNode::OnPlaces, this);
+    ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+    sonar_sub_ = nh.subscribe("sonar", 5, &ControllerNode::OnSonar, this, hints);
+    infrared_sub_ = nh.subscribe("infrared", 5, &ControllerNode::OnInfrared, this, hints);
+    bumper_sub_ = nh.subscribe("bumper", 10, &ControllerNode::OnBumper, this, hints);
+    profile_sub_ = nh.subscribe("range_profile", 5, &ControllerNode::OnProfile, this);
+    odom_sub_ = nh.subscribe("odom", 10, &ControllerNode::OnOdom, this);
+    status_sub_ = nh.subscribe("localization_status", 5, &ControllerNode::OnStatus, this);
+    parse_srv_ =
+        ros::NodeHandle("~").advertiseService("parse_task", &ControllerNode::OnParse, this);
+    task_server_.registerGoalCallback([this](TaskServer::GoalHandle g) { OnTask(g); });
+    task_server_.registerCancelCallback([this](TaskServer::GoalHandle g) { OnCancel(g); });
+    core_->Start(Now());
+    task_server_.start();
+    tick_ =
+        nh.createTimer(ros::Duration(1.0 / params_.tick_rate_hz), &ControllerNode::OnTick, this);
+    AfterEvent();
+  }
+
+  // --- ControllerIo ----------------------------------------------------------------------------
+
+  void SendNavigate(const NavigateGoal& g) override {
+    spott_msgs::NavigateGoal goal;
+    goal.target = spott_ros::ToPoseStamped(spott_ros::MakePose2D(g.x, g.y, 0.0), params_.frame_id,
+                                           ros::Time::now());
+    goal.ignore_heading = true;
+    goal.position_tolerance = g.tolerance_m;
+    goal.speed_mode = static_cast<uint8_t>(g.speed_mode);
+    goal.direction_bias = g.heading.value_or(std::numeric_limits<double>::quiet_NaN());
+    switch (g.bias) {
+      case NavigateGoal::Bias::kHeading:
+        goal.bias_kind = spott_msgs::NavigateGoal::BIAS_HEADING;
+        break;
+      case NavigateGoal::Bias::kToward:
+        goal.bias_kind = spott_msgs::NavigateGoal::BIAS_TOWARD;
+        break;
+      case NavigateGoal::Bias::kAway:
+        goal.bias_kind = spott_msgs::NavigateGoal::BIAS_AWAY;
+        break;
+      case NavigateGoal::Bias::kVia:
+        goal.bias_kind = spott_msgs::NavigateGoal::BIAS_VIA;
+        break;
+      case NavigateGoal::Bias::kAround:
+        goal.bias_kind = spott_msgs::NavigateGoal::BIAS_AROUND;
+        break;
+    }
+    goal.bias_point.x = g.bias_x;
+    goal.bias_point.y = g.bias_y;
+    goal.bias_radius = g.bias_radius;
+    goal.bias_sense = g.bias_sense;
+    if (!navigate_.isServerConnected()) {
+      ROS_WARN_THROTTLE(5.0, "tr_plus_controller: %s is not connected yet; the goal is sent anyway",
+                        params_.navigate_action.c_str());
+    }
+    const std::uint64_t seq = g.seq;
+    navigate_.sendGoal(
+        goal,
+        [this, seq](const actionlib::SimpleClientGoalState&,
+                    const spott_msgs::NavigateResultConstPtr& result) {
+          pending_done_.push_back(
+              {seq,
+               result ? static_cast<NavigateOutcome>(result->outcome) : NavigateOutcome::kFailed,
+               result ? result->reason : "no result"});
+        },
+        NavigateClient::SimpleActiveCallback(),
+        [this, seq](const spott_msgs::NavigateFeedbackConstPtr& fb) {
+          core_->NavigateFeedback(seq, fb->distance_remaining, Now());
+        });
+    ROS_INFO("tr_plus_controller: Navigate to (%.2f, %.2f) [goal %lu]", g.x, g.y,
+             static_cast<unsigned long>(seq));
+  }
+
+  void CancelNavigate() override {
+    if (navigate_.getState().isDone()) return;
+    navigate_.cancelGoal();
+  }
+
+  void TakeWheels(const std::string& source) override {
+    spott_msgs::TakeWheels srv;
+    srv.request.source = source;
+    if (!take_.isValid()) {
+      take_ = nh_.serviceClient<spott_msgs::TakeWheels>(params_.arbiter + "/take_wheels", true);
+    }
+    if (!take_.call(srv) || !srv.response.success) {
+      ROS_WARN("tr_plus_controller: take_wheels(%s) failed: %s", source.c_str(),
+               srv.response.message.c_str());
+    }
+  }
+
+  void ReleaseWheels(const std::string& source) override {
+    spott_msgs::ReleaseWheels srv;
+    srv.request.source = source;
+    if (!release_.isValid()) {
+      release_ =
+          nh_.serviceClient<spott_msgs::ReleaseWheels>(params_.arbiter + "/release_wheels", true);
+    }
+    if (!release_.call(srv) || !srv.response.success) {
+      ROS_WARN("tr_plus_controller: release_wheels(%s) failed: %s", source.c_str(),
+               srv.response.message.c_str());
+    }
+  }
+
+  void Drive(const std::string& source, const Velocity& v) override {
+    auto it = cmd_pubs_.find(source);
+    if (it == cmd_pubs_.end()) return;
+    geometry_msgs::Twist t;
+    t.linear.x = v.linear_mps;
+    t.angular.z = v.angular_rps;
+    it->second.publish(t);
+  }
+
+  void SendMapUpdate(const MapChange& change) override {
+    spott_msgs::MapUpdate u;
+    u.header.frame_id = params_.frame_id;
+    u.header.stamp = ros::Time::now();
+    for (const spott_map::MapFeature& f : change.added) u.added.push_back(mconv::ToMsg(f));
+    for (const auto& [id, state] : change.doors) {
+      spott_msgs::DoorState d;
+      d.door_id = id;
+      d.state = mconv::ToMsg(state);
+      u.doors.push_back(d);
+      ROS_INFO("tr_plus_controller: door %s sensed %s", id.c_str(), spott_map::ToString(state));
+    }
+    if (!change.added.empty()) {
+      ROS_INFO("tr_plus_controller: %zu sensed features added to the map (%s%s)",
+               change.added.size(), change.added.front().id.c_str(),
+               change.added.size() > 1 ? ", ..." : "");
+    }
+    updates_pub_.publish(u);
+  }
+
+  void SetPtuPattern(const std::string& pattern) override { ptu_pattern_ = pattern; }
+
+  void PublishTaskFeedback(const TaskFeedback& f) override {
+    auto it = goals_.find(f.id);
+    if (it == goals_.end()) return;
+    spott_msgs::TaskFeedback fb;
+    fb.state = f.state;
+    fb.firing_rule = f.firing_rule;
+    fb.distance_remaining = f.distance_remaining;
+    fb.current_pose = spott_ros::ToPoseStamped(
+        spott_ros::MakePose2D(f.pose.x, f.pose.y, f.pose.yaw), params_.frame_id, ros::Time::now());
+    it->second.publishFeedback(fb);
+  }
+
+  void TaskFinished(const TaskResult& r) override {
+    auto it = goals_.find(r.id);
+    if (it == goals_.end()) return;
+    spott_msgs::TaskResult result;
+    result.success = r.success;
+    result.outcome = r.outcome;
+    result.message = r.message;
+    result.final_pose = spott_ros::ToPoseStamped(
+        spott_ros::MakePose2D(r.final_pose.x, r.final_pose.y, r.final_pose.yaw), params_.frame_id,
+        ros::Time::now());
+    result.interpretation = r.interpretation;
+    result.goal.x = r.goal ? r.goal->x() : std::numeric_limits<double>::quiet_NaN();
+    result.goal.y = r.goal ? r.goal->y() : std::numeric_limits<double>::quiet_NaN();
+    result.trace = r.trace;
+    result.features_added = core_->added_features();
+    ROS_INFO("tr_plus_controller: task #%ld %s%s%s", static_cast<long>(r.id), r.outcome.c_str(),
+             r.message.empty() ? "" : ": ", r.message.c_str());
+    if (r.outcome == "preempted") {
+      it->second.setCanceled(result, r.message);
+    } else if (r.outcome == "rejected") {
+      // Accepted, then refused by the interpretation (an unreachable goal region, ...).
+      it->second.setAborted(result, r.message);
+    } else if (r.success) {
+      it->second.setSucceeded(result, r.message);
+    } else {
+      it->second.setAborted(result, r.message);
+    }
+    goals_.erase(it);
+  }
+
+ private:
+  double Now() const { return ros::Time::now().toSec(); }
+
+  // --- Task action ---------------------------------------------------------------------------
+
+  void OnTask(TaskServer::GoalHandle goal) {
+    const std::string command = goal.getGoal()->command;
+    const std::int64_t id = ++task_count_;
+    const NavigationController::Acceptance a = core_->StartTask(id, command, Now());
+    if (!a.accepted) {
+      spott_msgs::TaskResult result;
+      result.success = false;
+      result.outcome = "rejected";
+      result.message = a.message;
+      ROS_WARN("tr_plus_controller: task '%s' rejected: %s", command.c_str(), a.message.c_str());
+      goal.setRejected(result, a.message);
+      AfterEvent();
+      return;
+    }
+    goal.setAccepted("task #" + std::to_string(id));
+    goals_[id] = goal;
+    ROS_INFO("tr_plus_controller: task #%ld '%s'", static_cast<long>(id), command.c_str());
+    AfterEvent();
+  }
+
+  void OnCancel(TaskServer::GoalHandle goal) {
+    for (auto& [id, g] : goals_) {
+      if (g == goal) {
+        core_->CancelTask(id, Now());
+        break;
+      }
+    }
+    AfterEvent();
+  }
+
+  bool OnParse(spott_msgs::ParseTask::Request& req, spott_msgs::ParseTask::Response& res) {
+    res.success = core_->InterpretOnly(req.command, &res.interpretation, &res.message);
+    return true;
+  }
+
+  // --- The map database ----------------------------------------------------------------------
+
+  void OnGraph(const spott_msgs::RoomDoorGraph& msg) {
+    std::string error;
+    const auto graph = mconv::FromMsg(msg, &error);
+    if (!graph) {
+      ROS_WARN("tr_plus_controller: room_door_graph ignored: %s", error.c_str());
+      return;
+    }
+    core_->SetGraph(*graph, Now());
+    AfterEvent();
+  }
+
+  void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
+    std::vector<spott_map::MapFeature> features;
+    for (const auto& f : msg.features) {
+      std::string error;
+      if (auto feature = mconv::FromMsg(f, &error)) {
+        features.push_back(std::move(*feature));
+      } else {
+        ROS_WARN("tr_plus_controller: map feature '%s' ignored: %s", f.id.c_str(), error.c_str());
+      }
+    }
+    core_->SetFeatures(features, Now());
+    AfterEvent();
+  }
+
+  void OnPlaces(const spott_msgs::WorldPlaces& msg) {
+    std::vector<spott_map::Place> places;
+    for (const auto& p : msg.places) {
+      spott_map::Place place;
+      place.name = p.name;
+      place.kind = p.kind;
+      place.pose = mconv::FromPose2D(p.pose);
+      places.push_back(place);
+    }
+    core_->SetPlaces(places);
+  }
+
+  // --- Sensors -------------------------------------------------------------------------------
+
+  static RangeRing ToRing(const spott_msgs::RangeRing& msg) {
+    RangeRing ring;
+    for (const auto& m : msg.mounts) ring.mounts.push_back(Pose2{m.x, m.y, m.theta});
+    ring.ranges.assign(msg.ranges.begin(), msg.ranges.end());
+    ring.min_range_m = msg.min_range;
+    ring.max_range_m = msg.max_range;
+    ring.field_of_view_rad = msg.field_of_view;
+    return ring;
+  }
+
+  void UpdatePose() {
+    try {
+      const auto tf = tf_.lookupTransform(params_.frame_id, params_.base_frame, ros::Time(0));
+      if (const auto p = spott_ros::ToPose2D(tf.transform)) {
+        core_->SetPose(Pose2{p->x, p->y, p->theta}, Now());
+        have_pose_ = true;
+      }
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "tr_plus_controller: no pose yet (%s)", e.what());
+    }
+  }
+
+  void OnSonar(const spott_msgs::RangeRing& msg) {
+    UpdatePose();
+    core_->Sonar(ToRing(msg), Now());
+    AfterEvent();
+  }
+
+  void OnInfrared(const spott_msgs::RangeRing& msg) {
+    core_->Infrared(ToRing(msg), Now());
+    AfterEvent();
+  }
+
+  void OnBumper(const spott_msgs::BumperRing& msg) {
+    std::vector<double> pressed;
+    for (std::size_t i = 0; i < msg.pressed.size() && i < msg.segment_angles.size(); ++i) {
+      if (msg.pressed[i] && std::isfinite(msg.segment_angles[i]))
+        pressed.push_back(msg.segment_angles[i]);
+    }
+    core_->Bumper(pressed, Now());
+    if (!pressed.empty()) AfterEvent();
+  }
+
+  void OnProfile(const spott_msgs::RangeProfile& msg) {
+    if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
+    geometry_msgs::TransformStamped t;
+    try {
+      t = tf_.lookupTransform(params_.base_frame, msg.header.frame_id, ros::Time(0));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "tr_plus_controller: range profile frame: %s", e.what());
+      return;
+    }
+    // The points in 3-D in the base frame: a head tilted down sees the floor, which is no
+    // obstacle; only points between ptu/min_height_m and ptu/max_height_m are.
+    const auto& q = t.transform.rotation;
+    const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+    const Eigen::Vector3d origin(t.transform.translation.x, t.transform.translation.y,
+                                 t.transform.translation.z);
+    if (!origin.allFinite() || rotation.norm() < 1e-6) return;
+    const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+    std::vector<Vec2> points;
+    for (std::size_t i = 0; i < msg.points.size(); ++i) {
+      if (i < msg.ranges.size() && !(msg.ranges[i] < msg.max_range - 1e-3)) continue;
+      const Eigen::Vector3d p =
+          origin + r * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
+      if (!p.allFinite() || p.z() < params_.ptu_min_height_m || p.z() > params_.ptu_max_height_m) {
+        continue;
+      }
+      points.emplace_back(p.x(), p.y());
+    }
+    core_->RangeProfile(Vec2(origin.x(), origin.y()), points, Now());
+  }
+
+  void OnOdom(const nav_msgs::Odometry& msg) {
+    const auto p = spott_ros::ToPose2D(msg.pose.pose);
+    if (!p) return;
+    core_->SetOdometry(Pose2{p->x, p->y, p->theta}, msg.twist.twist.linear.x,
+                       msg.twist.twist.angular.z, Now());
+  }
+
+  void OnStatus(const spott_msgs::LocalizationStatus& msg) {
+    core_->SetLocalization(!msg.lost && msg.mode == spott_msgs::LocalizationStatus::TRACKING,
+                           Now());
+  }
+
+  // --- Time ----------------------------------------------------------------------------------
+
+  void OnTick(const ros::TimerEvent&) {
+    const double now = Now();
+    UpdatePose();
+    if (params_.assume_localized) core_->SetLocalization(true, now);
+    for (const auto& d : pending_done_) core_->NavigateDone(d.seq, d.outcome, d.reason, now);
+    pending_done_.clear();
+    core_->Tick(now);
+    PointHeads(now);
+    AfterEvent();
+  }
+
+  void OnWake(const ros::TimerEvent&) {
+    core_->Advance(Now());
+    AfterEvent();
+  }
+
+  void PointHeads(double now) {
+    if (ptu_pattern_.empty() || params_.pan_joints.empty() || now - last_heads_s_ < 0.5) return;
+    last_heads_s_ = now;
+    sensor_msgs::JointState js;
+    js.header.stamp = ros::Time::now();
+    for (std::size_t i = 0; i < params_.pan_joints.size(); ++i) {
+      const double side = i % 2 == 0 ? 1.0 : -1.0;
+      double pan = side * params_.ptu_hallway_pan_rad;  // hallway: ahead
+      if (ptu_pattern_ == "room") {                     // room: sweep across the room
+        pan = side * params_.ptu_sweep_rad * std::sin(2 * M_PI * now / params_.ptu_sweep_period_s);
+      }
+      js.name.push_back(params_.pan_joints[i]);
+      js.position.push_back(pan);
+      js.name.push_back(params_.tilt_joints[i]);
+      js.position.push_back(0.0);
+    }
+    heads_pub_.publish(js);
+  }
+
+  // The live state on change, the rviz text, and the interpreter's next wake-up.
+  void AfterEvent() {
+    const double wake = core_->NextWakeTime();
+    if (std::isfinite(wake) && wake != scheduled_wake_) {
+      scheduled_wake_ = wake;
+      wake_ = nh_.createTimer(ros::Duration(std::max(wake - Now(), 1e-4)), &ControllerNode::OnWake,
+                              this, true);
+    }
+    const InterpreterState s = core_->State();
+    std::string signature;
+    for (const FrameState& f : s.frames) {
+      signature +=
+          f.program + ":" + std::to_string(f.firing_rule) + (f.action_running ? "r" : "") + "/";
+      for (bool v : f.rule_values) signature += v ? '1' : '0';
+      signature += ";";
+    }
+    for (const ProcessState& p : s.processes) {
+      signature += p.name + (p.value ? "1" : "0") + (p.active ? "a" : "") + ",";
+    }
+    if (signature != last_signature_) {
+      last_signature_ = signature;
+      state_pub_.publish(tconv::ToMsg(s, core_->program(), ros::Time::now()));
+      std_msgs::String dot;
+      for (const FrameState& f : s.frames) {
+        const Program* p = core_->program().FindProgram(f.program);
+        auto parent = parents_.find(f.program);
+        if (!p || parent == parents_.end()) continue;
+        DotLiveState live;
+        live.rule_values = f.rule_values;
+        live.firing_rule = f.firing_rule;
+        dot.data += TrTreeDot(*p, parent->second, &live);
+      }
+      dot_pub_.publish(dot);
+    }
+    const double now = Now();
+    if (core_->pose() && (core_->firing_rule() != marker_text_ || now - marker_s_ > 0.5)) {
+      marker_text_ = core_->firing_rule();
+      marker_s_ = now;
+      visualization_msgs::Marker m =
+          mconv::MakeMarker("tr_plus_firing_rule", 0, visualization_msgs::Marker::TEXT_VIEW_FACING,
+                            params_.frame_id, ros::Time::now());
+      m.pose.position.x = core_->pose()->x;
+      m.pose.position.y = core_->pose()->y;
+      m.pose.position.z = params_.marker_height_m;
+      m.scale.z = 0.3;
+      m.color = mconv::Colour(1.0f, 0.9f, 0.2f);
+      m.text = marker_text_.empty() ? "(no rule fired yet)" : marker_text_;
+      marker_pub_.publish(m);
+    }
+  }
+
+  struct Done {
+    std::uint64_t seq;
+    NavigateOutcome outcome;
+    std::string reason;
+  };
+
+  ros::NodeHandle nh_;
+  NodeParameters params_;
+  tf2_ros::Buffer tf_;
+  tf2_ros::TransformListener tf_listener_;
+  TaskServer task_server_;
+  NavigateClient navigate_;
+  std::unique_ptr<NavigationController> core_;
+  std::map<std::string, std::vector<int>> parents_;
+  std::string verdict_;
+  std::map<std::int64_t, TaskServer::GoalHandle> goals_;
+  std::int64_t task_count_ = 0;
+  std::vector<Done> pending_done_;
+  bool have_pose_ = false;
+  std::string ptu_pattern_;
+  double last_heads_s_ = -1e300;
+  std::string last_signature_, marker_text_;
+  double marker_s_ = -1e300;
+  double scheduled_wake_ = -1;
+  ros::Publisher updates_pub_, heads_pub_, state_pub_, dot_pub_, marker_pub_;
+  std::map<std::string, ros::Publisher> cmd_pubs_;
+  ros::Subscriber graph_sub_, features_sub_, places_sub_, sonar_sub_, infrared_sub_, bumper_sub_,
+      profile_sub_, odom_sub_, status_sub_;
+  ros::ServiceServer parse_srv_;
+  ros::ServiceClient take_, release_;
+  ros::Timer tick_, wake_;
+
+ public:
+  const std::string& verdict() const { return verdict_; }
+};
+
+}  // namespace
+}  // namespace spott_tr_plus::controller
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "tr_plus_controller");
+  ros::NodeHandle nh, pnh("~");
+  namespace c = spott_tr_plus::controller;
+  spott_ros::ParameterReader reader = spott_ros::ParameterReader::FromNode(pnh);
+  c::NodeParameters params;
+  c::ReadParameters(reader, params);
+  std::string error;  // the radius from the robot description, as every node takes it
+  const auto radius = spott_ros::FootprintRadiusFromParameter(nh, params.robot_description,
+                                                              params.base_frame, &error);
+  if (!radius) reader.Fail("robot_description: " + error);
+  params.controller.robot_radius_m = radius.value_or(0.2285);
+  for (const auto& v : c::ValidateParameters(params.controller)) reader.Fail(v);
+  const auto problems = reader.Finish();
+  for (const auto& w : reader.Warnings()) ROS_WARN("tr_plus_controller: %s", w.c_str());
+  if (!problems.empty()) {
+    for (const auto& p : problems) ROS_FATAL("tr_plus_controller: parameter %s", p.c_str());
+    return 1;
+  }
+  c::ControllerNode node(nh, pnh, params);
+  std::vector<spott_tr_plus::Diagnostic> diags;
+  if (!node.Load(&diags)) {
+    ROS_FATAL("tr_plus_controller: cannot run %s:\n%s", params.program_file.c_str(),
+              spott_tr_plus::FormatDiagnostics(diags).c_str());
+    return 1;
+  }
+  if (!diags.empty()) ROS_WARN("%s", spott_tr_plus::FormatDiagnostics(diags).c_str());
+  ROS_INFO("tr_plus_controller: running %s (robot radius %.4f m)\n%s", params.program_file.c_str(),
+           *radius, node.verdict().c_str());
+  node.Start();
+  ros::spin();
+  return 0;
+}

@@ -1,0 +1,424 @@
+// The controller on the robot (controller/*.h) without ROS: the navigation program bound to a
+// fake robot on cim_office's CAD map. Expected values are worked out by hand from the world file
+// (walls 0.15 m thick on the room outlines, the Nomad 200's radius 0.2285 m).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "spott_map/world_loader.h"
+#include "spott_tr_plus/controller/navigation_controller.h"
+#include "spott_tr_plus/parser.h"
+
+namespace spott_tr_plus::controller {
+namespace {
+
+constexpr double kRadius = 0.2285;
+
+struct FakeIo : ControllerIo {
+  std::vector<NavigateGoal> navigates;
+  int cancels = 0;
+  std::vector<std::string> takes, releases;
+  std::vector<std::pair<std::string, Velocity>> drives;
+  std::vector<MapChange> updates;
+  std::vector<TaskFeedback> feedback;
+  std::vector<TaskResult> results;
+  std::string ptu;
+  void SendNavigate(const NavigateGoal& g) override { navigates.push_back(g); }
+  void CancelNavigate() override { ++cancels; }
+  void TakeWheels(const std::string& s) override { takes.push_back(s); }
+  void ReleaseWheels(const std::string& s) override { releases.push_back(s); }
+  void Drive(const std::string& s, const Velocity& v) override { drives.emplace_back(s, v); }
+  void SendMapUpdate(const MapChange& c) override { updates.push_back(c); }
+  void SetPtuPattern(const std::string& p) override { ptu = p; }
+  void PublishTaskFeedback(const TaskFeedback& f) override { feedback.push_back(f); }
+  void TaskFinished(const TaskResult& r) override { results.push_back(r); }
+  std::optional<Velocity> LastDrive(const std::string& source) const {
+    for (auto it = drives.rbegin(); it != drives.rend(); ++it) {
+      if (it->first == source) return it->second;
+    }
+    return std::nullopt;
+  }
+};
+
+spott_map::World CimOffice() {
+  auto loaded = spott_map::LoadWorldFile(WORLDS_DIR "/cim_office.yaml");
+  EXPECT_TRUE(loaded.ok());
+  return *loaded.world;
+}
+
+bool Has(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+class Controller : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    world_ = CimOffice();
+    db_ = spott_map::MapDatabase::FromWorld(world_);
+    const ParseResult parsed = ParseProgramFile(PROGRAMS_DIR "/spott_navigation.tr");
+    ASSERT_TRUE(parsed.ok()) << FormatDiagnostics(parsed.diagnostics);
+    params_.robot_radius_m = kRadius;
+    std::vector<Diagnostic> d;
+    c_ = NavigationController::Create(parsed.program, params_, &io_, &d);
+    ASSERT_TRUE(c_) << FormatDiagnostics(d);
+    c_->Start(0.0);
+    c_->SetGraph(db_.graph(), 0.0);
+    c_->SetFeatures(db_.features(), 0.0);
+    c_->SetPlaces(world_.places);
+  }
+  void At(double x, double y, double yaw, double t, double v = 0.0) {
+    pose_ = Pose2{x, y, yaw};
+    c_->SetPose(pose_, t);
+    c_->SetOdometry(pose_, v, 0.0, t);
+    c_->SetLocalization(true, t);
+  }
+  // Runs the controller's clock from t0 to t1, moving the fake robot with the commands of
+  // `source` (unicycle), calling Advance at the interpreter's wake times.
+  double Run(double t0, double t1, const std::string& source, double dt = 0.05) {
+    double t = t0;
+    for (; t < t1 && io_.results.empty(); t += dt) {
+      const auto v = io_.LastDrive(source);
+      if (v) {
+        pose_.x += v->linear_mps * std::cos(pose_.yaw) * dt;
+        pose_.y += v->linear_mps * std::sin(pose_.yaw) * dt;
+        pose_.yaw += v->angular_rps * dt;
+      }
+      At(pose_.x, pose_.y, pose_.yaw, t, v ? v->linear_mps : 0.0);
+      if (c_->NextWakeTime() <= t) c_->Advance(t);
+      c_->Tick(t);
+    }
+    return t;
+  }
+  spott_map::World world_;
+  spott_map::MapDatabase db_;
+  ControllerParameters params_;
+  FakeIo io_;
+  Pose2 pose_;
+  std::unique_ptr<NavigationController> c_;
+};
+
+TEST_F(Controller, GoInRoomSendsNavigateToAFreePointOfTheRoomAndReportsReached) {
+  At(1.2, 8.25, 0.0, 0.1);
+  const auto a = c_->StartTask(1, "go in room(lab)", 0.2);
+  ASSERT_TRUE(a.accepted) << a.message;
+  c_->Tick(0.25);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  const NavigateGoal& g = io_.navigates[0];
+  // Inside the lab (10..30 x 9.5..20), clear of its walls by the padding (0.2285 + 0.075).
+  EXPECT_GT(g.x, 10.0 + 0.075 + 0.3035);
+  EXPECT_LT(g.x, 30.0 - 0.075 - 0.3035);
+  EXPECT_GT(g.y, 9.5 + 0.075 + 0.3035);
+  EXPECT_LT(g.y, 20.0 - 0.075 - 0.3035);
+  EXPECT_EQ(g.speed_mode, 1);  // normal
+  EXPECT_FALSE(g.heading);     // no direction given: no bias
+  ASSERT_FALSE(io_.feedback.empty());
+  EXPECT_EQ(io_.feedback.back().state, "driving");
+  EXPECT_EQ(c_->firing_rule(), "APRIORI_MAP_TASK[2]: target_known(STATUS) -> set_goal(STATUS)");
+  c_->NavigateDone(g.seq, NavigateOutcome::kSucceeded, "", 5.0);
+  c_->Tick(5.05);
+  ASSERT_EQ(io_.results.size(), 1u);
+  const TaskResult& r = io_.results[0];
+  EXPECT_TRUE(r.success);
+  EXPECT_EQ(r.outcome, "reached");
+  EXPECT_NE(r.interpretation.find("inside"), std::string::npos) << r.interpretation;
+  EXPECT_TRUE(Has(r.trace, "INTERPRET_TASK[1]: apriori_map -> APRIORI_MAP_TASK(STATUS)"));
+  EXPECT_TRUE(Has(r.trace, "APRIORI_MAP_TASK[2]: target_known(STATUS) -> set_goal(STATUS)"));
+  EXPECT_FALSE(c_->has_task());
+}
+
+TEST_F(Controller, GoInRoomIsDoneOnceTheRobotsBodyIsInsideTheRoom) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  // Through d_lab_w (12.5, 9.5): the lab's wall line is y = 9.5. The body (0.2285 m) and the
+  // margin `at` (0.3 m) are inside once the centre is 0.5285 m past it.
+  At(12.5, 9.9, M_PI / 2, 20.0, 0.3);
+  c_->Tick(20.0);
+  EXPECT_TRUE(io_.results.empty()) << "0.4 m into the lab: the body is not all in";
+  At(12.5, 10.1, M_PI / 2, 21.0, 0.3);
+  c_->Tick(21.0);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "reached");
+  EXPECT_EQ(io_.results[0].message, "in the goal region");
+  EXPECT_EQ(io_.cancels, 1);  // Navigate to the room's centre is called off: the robot stops
+}
+
+TEST_F(Controller, MalformedTaskIsRefusedWithItsColumnAndTheRunningTaskGoesOn) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  const auto a = c_->StartTask(2, "go near tabel(1, 2)", 0.3);
+  EXPECT_FALSE(a.accepted);
+  EXPECT_NE(a.message.find("task:1:9:"), std::string::npos) << a.message;
+  c_->Tick(0.35);
+  EXPECT_EQ(io_.cancels, 0);
+  EXPECT_TRUE(io_.results.empty());
+  EXPECT_EQ(io_.navigates.size(), 1u);
+  EXPECT_TRUE(c_->has_task());
+}
+
+TEST_F(Controller, NewTaskPreemptsTheRunningOneAndWaitsForTheRobotToStop) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  At(3.0, 8.25, 0.0, 5.0, /*v=*/0.3);  // driving
+  ASSERT_TRUE(c_->StartTask(2, "go to door(d_106)", 5.0).accepted);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].id, 1);
+  EXPECT_EQ(io_.results[0].outcome, "preempted");
+  EXPECT_EQ(io_.cancels, 1);  // the robot stops first
+  At(3.05, 8.25, 0.0, 5.2, 0.2);
+  c_->Tick(5.2);
+  EXPECT_EQ(io_.navigates.size(), 1u) << "the new goal was sent while the robot still moved";
+  At(3.06, 8.25, 0.0, 5.5, 0.0);  // stopped
+  c_->Tick(5.5);
+  ASSERT_EQ(io_.navigates.size(), 2u);
+  // To d_106 (26, 7): within `at` 0.3 m of the door's footprint, on either side of it.
+  EXPECT_NEAR(io_.navigates[1].x, 26.0, 0.8);
+  EXPECT_NEAR(io_.navigates[1].y, 7.0, 0.8);
+}
+
+TEST_F(Controller, UnreachableGoalIsRetriedThenTheTaskFailsWithTheReason) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  double t = 0.3;
+  for (int attempt = 0; attempt <= params_.tasks.navigate_retries; ++attempt) {
+    ASSERT_EQ(io_.navigates.size(), static_cast<size_t>(attempt + 1)) << "attempt " << attempt;
+    c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kUnreachable,
+                     "doors d_lab_w, d_lab_e are closed", t);
+    t = Run(t, t + params_.tasks.retry_delay_s + 0.5, "planner");
+  }
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "failed");
+  EXPECT_NE(io_.results[0].message.find("d_lab_w, d_lab_e are closed"), std::string::npos)
+      << io_.results[0].message;
+  EXPECT_TRUE(Has(io_.results[0].trace,
+                  "SPOTT[1]: task_failed(why) -> report_failed(why) || "
+                  "LOCALIZE_THE_ROBOT() || MAP_OBJECTS_WITH_SONAR() || "
+                  "MAP_OBJECTS_WITH_QUADRIS() || BUMPER_CHECK() || "
+                  "INFRARED_CHECK()"));
+}
+
+TEST_F(Controller, BumperContactIsMappedAndTheReflexTakesTheWheelsMovesAwayAndHandsThemBack) {
+  At(5.0, 8.25, 0.0, 0.1);
+  c_->Bumper({0.0}, 0.2);  // segment 0: straight ahead
+  // The contact on the shell ahead, (5 + 0.2285, 8.25), is new: it enters the map.
+  ASSERT_EQ(io_.updates.size(), 1u);
+  ASSERT_EQ(io_.updates[0].added.size(), 1u);
+  const spott_map::MapFeature& f = io_.updates[0].added[0];
+  EXPECT_EQ(f.id, "contact_1");
+  ASSERT_EQ(f.points.size(), 1u);
+  EXPECT_NEAR(f.points[0].x(), 5.2285, 1e-9);
+  EXPECT_NEAR(f.points[0].y(), 8.25, 1e-9);
+  ASSERT_EQ(io_.takes, std::vector<std::string>{"reflex"});
+  const auto first = io_.LastDrive("reflex");
+  ASSERT_TRUE(first);
+  EXPECT_LT(first->linear_mps, 0.0);  // backwards, away from the contact
+  c_->Bumper({}, 0.3);                // the contact ends as soon as the robot moves
+  Run(0.3, 10.0, "reflex");
+  ASSERT_EQ(io_.releases, std::vector<std::string>{"reflex"});
+  const auto last = io_.LastDrive("reflex");
+  ASSERT_TRUE(last);
+  EXPECT_EQ(last->linear_mps, 0.0);
+  // Moved away by the program's 0.3 m (Fig. 7's rule: move_away_from(p, 0.3)).
+  EXPECT_GE(5.2285 - pose_.x, kRadius + 0.3 - 1e-9);
+  EXPECT_LT(5.2285 - pose_.x, kRadius + 0.3 + 0.02);
+  EXPECT_TRUE(Has(c_->added_features(), "contact_1"));
+}
+
+TEST_F(Controller, AContactOnAKnownWallIsNotAddedAgain) {
+  At(5.0, 9.5 - 0.075 - kRadius, M_PI / 2, 0.1);  // touching the north wall of hall_w
+  c_->Bumper({0.0}, 0.2);
+  EXPECT_TRUE(io_.updates.empty());
+  EXPECT_EQ(io_.takes, std::vector<std::string>{"reflex"});  // it still moves away
+}
+
+TEST_F(Controller, GoForwardStopsBeforeTheKnownWallAhead) {
+  At(27.0, 8.25, 0.0, 0.1);  // facing the east wall of hall_e, its face at x = 29.925
+  ASSERT_TRUE(c_->StartTask(1, "go forward", 0.2).accepted);
+  Run(0.2, 60.0, "teleop");
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "stopped") << io_.results[0].message;
+  EXPECT_TRUE(io_.navigates.empty());
+  const double gap = 29.925 - (pose_.x + kRadius);
+  EXPECT_GT(gap, 0.0);
+  EXPECT_LE(gap, params_.teleop.stop_distance_m + 0.01);
+  EXPECT_GE(gap, params_.teleop.stop_distance_m - 0.05);
+  EXPECT_TRUE(Has(io_.results[0].trace,
+                  "APRIORI_MAP_TASK[3]: not target_known(STATUS) -> explore_toward(STATUS)"));
+}
+
+TEST_F(Controller, LocalizationIsTakenAtTheRatesOfFootnote19) {
+  At(1.2, 8.25, 0.0, 0.0);
+  Run(0.0, 25.0, "none");
+  EXPECT_EQ(c_->localization_fixes(), 3);  // at 0, 10 and 20 s (localization/period_s 10)
+  // Driving 2 m (localization/distance_m) makes one due before the period (the condition is
+  // computed once a second: within 1.1 m more at 1.1 m/s).
+  const double t0 = 25.0;
+  for (double t = t0; t < t0 + 3.0; t += 0.05) {
+    At(1.2 + (t - t0) * 1.1, 8.25, 0.0, t, 1.1);
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+  }
+  EXPECT_EQ(c_->localization_fixes(), 4);
+}
+
+// --- The sensed map -----------------------------------------------------------------------------
+
+RangeRing OneBeam(double x, double y, double yaw, double range) {
+  RangeRing ring;
+  ring.mounts = {Pose2{x, y, yaw}};
+  ring.ranges = {range};
+  ring.min_range_m = 0.43;
+  ring.max_range_m = 6.5;
+  ring.field_of_view_rad = 0.52;  // the Nomad 200's sonar cone
+  return ring;
+}
+
+TEST(SensorMapper, RepeatedEchoesOfAnUnmappedObjectBecomeAFeatureButWallEchoesDoNot) {
+  const spott_map::World world = CimOffice();
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(world);
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  const Pose2 robot{5.0, 8.25, 0.0};
+  // East: something 1 m ahead of the transducer, at (6.2285, 8.25), in the middle of hall_w.
+  for (int k = 0; k < 3; ++k) m.AddRing(OneBeam(kRadius, 0, 0, 1.0), robot);
+  EXPECT_TRUE(m.Take(db).features.empty()) << "3 echoes are below confirm_score 4";
+  m.AddRing(OneBeam(kRadius, 0, 0, 1.0), robot);
+  // North: the hall's wall, its face at y = 9.425, 0.9465 m from the transducer: known.
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.9465), robot);
+  const SensedBatch b = m.Take(db);
+  ASSERT_EQ(b.features.size(), 1u);
+  const spott_map::MapFeature& f = b.features[0];
+  EXPECT_EQ(f.type, spott_map::FeatureType::kPoint);
+  EXPECT_EQ(f.attributes.at("sensor"), "sonar");
+  EXPECT_NEAR(f.points[0].x(), 6.2285, 0.0708);  // the centre of its 0.1 m cell
+  EXPECT_NEAR(f.points[0].y(), 8.25, 0.0708);
+  EXPECT_TRUE(m.Take(db).features.empty()) << "a confirmed cell is sent once";
+}
+
+TEST(SensorMapper, ClampedAndReflectedEchoesAreNotMapped) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  const Pose2 robot{5.0, 8.25, 0.0};
+  for (int k = 0; k < 8; ++k) {
+    m.AddRing(OneBeam(kRadius, 0, 0, 0.43), robot);  // at the minimum range: clamped
+    // North through the wall at y = 9.5 into office_202 (a reflection's long way round).
+    m.AddRing(OneBeam(0, kRadius, M_PI / 2, 2.0), robot);
+  }
+  EXPECT_TRUE(m.Take(db).features.empty());
+}
+
+TEST(SensorMapper, BeamsEchoingOnADoorsOpeningSenseItClosedAndBeamsThroughItOpen) {
+  spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  // Under d_201 (centre (4, 9.5), open in the file), looking north: the opening is
+  // 9.5 - 8.4785 = 1.0215 m from the transducer; a leaf echoes at about that.
+  const Pose2 robot{4.0, 8.25, 0.0};
+  for (int k = 0; k < 2; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 1.0), robot);
+  EXPECT_TRUE(m.Take(db).doors.empty()) << "2 votes are below doors/votes 3";
+  m.AddRing(OneBeam(0, kRadius, M_PI / 2, 1.0), robot);
+  SensedBatch b = m.Take(db);
+  ASSERT_EQ(b.doors.size(), 1u);
+  EXPECT_EQ(b.doors[0].first, "d_201");
+  EXPECT_EQ(b.doors[0].second, spott_map::DoorState::kClosed);
+  EXPECT_TRUE(b.features.empty()) << "echoes on an opening vote on the door, they are no feature";
+  db.SetDoorState("d_201", spott_map::DoorState::kClosed);
+  m.SetMap(db);
+  // Echoes from 4 m beyond: the beams go through, the door is open again (6 votes back).
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 4.0), robot);
+  b = m.Take(db);
+  ASSERT_EQ(b.doors.size(), 1u);
+  EXPECT_EQ(b.doors[0].second, spott_map::DoorState::kOpen);
+}
+
+TEST(FuseIntoSegments, CollinearCellsMakeOneSegmentAndACornerTwo) {
+  std::vector<Vec2> row;
+  for (int i = 0; i < 5; ++i) row.emplace_back(0.1 * i, 0.0);
+  auto f = FuseIntoSegments(row, 0.07, 0.1);
+  ASSERT_EQ(f.size(), 1u);
+  ASSERT_EQ(f[0].type, spott_map::FeatureType::kLineSegment);
+  // From the outer edge of the first cell to that of the last: -0.05 .. 0.45.
+  EXPECT_NEAR(std::min(f[0].points[0].x(), f[0].points[1].x()), -0.05, 1e-9);
+  EXPECT_NEAR(std::max(f[0].points[0].x(), f[0].points[1].x()), 0.45, 1e-9);
+  std::vector<Vec2> corner = row;
+  for (int i = 1; i < 5; ++i) corner.emplace_back(0.4, 0.1 * i);
+  f = FuseIntoSegments(corner, 0.07, 0.1);
+  EXPECT_GE(f.size(), 2u);
+  for (const Vec2& c : corner) {
+    double best = 1e9;
+    for (const auto& s : f) best = std::min(best, s.DistanceTo(c));
+    EXPECT_LE(best, 0.07 + 1e-9) << "cell (" << c.x() << ", " << c.y() << ")";
+  }
+  EXPECT_EQ(FuseIntoSegments({Vec2(1, 2)}, 0.07, 0.1)[0].type, spott_map::FeatureType::kPoint);
+}
+
+// --- Motions ------------------------------------------------------------------------------------
+
+TEST(MoveAway, AContactAheadBacksOffAndOneAtTheSideTurnsFirst) {
+  ReflexParameters p;
+  MoveAway ahead(Vec2(1.0 + kRadius, 0.0), 0.3, Pose2{1.0, 0.0, 0.0}, 0.0, p);
+  auto v = ahead.Step(Pose2{1.0, 0.0, 0.0}, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_DOUBLE_EQ(v->linear_mps, -p.speed_mps);
+  EXPECT_DOUBLE_EQ(v->angular_rps, 0.0);
+  EXPECT_FALSE(ahead.Step(Pose2{1.0 - 0.3, 0.0, 0.0}, 1.0)) << "0.3 m farther: done";
+  MoveAway side(Vec2(1.0, kRadius), 0.3, Pose2{1.0, 0.0, 0.0}, 0.0, p);
+  v = side.Step(Pose2{1.0, 0.0, 0.0}, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_DOUBLE_EQ(v->linear_mps, 0.0);  // away is -y: 90 degrees off the axis, turn first
+  EXPECT_NE(v->angular_rps, 0.0);
+  EXPECT_FALSE(side.Step(Pose2{1.0, 0.0, 0.0}, p.timeout_s + 0.1));
+  EXPECT_TRUE(side.timed_out());
+}
+
+TEST(Teleop, ANewObstacleAheadIsAvoidedAndTheCommandedDirectionKeptOtherwise) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  KnownStructure known;
+  known.Build(db);
+  TeleopParameters p;
+  Teleop t(0.0, false, 0.3, 0.79, kRadius, p, 0.0);
+  // Down the middle of hall_w, nothing new: straight east.
+  auto s = t.Update(Pose2{5.0, 8.25, 0.0}, known, {}, 0.0);
+  EXPECT_FALSE(s.stopped);
+  EXPECT_DOUBLE_EQ(s.heading, 0.0);
+  EXPECT_GT(s.command.linear_mps, 0.0);
+  // A chair 0.8 m ahead (its front face across the robot's way): the heading turns off it,
+  // by at most the deviation allowed.
+  std::vector<Vec2> chair;
+  for (double y = 8.0; y <= 8.5; y += 0.05) chair.emplace_back(5.8, y);
+  s = t.Update(Pose2{5.0, 8.25, 0.0}, known, chair, 0.1);
+  EXPECT_FALSE(s.stopped);
+  EXPECT_GT(std::abs(s.heading), 0.2);
+  EXPECT_LE(std::abs(s.heading), p.max_deviation_rad + 1e-9);
+  // The east wall of hall_e is known structure: 29.925 - 29.3 - 0.2285 = 0.3965 m of free run
+  // ahead of the body... and at 29.45 it is 0.2465 m, within the stop distance 0.3.
+  EXPECT_FALSE(t.Update(Pose2{29.3, 8.25, 0.0}, known, {}, 0.2).stopped);
+  s = t.Update(Pose2{29.45, 8.25, 0.0}, known, {}, 0.3);
+  EXPECT_TRUE(s.stopped);
+  EXPECT_NEAR(s.structure_m, 0.2465, 0.026);  // sampled every 2.5 cm on 5 cm cells
+}
+
+TEST(ControllerParameters, EveryViolationIsNamedAsInTheYaml) {
+  ControllerParameters p;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.mapping.cell_m = 0.0;
+  p.doors.votes = 0;
+  p.teleop.stop_distance_m = -1;
+  p.tasks.navigate_retries = -1;
+  const auto v = ValidateParameters(p);
+  const auto named = [&](const std::string& prefix) {
+    return std::any_of(v.begin(), v.end(),
+                       [&](const std::string& e) { return e.rfind(prefix, 0) == 0; });
+  };
+  EXPECT_TRUE(named("mapping/cell_m"));
+  EXPECT_TRUE(named("doors/votes"));
+  EXPECT_TRUE(named("teleop/stop_distance_m"));
+  EXPECT_TRUE(named("tasks/navigate_retries"));
+}
+
+}  // namespace
+}  // namespace spott_tr_plus::controller
