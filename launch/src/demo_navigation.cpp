@@ -1,21 +1,28 @@
 #include "demo_navigation.h"
 
 #include <actionlib/client/simple_action_client.h>
-#include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
+#include <ros/spinner.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/NavigateAction.h>
+#include <spott_msgs/TaskAction.h>
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iomanip>
 #include <limits>
 #include <mutex>
 #include <sstream>
 
 #include "spott_map/geometry.h"
+#include "spott_map/map_feature.h"
+#include "spott_move_base/conversions.h"
+#include "spott_ros/pose_conversions.h"
+#include "spott_tr_plus/task_command.h"
 
 namespace spott_launch {
 namespace {
@@ -38,6 +45,12 @@ struct LegWatcher {
   std::string global_path;  ///< The first plan made for the current goal.
   std::string last_path;    ///< The latest plan (latched: unchanged plans are not re-sent).
   ros::Time goal_time;
+  struct Sample {
+    ros::Time stamp;
+    spott_map::Vec2 position;
+    double yaw;
+  };
+  std::deque<Sample> history;
 
   void Reset(const ros::Time& now) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -57,15 +70,30 @@ struct LegWatcher {
     position = p;
     yaw = 2.0 * std::atan2(odom.pose.pose.orientation.z, odom.pose.pose.orientation.w);
     have_pose = true;
+    // The last second of ground truth: a status is compared with the truth at its own stamp
+    // (it comes some time after the reading it was computed from; at 4x real time the robot
+    // turned meanwhile by up to 15 degrees).
+    if (!history.empty() && odom.header.stamp < history.back().stamp) history.clear();
+    history.push_back(Sample{odom.header.stamp, p, yaw});
+    while (history.size() > 2 && (odom.header.stamp - history.front().stamp).toSec() > 1.0)
+      history.pop_front();
     min_wall_distance_m = std::min(min_wall_distance_m, DistanceToNearestSolid(*world, p));
   }
-  // The localization's estimate against the latest ground truth (both at about the same time:
-  // the status follows each sonar ring, the truth comes at the simulator's rate).
+  // The localization's estimate against the ground truth at the status' stamp (the truth comes
+  // at the simulator's rate).
   void OnStatus(const spott_msgs::LocalizationStatus& status) {
     std::lock_guard<std::mutex> lock(mutex);
     if (!have_pose) return;
-    const double e = (spott_map::Vec2(status.estimate.x, status.estimate.y) - position).norm();
-    const double h = std::abs(spott_map::NormalizeAngle(status.estimate.theta - yaw));
+    spott_map::Vec2 truth = position;
+    double truth_yaw = yaw;
+    for (auto it = history.rbegin(); it != history.rend(); ++it)
+      if (it->stamp <= status.header.stamp) {  // the newest truth not after the status' stamp
+        truth = it->position;
+        truth_yaw = it->yaw;
+        break;
+      }
+    const double e = (spott_map::Vec2(status.estimate.x, status.estimate.y) - truth).norm();
+    const double h = std::abs(spott_map::NormalizeAngle(status.estimate.theta - truth_yaw));
     ++estimates;
     lost_reports += status.lost ? 1 : 0;
     sum_position_error_m += e;
@@ -90,26 +118,29 @@ struct LegWatcher {
   }
 };
 
-std::string OutcomeText(const spott_msgs::NavigateResult& result) {
-  switch (result.outcome) {
-    case spott_msgs::NavigateResult::SUCCEEDED:
-      return "reached";
-    case spott_msgs::NavigateResult::UNREACHABLE:
-      return "unreachable: " + result.reason;
-    case spott_msgs::NavigateResult::PREEMPTED:
-      return "preempted";
-    default:
-      return "failed: " + result.reason;
+// What Navigate's feedback told during a leg.
+struct FeedbackLog {
+  std::mutex mutex;
+  std::string path_summary;
+  std::vector<std::string> recoveries;
+  bool recovering = false;
+  void On(const spott_msgs::NavigateFeedbackConstPtr& fb) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (path_summary.empty() && !fb->global_path_summary.empty())
+      path_summary = fb->global_path_summary;
+    const bool now = fb->state == spott_msgs::NavigateFeedback::RECOVERING;
+    if (now && !recovering) recoveries.push_back(fb->note.empty() ? "recovering" : fb->note);
+    recovering = now;
   }
-}
+};
 
 }  // namespace
 
 double DistanceToNearestSolid(const spott_map::World& world, const spott_map::Vec2& p) {
   double best = std::numeric_limits<double>::infinity();
-  for (const spott_map::Wall& wall : world.walls) {
-    best = std::min(best, std::max(0.0, spott_map::DistancePointSegment(p, wall.segment) -
-                                            wall.thickness / 2.0));
+  for (const spott_map::Wall& wall : world.walls) {  // boxes with flat ends, as simulated
+    best = std::min(
+        best, spott_map::MakeSegment(wall.id, wall.segment, "wall", wall.thickness).DistanceTo(p));
   }
   for (const spott_map::WorldObject& object : world.objects) {
     const spott_map::Polygon footprint = object.Footprint();
@@ -120,29 +151,247 @@ double DistanceToNearestSolid(const spott_map::World& world, const spott_map::Ve
   return best;
 }
 
-NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& world,
-                               const std::vector<std::string>& goals, double leg_timeout_s,
-                               double connect_timeout_s) {
-  NavigationReport report;
+namespace {
+
+// Copies what the watcher measured during a leg into it.
+void Measure(LegWatcher& watcher, const spott_map::Vec2& target, NavigationLeg& leg) {
+  std::lock_guard<std::mutex> lock(watcher.mutex);
+  if (leg.global_path.empty())
+    leg.global_path = watcher.global_path.empty() ? watcher.last_path : watcher.global_path;
+  leg.path_length_m = watcher.path_length_m;
+  leg.final_error_m = (watcher.position - target).norm();
+  leg.final_position = watcher.position;
+  leg.min_wall_distance_m = watcher.min_wall_distance_m;
+  leg.bumper_hits = watcher.bumper_hits;
+  leg.estimates = watcher.estimates;
+  leg.lost_reports = watcher.lost_reports;
+  if (watcher.estimates > 0) {
+    leg.mean_position_error_m = watcher.sum_position_error_m / watcher.estimates;
+    leg.mean_heading_error_rad = watcher.sum_heading_error_rad / watcher.estimates;
+    leg.max_position_error_m = watcher.max_position_error_m;
+    leg.max_heading_error_rad = watcher.max_heading_error_rad;
+  }
+}
+
+// The simulator's side of a run, on a callback queue of its own so that ground truth, bumper,
+// global path and localization status keep coming while the demo waits on an action. Add
+// subscribers on `nh` before Start().
+struct RunWatch {
+  LegWatcher watcher;
+  ros::CallbackQueue queue;
+  ros::NodeHandle nh;
+  std::vector<ros::Subscriber> subscribers;
+  ros::AsyncSpinner spinner{1, &queue};
+
+  RunWatch(ros::NodeHandle& parent, const spott_map::World& world) : nh(parent) {
+    watcher.world = &world;
+    nh.setCallbackQueue(&queue);
+    subscribers.push_back(nh.subscribe("/sim/ground_truth", 50, &LegWatcher::OnTruth, &watcher));
+    subscribers.push_back(nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher));
+    subscribers.push_back(nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher));
+    subscribers.push_back(nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher));
+  }
+  void Start() { spinner.start(); }
+};
+
+// False (with why in the report) when the simulator's clock never came.
+bool WaitForClock(ros::NodeHandle& nh, double connect_timeout_s, NavigationReport& report) {
   if (!ros::Time::waitForValid(ros::WallDuration(connect_timeout_s))) {
     report.skipped = "no /clock from the simulator";
+    return false;
+  }
+  nh.param("/robot_sim/real_time_factor", report.requested_real_time_factor, 0.0);
+  return true;
+}
+
+// Waits until the goal ends or the leg's time (simulated) runs out; true when it ended.
+template <class Client>
+bool WaitForEnd(Client& client, const ros::Time& started, double leg_timeout_s) {
+  while (ros::ok() && (ros::Time::now() - started).toSec() < leg_timeout_s) {
+    if (client.getState().isDone()) return true;
+    ros::WallDuration(0.05).sleep();
+  }
+  return false;
+}
+
+std::string TimedOutText(double leg_timeout_s) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "timed out after %.0f s of simulated time", leg_timeout_s);
+  return text;
+}
+
+// The leg's verdict, on the simulator's ground truth and never on the stack's belief: reached
+// when whoever drove says so (`refusal` empty), the robot really is at the goal (`off_goal`
+// empty) and no bumper was pressed.
+void Judge(const std::string& refusal, const std::string& off_goal, NavigationLeg& leg) {
+  if (!refusal.empty()) {
+    leg.outcome = "not reached: " + refusal;
+  } else if (!off_goal.empty()) {
+    leg.outcome = "not reached: " + off_goal;
+  } else if (leg.bumper_hits > 0) {
+    leg.outcome = "not reached: at the goal, but after " + std::to_string(leg.bumper_hits) +
+                  " bumper contacts";
+  } else {
+    leg.outcome = "reached";
+    leg.reached = true;
+  }
+}
+
+}  // namespace
+
+std::string CompactTrace(const std::vector<std::string>& trace) {
+  std::string out;
+  std::string last;
+  int repeats = 0;
+  const auto flush = [&] {
+    if (last.empty()) return;
+    out += (out.empty() ? "" : ", ") + last + (repeats > 1 ? " x" + std::to_string(repeats) : "");
+  };
+  for (const std::string& rule : trace) {
+    const std::string head = rule.substr(0, rule.find(':'));
+    if (head == last) {
+      ++repeats;
+      continue;
+    }
+    flush();
+    last = head;
+    repeats = 1;
+  }
+  flush();
+  return out;
+}
+
+NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
+                          const std::vector<std::string>& tasks, double leg_timeout_s,
+                          double connect_timeout_s, double goal_tolerance_m) {
+  using TaskClient = actionlib::SimpleActionClient<spott_msgs::TaskAction>;
+  NavigationReport report;
+  report.by_task = true;
+  if (!WaitForClock(nh, connect_timeout_s, report)) return report;
+  FeedbackLog log;
+  RunWatch watch(nh, world);
+  LegWatcher& watcher = watch.watcher;
+  // What Navigate tells the TR+ controller (recoveries, the global path), overheard.
+  watch.subscribers.push_back(watch.nh.subscribe<spott_msgs::NavigateActionFeedback>(
+      "harmonic_planner/navigate/feedback", 20,
+      [&log](const spott_msgs::NavigateActionFeedback::ConstPtr& m) {
+        log.On(boost::make_shared<const spott_msgs::NavigateFeedback>(m->feedback));
+      }));
+  watch.Start();
+
+  TaskClient client(nh, "task", true);
+  if (!client.waitForServer(ros::Duration(connect_timeout_s))) {
+    report.skipped = "/task is not offered (the TR+ controller is not running)";
     return report;
   }
-  LegWatcher watcher;
-  watcher.world = &world;
-  ros::CallbackQueue queue;
-  ros::NodeHandle watch_nh(nh);
-  watch_nh.setCallbackQueue(&queue);
-  ros::Subscriber truth_sub =
-      watch_nh.subscribe("/sim/ground_truth", 50, &LegWatcher::OnTruth, &watcher);
-  ros::Subscriber bumper_sub = watch_nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher);
-  ros::Subscriber path_sub =
-      watch_nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher);
-  ros::Subscriber status_sub =
-      watch_nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher);
-  ros::AsyncSpinner watch_spinner(1, &queue);
-  watch_spinner.start();
-  ros::Publisher goal_pub = nh.advertise<geometry_msgs::PointStamped>("global_goal", 1, true);
+  report.ran = true;
+  // The goal regions are judged as the controller sees them (spott_tr_plus task interpretation)
+  // but on the CAD map of the world file and the ground truth.
+  const spott_map::MapDatabase cad = spott_map::MapDatabase::FromWorld(world);
+  const spott_tr_plus::PlaceResolver resolve = spott_tr_plus::MapPlaceResolver(cad, world.places);
+  std::vector<std::string> features_before;
+  for (const std::string& command : tasks) {
+    NavigationLeg leg;
+    leg.task = command;
+    spott_map::Pose2 start;
+    {
+      std::lock_guard<std::mutex> lock(watcher.mutex);
+      start = spott_map::Pose2{watcher.position.x(), watcher.position.y(), watcher.yaw};
+    }
+    const ros::Time started = ros::Time::now();
+    const ros::WallTime wall_started = ros::WallTime::now();
+    watcher.Reset(started);
+    {
+      std::lock_guard<std::mutex> lock(log.mutex);
+      log.path_summary.clear();
+      log.recoveries.clear();
+      log.recovering = false;
+    }
+    spott_msgs::TaskGoal goal;
+    goal.command = command;
+    client.sendGoal(goal);
+    const bool done = WaitForEnd(client, started, leg_timeout_s);
+    leg.sim_time_s = (ros::Time::now() - started).toSec();
+    leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
+    spott_msgs::TaskResultConstPtr result;
+    if (done) {
+      result = client.getResult();
+    } else {
+      client.cancelGoal();
+      client.waitForResult(ros::Duration(5.0));
+      result = client.getResult();
+    }
+    ros::WallDuration(0.2).sleep();  // the last ground truth and bumper messages
+    bool reached_by_controller = false;
+    if (result) {
+      leg.interpretation = result->interpretation;
+      leg.trace = result->trace;
+      reached_by_controller = result->outcome == "reached";
+      leg.task_outcome =
+          result->outcome +
+          (result->message.empty() || reached_by_controller ? "" : ": " + result->message);
+      for (const std::string& id : result->features_added) {
+        if (std::find(features_before.begin(), features_before.end(), id) ==
+            features_before.end()) {
+          leg.features_added.push_back(id);
+        }
+      }
+      features_before = result->features_added;
+      leg.has_target = std::isfinite(result->goal.x) && std::isfinite(result->goal.y);
+      if (leg.has_target) leg.target = spott_map::Pose2{result->goal.x, result->goal.y, 0.0};
+    }
+    if (!done) {
+      leg.task_outcome = TimedOutText(leg_timeout_s);
+    } else if (!result) {
+      leg.task_outcome = "no result";
+    }
+    leg.navigate_outcome = leg.task_outcome;
+    {
+      std::lock_guard<std::mutex> lock(log.mutex);
+      leg.recoveries = log.recoveries;
+      leg.global_path = log.path_summary;
+    }
+    Measure(watcher, leg.target.Position(), leg);
+    // The goal region of the command from where the robot really started.
+    bool in_region = false;
+    std::string region_error;
+    const auto parsed = spott_tr_plus::ParseTaskCommand(command);
+    if (parsed.ok()) {
+      const auto in =
+          spott_tr_plus::InterpretTask(*parsed.command, start.x, start.y, start.yaw,
+                                       spott_tr_plus::TaskInterpretationParameters{}, resolve);
+      if (in.ok() && in.interpretation->goal) {
+        in_region =
+            in.interpretation->goal->Contains(leg.final_position.x(), leg.final_position.y());
+      } else {
+        region_error = "the command names no goal region";
+      }
+    }
+    std::string off_goal;
+    if (!leg.has_target || !region_error.empty()) {
+      off_goal = region_error.empty() ? "no goal point" : region_error;
+    } else if (!in_region && leg.final_error_m > goal_tolerance_m) {
+      char why[200];
+      std::snprintf(why, sizeof(why),
+                    "the controller says reached, but the robot is outside the goal region and "
+                    "%.2f m from the goal point (tolerance %.2f m)",
+                    leg.final_error_m, goal_tolerance_m);
+      off_goal = why;
+    }
+    Judge(reached_by_controller ? "" : "the controller says " + leg.task_outcome, off_goal, leg);
+    report.legs.push_back(leg);
+  }
+  return report;
+}
+
+NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& world,
+                               const std::vector<std::string>& goals, double leg_timeout_s,
+                               double connect_timeout_s, double goal_tolerance_m) {
+  NavigationReport report;
+  if (!WaitForClock(nh, connect_timeout_s, report)) return report;
+  RunWatch watch(nh, world);
+  LegWatcher& watcher = watch.watcher;
+  watch.Start();
 
   NavigateClient client(nh, "harmonic_planner/navigate", true);
   if (!client.waitForServer(ros::Duration(connect_timeout_s))) {
@@ -155,81 +404,62 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     leg.goal = name;
     const spott_map::Place* place = world.FindPlace(name);
     if (!place) {
-      leg.outcome = "failed: no place '" + name + "' in the world file";
+      leg.outcome = "not reached: no place '" + name + "' in the world file";
       report.legs.push_back(leg);
       continue;
     }
     leg.target = place->pose;
     const ros::Time started = ros::Time::now();
+    const ros::WallTime wall_started = ros::WallTime::now();
     watcher.Reset(started);
-
-    geometry_msgs::PointStamped goal_point;
-    goal_point.header.frame_id = "map";
-    goal_point.header.stamp = started;
-    goal_point.point.x = place->pose.x;
-    goal_point.point.y = place->pose.y;
-    goal_pub.publish(goal_point);
-    // Give the global planner a moment to plan and project before the local planner starts, so
-    // the first steps already head for the right door.
-    const ros::WallTime wait_until = ros::WallTime::now() + ros::WallDuration(3.0);
-    while (ros::WallTime::now() < wait_until) {
-      {
-        std::lock_guard<std::mutex> lock(watcher.mutex);
-        if (!watcher.global_path.empty()) break;
-      }
-      ros::WallDuration(0.05).sleep();
-    }
-
-    client.sendGoal(NavigateGoalTo(place->pose, /*ignore_heading=*/false));
-    bool done = false;
-    while (ros::ok() && (ros::Time::now() - started).toSec() < leg_timeout_s) {
-      if (client.getState().isDone()) {
-        done = true;
-        break;
-      }
-      ros::WallDuration(0.05).sleep();
-    }
+    FeedbackLog log;
+    // Navigate waits in PLANNING for the pose and the global planner's answer: nothing to
+    // prepare here but the goal.
+    client.sendGoal(NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m),
+                    NavigateClient::SimpleDoneCallback(), NavigateClient::SimpleActiveCallback(),
+                    [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(fb); });
+    const bool done = WaitForEnd(client, started, leg_timeout_s);
     leg.sim_time_s = (ros::Time::now() - started).toSec();
+    leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
+    bool succeeded = false;
     if (done) {
       const auto result = client.getResult();
-      leg.outcome = result ? OutcomeText(*result) : "failed: no result";
-      leg.reached = result && result->outcome == spott_msgs::NavigateResult::SUCCEEDED;
+      leg.navigate_outcome = result ? spott_move_base::TextOf(*result) : "failed: no result";
+      succeeded = result && result->outcome == spott_msgs::NavigateResult::SUCCEEDED;
     } else {
       client.cancelGoal();
-      char text[64];
-      std::snprintf(text, sizeof(text), "timed out after %.0f s of simulated time", leg_timeout_s);
-      leg.outcome = text;
+      leg.navigate_outcome = TimedOutText(leg_timeout_s);
     }
-    std::lock_guard<std::mutex> lock(watcher.mutex);
-    leg.global_path = watcher.global_path.empty() ? watcher.last_path : watcher.global_path;
-    leg.path_length_m = watcher.path_length_m;
-    leg.final_error_m = (watcher.position - place->pose.Position()).norm();
-    leg.final_position = watcher.position;
-    leg.min_wall_distance_m = watcher.min_wall_distance_m;
-    leg.bumper_hits = watcher.bumper_hits;
-    leg.estimates = watcher.estimates;
-    leg.lost_reports = watcher.lost_reports;
-    if (watcher.estimates > 0) {
-      leg.mean_position_error_m = watcher.sum_position_error_m / watcher.estimates;
-      leg.mean_heading_error_rad = watcher.sum_heading_error_rad / watcher.estimates;
-      leg.max_position_error_m = watcher.max_position_error_m;
-      leg.max_heading_error_rad = watcher.max_heading_error_rad;
+    ros::WallDuration(0.2).sleep();  // the last ground truth and bumper messages
+    {
+      std::lock_guard<std::mutex> lock(log.mutex);
+      leg.recoveries = log.recoveries;
+      leg.global_path = log.path_summary;
     }
+    Measure(watcher, place->pose.Position(), leg);
+    std::string off_goal;
+    if (leg.final_error_m > goal_tolerance_m) {
+      char why[160];
+      std::snprintf(why, sizeof(why),
+                    "Navigate succeeded on the estimate, but the robot is %.2f m from the target "
+                    "(tolerance %.2f m)",
+                    leg.final_error_m, goal_tolerance_m);
+      off_goal = why;
+    }
+    Judge(succeeded ? "" : "Navigate " + leg.navigate_outcome, off_goal, leg);
     report.legs.push_back(leg);
   }
   return report;
 }
 
-spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ignore_heading) {
+spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ignore_heading,
+                                        double tolerance_m) {
   spott_msgs::NavigateGoal goal;
-  goal.target.header.frame_id = "map";
-  goal.target.header.stamp = ros::Time::now();
-  goal.target.pose.position.x = target.x;
-  goal.target.pose.position.y = target.y;
-  goal.target.pose.orientation.z = std::sin(target.yaw / 2.0);
-  goal.target.pose.orientation.w = std::cos(target.yaw / 2.0);
+  goal.target = spott_ros::ToPoseStamped(spott_ros::MakePose2D(target.x, target.y, target.yaw),
+                                         "map", ros::Time::now());
   goal.speed_mode = spott_msgs::NavigateGoal::NORMAL;
   goal.direction_bias = std::numeric_limits<double>::quiet_NaN();
+  goal.position_tolerance = tolerance_m;
   goal.ignore_heading = ignore_heading;
   return goal;
 }
@@ -238,8 +468,15 @@ std::string FormatNavigation(const NavigationReport& report) {
   if (!report.ran && report.skipped.empty()) return "";
   std::ostringstream out;
   out << std::fixed << std::setprecision(2);
-  out << "\n Navigation (global_planner -> harmonic_planner -> robot_sim; measured on the\n"
-      << " simulator's ground truth, which nothing in the stack reads):\n";
+  if (report.by_task) {
+    out << "\n Tasks (/task -> tr_plus_controller (SPOTT's TR+ navigation program) -> Navigate ->\n"
+        << " global_planner + harmonic_planner -> cmd_vel_arbiter -> robot_sim; judged on the\n"
+        << " simulator's ground truth, which nothing in the stack reads):\n";
+  } else {
+    out << "\n Navigation (Navigate -> global_planner + harmonic_planner -> cmd_vel_arbiter ->\n"
+        << " robot_sim; judged on the simulator's ground truth, which nothing in the stack "
+           "reads):\n";
+  }
   if (!report.ran) {
     out << "   not run: " << report.skipped << "\n";
     return out.str();
@@ -247,10 +484,28 @@ std::string FormatNavigation(const NavigationReport& report) {
   int reached = 0;
   for (const NavigationLeg& leg : report.legs) {
     reached += leg.reached;
-    out << "   to " << leg.goal << " (" << leg.target.x << ", " << leg.target.y
-        << "): " << leg.outcome << "\n";
+    if (report.by_task) {
+      out << "   task '" << leg.task << "': " << leg.outcome << "\n";
+      if (!leg.interpretation.empty()) out << "     interpretation: " << leg.interpretation << "\n";
+      if (!leg.trace.empty()) out << "     TR trace: " << CompactTrace(leg.trace) << "\n";
+      out << "     controller: " << leg.task_outcome << "\n";
+    } else {
+      out << "   to " << leg.goal << " (" << leg.target.x << ", " << leg.target.y
+          << "): " << leg.outcome << "\n";
+    }
     if (!leg.global_path.empty()) out << "     global path: " << leg.global_path << "\n";
-    out << std::setprecision(1) << "     " << leg.sim_time_s << " s simulated, "
+    if (!report.by_task && !leg.outcome.empty() && !leg.reached && !leg.navigate_outcome.empty() &&
+        leg.outcome.find(leg.navigate_outcome) == std::string::npos) {
+      out << "     Navigate: " << leg.navigate_outcome << "\n";
+    }
+    if (!leg.recoveries.empty()) {
+      out << "     recovering " << leg.recoveries.size() << " times:";
+      for (std::size_t i = 0; i < leg.recoveries.size(); ++i)
+        out << (i == 0 ? " " : "; ") << leg.recoveries[i];
+      out << "\n";
+    }
+    out << std::setprecision(1) << "     " << leg.sim_time_s << " s simulated ("
+        << (leg.wall_time_s > 0 ? leg.sim_time_s / leg.wall_time_s : 0.0) << "x real time), "
         << leg.path_length_m << " m driven, ended at (" << leg.final_position.x() << ", "
         << leg.final_position.y() << "), " << std::setprecision(2) << leg.final_error_m
         << " m from the target; closest approach to a wall or object " << leg.min_wall_distance_m
@@ -264,8 +519,42 @@ std::string FormatNavigation(const NavigationReport& report) {
           << " times\n"
           << std::setprecision(2);
     }
+    if (report.by_task) {
+      out << "     features the controller added to the map: ";
+      if (leg.features_added.empty()) out << "none";
+      for (std::size_t i = 0; i < leg.features_added.size(); ++i) {
+        if (i == 12) {
+          out << " ... (" << leg.features_added.size() << " in all)";
+          break;
+        }
+        out << (i == 0 ? "" : ", ") << leg.features_added[i];
+      }
+      out << "\n";
+    }
   }
-  out << "   " << reached << " of " << report.legs.size() << " goals reached\n";
+  if (report.by_task) {  // the rules of the traces, once each
+    std::vector<std::string> rules;
+    for (const NavigationLeg& leg : report.legs) {
+      for (const std::string& r : leg.trace) {
+        if (std::find(rules.begin(), rules.end(), r) == rules.end()) rules.push_back(r);
+      }
+    }
+    if (!rules.empty()) out << "   the rules of the TR traces:\n";
+    for (const std::string& r : rules) out << "     " << r << "\n";
+  }
+  double sim = 0.0, wall = 0.0;
+  for (const NavigationLeg& leg : report.legs) {
+    sim += leg.sim_time_s;
+    wall += leg.wall_time_s;
+  }
+  out << "   " << reached << " of " << report.legs.size()
+      << (report.by_task ? " tasks reached" : " goals reached");
+  if (wall > 0) {
+    out << std::setprecision(1) << "; real-time factor " << sim / wall << " achieved";
+    if (report.requested_real_time_factor > 0)
+      out << " (" << report.requested_real_time_factor << " asked)";
+  }
+  out << "\n";
   return out.str();
 }
 

@@ -85,8 +85,9 @@ DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options) {
   DemoReport report;
   // The report says which parts of the designed stack this build lacks, rather than a list
   // written by hand that goes stale.
-  for (const char* package : {"robot_sim", "markov_localization", "spott_global_planner",
-                              "spott_harmonic_planner", "spott_tr_plus", "rpl_executive"}) {
+  for (const char* package :
+       {"robot_sim", "markov_localization", "spott_global_planner", "spott_harmonic_planner",
+        "spott_move_base", "cmd_vel_arbiter", "spott_tr_plus", "rpl_executive"}) {
     const bool runs =
         std::find(options.running.begin(), options.running.end(), package) != options.running.end();
     (ros::package::getPath(package).empty() ? report.stack_packages_missing
@@ -200,9 +201,12 @@ DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options) {
     srv.request.state = state;
     set_door.call(srv);
   }
-  if (!options.goals.empty()) {
-    report.navigation =
-        RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s, timeout_s);
+  if (!options.tasks.empty()) {
+    report.navigation = RunTasks(nh, *scenario.world, options.tasks, options.leg_timeout_s,
+                                 timeout_s, options.goal_tolerance_m);
+  } else if (!options.goals.empty()) {
+    report.navigation = RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s,
+                                      timeout_s, options.goal_tolerance_m);
   }
   report.ok = true;
   report.elapsed_s = (ros::WallTime::now() - start).toSec();

@@ -45,13 +45,17 @@ struct DemoOptions {
   std::vector<std::string> doors_to_close;
   double timeout_s = 30.0;           ///< For each answer of the running nodes (s).
   std::vector<std::string> running;  ///< Stack packages demo.launch runs (for the report).
-  std::vector<std::string> goals;    ///< Places to drive to, in order; empty: no navigation.
-  double leg_timeout_s = 300.0;      ///< Simulated time allowed per leg (s).
+  std::vector<std::string> goals;    ///< Places to drive to through Navigate, in order.
+  /// Task commands for the TR+ controller (/task), in order; they replace `goals`.
+  std::vector<std::string> tasks;
+  double leg_timeout_s = 300.0;    ///< Simulated time allowed per leg (s).
+  double goal_tolerance_m = 0.25;  ///< Asked of Navigate and judged on ground truth (m).
 };
 
 /// Runs the demo against the running stack: reads the world server's latched topics, closes
 /// each door of `doors_to_close` in turn through its service and reports reachability, then
-/// reopens them; then drives the robot to each of `goals` (see RunNavigation).
+/// reopens them; then gives the TR+ controller each of `tasks` (RunTasks), or drives the robot
+/// to each of `goals` through Navigate (RunNavigation).
 DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options);
 
 /// The report as a user reads it.

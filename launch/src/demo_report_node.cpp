@@ -5,28 +5,31 @@
 #include <ros/ros.h>
 
 #include "demo_report.h"
+#include "spott_ros/parameter_reader.h"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "demo_report");
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
-  spott_launch::DemoOptions options;
-  if (!pnh.getParam("world_file", options.world_file)) {
-    ROS_FATAL("demo_report: ~world_file is required");
-    return 1;
-  }
-  pnh.getParam("doors_to_close", options.doors_to_close);
-  pnh.getParam("running", options.running);
-  pnh.getParam("goals", options.goals);
-  pnh.param("timeout", options.timeout_s, options.timeout_s);
-  pnh.param("leg_timeout", options.leg_timeout_s, options.leg_timeout_s);
-  if (!(options.timeout_s > 0.0) || !(options.leg_timeout_s > 0.0)) {
-    ROS_FATAL("demo_report: ~timeout and ~leg_timeout must be > 0 s");
-    return 1;
-  }
   std::string report_file;  // optional copy of the report (./spott demo prints it after shutdown)
-  pnh.param("report_file", report_file, report_file);
-  const spott_launch::DemoReport report = spott_launch::RunDemo(nh, options);
+  const auto options = spott_ros::ReadNodeParameters<spott_launch::DemoOptions>(
+      pnh, "demo_report", [&](spott_ros::ParameterReader& r, spott_launch::DemoOptions& o) {
+        r.Get("world_file", o.world_file);
+        r.Get("report_file", report_file);
+        r.Get("doors_to_close", o.doors_to_close);
+        r.Get("running", o.running);
+        r.Get("goals", o.goals);
+        r.Get("tasks", o.tasks);
+        r.Get("timeout_s", o.timeout_s, "s");
+        r.Get("leg_timeout_s", o.leg_timeout_s, "s");
+        r.Get("goal_tolerance_m", o.goal_tolerance_m, "m");
+        if (o.world_file.empty()) r.Fail("world_file is required");
+        r.Require(o.timeout_s > 0, "timeout_s", "> 0", o.timeout_s);
+        r.Require(o.leg_timeout_s > 0, "leg_timeout_s", "> 0", o.leg_timeout_s);
+        r.Require(o.goal_tolerance_m > 0, "goal_tolerance_m", "> 0", o.goal_tolerance_m);
+      });
+  if (!options) return 1;
+  const spott_launch::DemoReport report = spott_launch::RunDemo(nh, *options);
   const std::string text = spott_launch::FormatReport(report);
   std::cout << text << std::flush;
   if (!report_file.empty()) {

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# SPOTT Fig. 18, GO with the CAD map: N seeded runs on cim_office (default 20), each a fresh
+# stack with its own start pose and goal (launch/src/fig18_campaign.h), one after the other,
+# then a table of the results (times, path lengths, speeds). Every run is in its own network
+# namespace when /work/wt/isolated.sh or unshare is at hand (rostest's and roslaunch's fixed
+# ports). Usage: launch/scripts/fig18_campaign.sh [N] [FIRST_SEED]    (from the repository)
+set -u
+N=${1:-20}
+FIRST=${2:-1}
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+export PATH="/usr/bin:$PATH"
+# shellcheck disable=SC1091
+source "$ROOT/.ws/devel/setup.bash"
+WORLD="$ROOT/spott_worlds/worlds/cim_office.yaml"
+OUT=${FIG18_OUT:-"$ROOT/.ws/fig18"}
+mkdir -p "$OUT"
+RESULTS="$OUT/results.txt"
+: > "$RESULTS"
+run_one() {  # seed start_pose
+  export ROS_MASTER_URI=http://127.0.0.1:11311 ROS_HOSTNAME=127.0.0.1
+  export ROS_LOG_DIR="$OUT/log-$1"
+  timeout 600 roslaunch -p 11311 spott_launch fig18.launch seed:="$1" start_pose:="$2" \
+    result_file:="$RESULTS" > "$OUT/run-$1.log" 2>&1
+}
+export -f run_one
+export OUT RESULTS
+for ((seed = FIRST; seed < FIRST + N; ++seed)); do
+  start=$("$ROOT/.ws/devel/lib/spott_launch/fig18_run" --case "$seed" "$WORLD") || {
+    echo "seed $seed: no case"; continue; }
+  echo "seed $seed: start $start ($(uptime | sed 's/.*load average: //'))"
+  if command -v unshare > /dev/null && [[ $(id -u) -eq 0 ]]; then
+    unshare -n bash -c "ip link set lo up; run_one $seed '$start'"
+  else
+    run_one "$seed" "$start"
+  fi
+  grep "^$seed " "$RESULTS" || echo "$seed - - FAILED (no result: see $OUT/run-$seed.log)" >> "$RESULTS"
+  tail -n 1 "$RESULTS"
+done
+echo
+echo "seed start_room goal_room result time_s path_m straight_m speed_mps error_m contacts"
+cat "$RESULTS"
+awk '$4 == "arrived" {n++; t += $5; l += $6; s += $8} END {
+  printf "\n%d of %d arrived", n, NR;
+  if (n) printf "; mean time %.1f s, mean path %.1f m, mean speed %.3f m/s", t / n, l / n, s / n;
+  printf "\n" }' "$RESULTS"

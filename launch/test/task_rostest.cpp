@@ -1,0 +1,97 @@
+// The TR+ controller serving /task on the full stack (task.test): a malformed command is
+// rejected with its column and changes nothing; a new task preempts the running one after the
+// robot has stopped; `go in room(lab)` from the hall of cim_office brings the robot into the
+// lab (ground truth) without a bumper contact.
+#include <gtest/gtest.h>
+
+#include "task_test_helpers.h"
+
+namespace {
+
+using spott_launch::testing::Describe;
+using spott_launch::testing::RunTask;
+using spott_launch::testing::TaskClient;
+using spott_launch::testing::Watch;
+
+class Task : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    nh_ = new ros::NodeHandle;
+    spinner_ = new ros::AsyncSpinner(2);
+    spinner_->start();
+    watch_ = new Watch(*nh_);
+    client_ = new TaskClient("task", true);
+    ASSERT_TRUE(ros::Time::waitForValid(ros::WallDuration(60.0)));
+    ASSERT_TRUE(client_->waitForServer(ros::Duration(60.0))) << "/task is not offered";
+    ASSERT_TRUE(watch_->WaitForLocalization(120.0)) << "no localization_status";
+  }
+  static ros::NodeHandle* nh_;
+  static ros::AsyncSpinner* spinner_;
+  static Watch* watch_;
+  static TaskClient* client_;
+};
+ros::NodeHandle* Task::nh_ = nullptr;
+ros::AsyncSpinner* Task::spinner_ = nullptr;
+Watch* Task::watch_ = nullptr;
+TaskClient* Task::client_ = nullptr;
+
+TEST_F(Task, MalformedTaskIsRejectedWithItsColumn) {
+  const auto start = watch_->position();
+  const auto r = RunTask(*client_, "go near tabel(1, 2)", 20.0);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(client_->getState(), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_EQ(r->outcome, "rejected");
+  EXPECT_FALSE(r->success);
+  EXPECT_NE(r->message.find("task:1:9:"), std::string::npos) << r->message;
+  EXPECT_NE(r->message.find("tabel"), std::string::npos) << r->message;
+  EXPECT_LT((watch_->position() - start).norm(), 0.05) << "the robot moved";
+}
+
+TEST_F(Task, SecondTaskPreemptsTheFirstAndGoInRoomLabArrivesWithoutContact) {
+  TaskClient first("task", true);
+  ASSERT_TRUE(first.waitForServer(ros::Duration(10.0)));
+  spott_msgs::TaskGoal goal;
+  goal.command = "go to door(d_106)";
+  first.sendGoal(goal);
+  const auto start = watch_->position();
+  const ros::Time deadline = ros::Time::now() + ros::Duration(60.0);
+  while ((watch_->position() - start).norm() < 1.0 && ros::Time::now() < deadline) {
+    ros::WallDuration(0.05).sleep();
+  }
+  ASSERT_GE((watch_->position() - start).norm(), 1.0) << "the first task did not set off";
+  ASSERT_GT(watch_->speed(), 0.05);
+  watch_->Reset();
+  const auto r = RunTask(*client_, "go in room(lab)", 200.0);
+  // The first task was preempted...
+  ASSERT_TRUE(first.waitForResult(ros::Duration(10.0)));
+  EXPECT_EQ(first.getState(), actionlib::SimpleClientGoalState::PREEMPTED);
+  ASSERT_TRUE(first.getResult());
+  EXPECT_EQ(first.getResult()->outcome, "preempted");
+  EXPECT_NE(first.getResult()->message.find("go in room(lab)"), std::string::npos);
+  // ... the robot stood still before the second set off ...
+  EXPECT_LT(watch_->min_speed(), 0.03);
+  // ... and the second brought it into the lab (10..30 x 9.5..20) without a contact.
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->outcome, "reached") << Describe(r);
+  const auto p = watch_->position();
+  EXPECT_GT(p.x(), 10.0);
+  EXPECT_LT(p.x(), 30.0);
+  EXPECT_GT(p.y(), 9.5 + 0.2285) << "the body is not in the lab";
+  EXPECT_LT(p.y(), 20.0);
+  EXPECT_EQ(watch_->contacts(), 0);
+  // The trace shows the program's way: Fig. 3 -> Fig. 9 -> Fig. 11 and the goal rule.
+  const auto has = [&](const std::string& rule) {
+    return std::find(r->trace.begin(), r->trace.end(), rule) != r->trace.end();
+  };
+  EXPECT_TRUE(has("INTERPRET_TASK[1]: apriori_map -> APRIORI_MAP_TASK(STATUS)")) << Describe(r);
+  EXPECT_TRUE(has("APRIORI_MAP_TASK[2]: target_known(STATUS) -> set_goal(STATUS)"));
+  EXPECT_NE(r->trace.back().find("SPOTT[3]"), std::string::npos) << Describe(r);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "task_rostest");
+  return RUN_ALL_TESTS();
+}
