@@ -115,8 +115,10 @@ TEST(ArbiterNode, PrioritiesTakeReleaseTimeoutAndRefusalOnTheRealRobot) {
   EXPECT_EQ(Status().driver, "planner");
 
   // The planner falls silent: after its 0.5 s timeout the arbiter stops the robot (well
-  // before the simulator's own 1 s command timeout).
-  ros::Duration(0.8).sleep();
+  // before the simulator's own 1 s command timeout). Stopped by 1.1 s: 0.5 s timeout, one 50 Hz
+  // check, 0.4 s braking from 0.2 m/s at the Nomad's 0.5 m/s^2. Had only the simulator's timeout
+  // stopped it, it would still move at 0.15 m/s then. (At 0.8 s it read 0.045 m/s once: braking.)
+  ros::Duration(1.1).sleep();
   EXPECT_LT(motion.Get().first, 0.03);
   s = Status();
   EXPECT_EQ(s.driver, "");
