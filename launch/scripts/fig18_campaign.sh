@@ -2,7 +2,7 @@
 # SPOTT Fig. 18, GO with the CAD map: N seeded runs on cim_office (default 20), each a fresh
 # stack with its own start pose and goal (launch/src/fig18_campaign.h), one after the other,
 # then a table of the results (times, path lengths, speeds). Every run is in its own network
-# namespace when /work/wt/isolated.sh or unshare is at hand (rostest's and roslaunch's fixed
+# namespace when unshare is at hand (as tools/isolated.sh does) (rostest's and roslaunch's fixed
 # ports). Usage: launch/scripts/fig18_campaign.sh [N] [FIRST_SEED]    (from the repository)
 set -u
 N=${1:-20}

@@ -5,7 +5,7 @@
 # contacts) to the results file; a per-branch summary and the load average close it.
 #
 # Usage (from the repository root, after ./spott build):
-#   /work/wt/isolated.sh rpl_executive/scripts/run_hilare_missions.sh [RUNS] [FIRST_SEED]
+#   tools/isolated.sh rpl_executive/scripts/run_hilare_missions.sh [RUNS] [FIRST_SEED]
 # Environment: OUT (default rpl_executive/eval/hilare_missions_runs.txt), RTF (default 4).
 set -u
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"

@@ -6,7 +6,7 @@
 #
 # Usage (from the repository root, after ./spott build; rostest needs its own network namespace
 # on a shared machine):
-#   /work/wt/isolated.sh rpl_executive/scripts/run_office_delivery.sh [RUNS] [FIRST_SEED]
+#   tools/isolated.sh rpl_executive/scripts/run_office_delivery.sh [RUNS] [FIRST_SEED]
 # Environment: OUT (results file, default rpl_executive/eval/office_delivery_runs.txt),
 # RTF (real-time factor, default 4).
 set -u

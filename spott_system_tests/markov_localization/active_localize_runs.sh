@@ -3,7 +3,7 @@
 # spott_system_tests/test/active_localize_success.test (B21 in bonn_department, sonars only, uniform belief at
 # the corridor's east end, world_server + global planner + harmonic planner + the node at its
 # YAML defaults, 20 cm / 5 deg) once per seed, each in its own network namespace
-# (/work/wt/isolated.sh when present). Needs the workspace built with tests
+# (tools/isolated.sh, as root). Needs the workspace built with tests
 # (./spott test spott_system_tests builds them). Writes results/active_localize_runs.md.
 # Usage: spott_system_tests/markov_localization/active_localize_runs.sh [RUNS (20)] [FIRST_SEED (1)] [extra roslaunch args...]
 set -uo pipefail
@@ -14,7 +14,7 @@ FIRST="${2:-1}"
 shift $(( $# > 2 ? 2 : $# ))
 OUT="$HERE/results/active_localize_runs.md"
 ISOLATE=""
-[[ -x /work/wt/isolated.sh ]] && ISOLATE=/work/wt/isolated.sh
+[[ $(id -u) -eq 0 ]] && ISOLATE="$ROOT/tools/isolated.sh"
 RUNNER="$(mktemp)"
 cat > "$RUNNER" <<EOS
 #!/usr/bin/env bash
