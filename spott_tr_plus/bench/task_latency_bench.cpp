@@ -148,8 +148,14 @@ void BM_TaskToFirstMotion_Room(benchmark::State& state) {
   TaskToFirstMotion(state, "go in room(lab)");
 }
 
-BENCHMARK(BM_TaskToFirstMotion_Point)->UseManualTime()->Iterations(30)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TaskToFirstMotion_Room)->UseManualTime()->Iterations(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TaskToFirstMotion_Point)
+    ->UseManualTime()
+    ->Iterations(30)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TaskToFirstMotion_Room)
+    ->UseManualTime()
+    ->Iterations(30)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
