@@ -10,7 +10,9 @@ FIRST=${2:-1}
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 export PATH="/usr/bin:$PATH"
 # shellcheck disable=SC1091
+set +u  # catkin's setup scripts read unset variables
 source "$ROOT/.ws/devel/setup.bash"
+set -u
 WORLD="$ROOT/spott_worlds/worlds/cim_office.yaml"
 OUT=${FIG18_OUT:-"$ROOT/.ws/fig18"}
 mkdir -p "$OUT"
