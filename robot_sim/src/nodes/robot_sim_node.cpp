@@ -6,7 +6,6 @@
 #include <cstring>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/callback_queue.h>
@@ -24,6 +23,7 @@
 #include "robot_sim/fault_events.h"
 #include "robot_sim/ros/conversions.h"
 #include "robot_sim/ros/parameters.h"
+#include "spott_map/pose_text.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
@@ -451,14 +451,13 @@ int Main(int argc, char** argv) {
   }
   spott_map::Pose2 start = world.world->robot_start;
   if (!params.start_pose.empty()) {
-    std::istringstream in(params.start_pose);
-    std::string rest;
-    if (!(in >> start.x >> start.y >> start.yaw) || (in >> rest) || !std::isfinite(start.x) ||
-        !std::isfinite(start.y) || !std::isfinite(start.yaw)) {
-      ROS_FATAL("robot_sim: parameter start_pose must be 'x y yaw', got '%s'",
-                params.start_pose.c_str());
+    std::string why;
+    const auto pose = spott_map::ParsePoseText(params.start_pose, &why);
+    if (!pose) {
+      ROS_FATAL("robot_sim: parameter start_pose: %s", why.c_str());
       return 1;
     }
+    start = *pose;
   }
   auto sim_world = std::make_unique<SimWorld>(params.world);
   sim_world->Build(*world.world);
