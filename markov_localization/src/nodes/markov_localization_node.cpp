@@ -54,7 +54,10 @@ class LocalizationNode {
   LocalizationNode(ros::NodeHandle& nh, const ml::NodeParameters& params,
                    std::optional<spott_map::World> world)
       : params_(params), world_(std::move(world)), tf_listener_(tf_buffer_) {
-    if (world_ && params.initial_pose_from_world) pending_initial_ = world_->robot_start;
+    if (params.initial_pose)
+      pending_initial_ = params.initial_pose;
+    else if (world_ && params.initial_pose_from_world)
+      pending_initial_ = world_->robot_start;
     // Which map (README "Maps"): the topic when asked for, else map_file, else the world.
     if (params.use_map_topic || (params.map_file.empty() && !world_)) {
       map_sub_ = nh.subscribe(params.map_topic, 1, &LocalizationNode::OnMap, this);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spott_map/pose_text.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace markov_localization {
@@ -71,6 +72,13 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("transform_tolerance_s", p.transform_tolerance_s);
   r.Get("start_uniform", p.start_uniform);
   r.Get("initial_pose_from_world", p.initial_pose_from_world);
+  std::string initial_pose;
+  r.Get("initial_pose", initial_pose);
+  if (!initial_pose.empty()) {
+    std::string why;
+    p.initial_pose = spott_map::ParsePoseText(initial_pose, &why);
+    if (!p.initial_pose) v.push_back("~initial_pose: " + why);
+  }
   r.Get("initial_sigma_xy_m", p.initial_sigma_xy_m);
   r.GetDegrees("initial_sigma_theta_deg", p.initial_sigma_theta_rad);
   r.Get("belief_rate_hz", p.belief_rate_hz);

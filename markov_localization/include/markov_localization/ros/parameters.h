@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "markov_localization/sensor_model.h"
 #include "markov_localization/sticky_estimate.h"
 #include "markov_localization/wander.h"
+#include "spott_map/world.h"
 
 namespace markov_localization {
 
@@ -52,8 +54,12 @@ struct NodeParameters {
   std::string odom_frame = "odom";
   double transform_tolerance_s = 0.2;  ///< map->odom is future-dated by this (s), >= 0.
   bool start_uniform = true;           ///< Uniform belief at start (else ~initialpose waits).
-  /// With start_uniform false: start from the world file's robot_start (the stack does).
+  /// With start_uniform false: start from the world file's robot_start.
   bool initial_pose_from_world = false;
+  /// With start_uniform false: start here ("x y yaw" in the map frame; wins over the world's
+  /// robot_start). The stack passes the simulator's start_pose, so that the belief starts where
+  /// the robot is instead of being corrected by /initialpose after the controller began mapping.
+  std::optional<spott_map::Pose2> initial_pose;
   double initial_sigma_xy_m = 0.3;  ///< Spread of the belief set by /initialpose.
   double initial_sigma_theta_rad = 0.2;
   double belief_rate_hz = 1.0;  ///< Rate of the `belief` grid (it touches every state), > 0.
