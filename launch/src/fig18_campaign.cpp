@@ -1,7 +1,6 @@
 #include "fig18_campaign.h"
 
 #include <actionlib/client/simple_action_client.h>
-#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/LocalizationStatus.h>
@@ -13,7 +12,6 @@
 
 #include "demo_navigation.h"
 #include "spott_map/room_door_graph.h"
-#include "spott_ros/pose_conversions.h"
 
 namespace spott_launch {
 
@@ -123,22 +121,15 @@ Fig18Run RunFig18Case(ros::NodeHandle& nh, const Fig18Case& c, double timeout_s,
     run.outcome = "the stack did not come up (/clock, /task)";
     return run;
   }
-  // markov_localization starts at the world's robot_start: tell it where this run starts.
-  ros::Publisher initial =
-      nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
-  geometry_msgs::PoseWithCovarianceStamped pose;
-  pose.header.frame_id = "map";
-  pose.header.stamp = ros::Time::now();
-  pose.pose.pose = spott_ros::ToPose(spott_ros::MakePose2D(c.start.x, c.start.y, c.start.yaw));
-  initial.publish(pose);
+  // markov_localization starts at the run's start (stack.launch passes start_pose as its
+  // initial pose); wait until its estimate says so.
   const ros::WallTime settle = ros::WallTime::now() + ros::WallDuration(30.0);
   while (ros::WallTime::now() < settle) {
     {
       std::lock_guard<std::mutex> lock(mutex);
       if ((estimate - c.start.Position()).norm() < 0.2) break;
     }
-    initial.publish(pose);
-    ros::WallDuration(0.5).sleep();
+    ros::WallDuration(0.2).sleep();
   }
   ros::Duration(2.0).sleep();
   {

@@ -1,6 +1,6 @@
 // SPOTT Fig. 18, the guaranteed cell: GO with the CAD map. A seeded campaign of tasks in
 // cim_office, each from its own start pose to its own goal in another room: a run is a fresh
-// stack (robot_sim at the run's start, markov_localization told the start as /initialpose) and
+// stack (robot_sim at the run's start, markov_localization starting there too) and
 // one task command `go to point(x, y)` for the TR+ controller, judged on the simulator's ground
 // truth (scripts/fig18_campaign.sh runs the campaign; test/fig18.test runs one case in CI).
 #pragma once

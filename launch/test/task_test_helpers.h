@@ -4,7 +4,6 @@
 #pragma once
 
 #include <actionlib/client/simple_action_client.h>
-#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <spott_msgs/AddObstacle.h>
@@ -185,24 +184,6 @@ inline bool AddObstacle(const std::string& id, const std::string& kind, double x
   }
   *message = srv.response.message;
   return srv.response.success;
-}
-
-/// Tells markov_localization where the robot starts (as rviz's "2D Pose Estimate" does).
-inline void SetInitialPose(ros::NodeHandle& nh, double x, double y, double yaw) {
-  ros::Publisher pub =
-      nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
-  geometry_msgs::PoseWithCovarianceStamped m;
-  m.header.frame_id = "map";
-  m.header.stamp = ros::Time::now();
-  m.pose.pose = spott_ros::ToPose(spott_ros::MakePose2D(x, y, yaw));
-  m.pose.covariance[0] = m.pose.covariance[7] = 0.01;
-  m.pose.covariance[35] = 0.01;
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
-  while (pub.getNumSubscribers() == 0 && ros::WallTime::now() < end) {
-    ros::WallDuration(0.05).sleep();
-  }
-  pub.publish(m);
-  ros::WallDuration(0.5).sleep();
 }
 
 inline bool InPolygon(const spott_map::Vec2& p, const std::vector<spott_map::Vec2>& polygon) {
