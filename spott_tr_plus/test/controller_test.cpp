@@ -234,6 +234,38 @@ TEST_F(Controller, AContactOnAKnownWallIsNotAddedAgain) {
   EXPECT_EQ(io_.takes, std::vector<std::string>{"reflex"});  // it still moves away
 }
 
+TEST_F(Controller, AnEstimateJumpTakesBackWhatWasJustSensedAndPausesMapping) {
+  At(5.0, 8.25, 0.0, 0.1);
+  c_->Bumper({0.0}, 0.2);  // contact_1
+  c_->Bumper({}, 0.3);
+  Run(0.3, 10.0, "reflex");
+  // 12 s later in hall_e, odometry and estimate agreeing (a long drive, not a jump).
+  const Pose2 east{20.0, 8.25, 0.0};
+  c_->SetOdometry(east, 0.0, 0.0, 12.0);
+  c_->SetPose(east, 12.0);
+  c_->SetLocalization(true, 12.0);
+  c_->Bumper({0.0}, 12.1);  // contact_2
+  c_->Bumper({}, 12.2);
+  ASSERT_TRUE(Has(c_->added_features(), "contact_1"));
+  ASSERT_TRUE(Has(c_->added_features(), "contact_2"));
+  EXPECT_EQ(c_->estimate_jumps(), 0);
+  // Now the estimate moves 1 m while odometry stands: contact_2 was placed with a pose that
+  // was 1 m off; contact_1, placed 12.8 s before (localization/retract_s 10), stays.
+  const std::size_t sent = io_.updates.size();
+  c_->SetPose(Pose2{21.0, 8.25, 0.0}, 13.0);
+  EXPECT_EQ(c_->estimate_jumps(), 1);
+  ASSERT_EQ(io_.updates.size(), sent + 1);
+  EXPECT_EQ(io_.updates.back().removed, std::vector<std::string>{"contact_2"});
+  EXPECT_FALSE(c_->map().FindFeature("contact_2"));
+  EXPECT_TRUE(c_->map().FindFeature("contact_1"));
+  EXPECT_FALSE(Has(c_->added_features(), "contact_2"));
+  // A turn of the estimate by 0.5 rad is a jump too; small corrections are not.
+  c_->SetPose(Pose2{21.1, 8.3, 0.1}, 13.5);
+  EXPECT_EQ(c_->estimate_jumps(), 1);
+  c_->SetPose(Pose2{21.1, 8.3, 0.6}, 14.0);
+  EXPECT_EQ(c_->estimate_jumps(), 2);
+}
+
 TEST_F(Controller, GoForwardStopsBeforeTheKnownWallAhead) {
   At(27.0, 8.25, 0.0, 0.1);  // facing the east wall of hall_e, its face at x = 29.925
   ASSERT_TRUE(c_->StartTask(1, "go forward", 0.2).accepted);
@@ -298,6 +330,36 @@ TEST(SensorMapper, RepeatedEchoesOfAnUnmappedObjectBecomeAFeatureButWallEchoesDo
   EXPECT_TRUE(m.Take(db).features.empty()) << "a confirmed cell is sent once";
 }
 
+TEST(SensorMapper, AnEchoOfAJambInTheConeIsNoPhantomOnTheAxis) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  // From (2, 8.25) in hall_w the west jamb of d_201, the wall's corner at (3.55, 9.425), lies
+  // 1.945 m away at 0.649 rad, 0.2 rad off a beam at 0.449 rad (inside the 0.26 rad half cone).
+  // On the beam's axis that range is (3.75, 9.09): 0.33 m from the wall, 0.41 m from the
+  // opening, free space. The corner explains the echo.
+  const Pose2 robot{2.0, 8.25, 0.0};
+  for (int k = 0; k < 8; ++k) m.AddRing(OneBeam(0, 0, 0.449, 1.945), robot);
+  EXPECT_TRUE(m.Take(db).features.empty());
+  // The same range along the hallway (axis 0.0 rad: nothing known within the cone at 1.945 m)
+  // is something new.
+  for (int k = 0; k < 4; ++k) m.AddRing(OneBeam(0, 0, 0.0, 1.945), robot);
+  EXPECT_EQ(m.Take(db).features.size(), 1u);
+}
+
+TEST(SensorMapper, ForgetDropsTheEvidenceGatheredSoFar) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  const Pose2 robot{5.0, 8.25, 0.0};
+  for (int k = 0; k < 3; ++k) m.AddRing(OneBeam(kRadius, 0, 0, 1.0), robot);
+  m.Forget();  // the pose of those three was wrong
+  m.AddRing(OneBeam(kRadius, 0, 0, 1.0), robot);
+  EXPECT_TRUE(m.Take(db).features.empty()) << "one echo since: below confirm_score 4";
+  for (int k = 0; k < 3; ++k) m.AddRing(OneBeam(kRadius, 0, 0, 1.0), robot);
+  EXPECT_EQ(m.Take(db).features.size(), 1u);
+}
+
 TEST(SensorMapper, ClampedAndReflectedEchoesAreNotMapped) {
   const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
@@ -315,12 +377,18 @@ TEST(SensorMapper, BeamsEchoingOnADoorsOpeningSenseItClosedAndBeamsThroughItOpen
   spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
   m.SetMap(db);
-  // Under d_201 (centre (4, 9.5), open in the file), looking north: the opening is
-  // 9.5 - 8.4785 = 1.0215 m from the transducer; a leaf echoes at about that.
-  const Pose2 robot{4.0, 8.25, 0.0};
-  for (int k = 0; k < 2; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 1.0), robot);
+  // Under d_201 (centre (4, 9.5), 0.9 m wide, open in the file), looking north from the middle
+  // of hall_w: the opening is 9.5 - 8.4785 = 1.0215 m from the transducer. There the cone is
+  // 0.54 m wide: with the robot 0.18 m off along the hallway it would take in the wall beside
+  // the door, which echoes at the same range. Such echoes do not vote "closed".
+  const Pose2 far{4.0, 8.25, 0.0};
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 1.0), far);
+  EXPECT_TRUE(m.Take(db).doors.empty()) << "the echo may be the wall beside the opening";
+  // 0.5 m closer (0.52 m from the opening) the cone is 0.28 m wide: the leaf, even 0.15 m off.
+  const Pose2 robot{4.0, 8.75, 0.0};
+  for (int k = 0; k < 2; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.52), robot);
   EXPECT_TRUE(m.Take(db).doors.empty()) << "2 votes are below doors/votes 3";
-  m.AddRing(OneBeam(0, kRadius, M_PI / 2, 1.0), robot);
+  m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.52), robot);
   SensedBatch b = m.Take(db);
   ASSERT_EQ(b.doors.size(), 1u);
   EXPECT_EQ(b.doors[0].first, "d_201");
@@ -328,8 +396,9 @@ TEST(SensorMapper, BeamsEchoingOnADoorsOpeningSenseItClosedAndBeamsThroughItOpen
   EXPECT_TRUE(b.features.empty()) << "echoes on an opening vote on the door, they are no feature";
   db.SetDoorState("d_201", spott_map::DoorState::kClosed);
   m.SetMap(db);
-  // Echoes from 4 m beyond: the beams go through, the door is open again (6 votes back).
-  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 4.0), robot);
+  // Echoes from 4 m beyond, seen from the middle of the hallway: the beams go through, the
+  // door is open again (6 votes back).
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 4.0), far);
   b = m.Take(db);
   ASSERT_EQ(b.doors.size(), 1u);
   EXPECT_EQ(b.doors[0].second, spott_map::DoorState::kOpen);

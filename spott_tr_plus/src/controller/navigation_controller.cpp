@@ -66,6 +66,10 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
   if (!(l.place_radius_m >= 0))
     v.push_back(Violation("localization/place_radius_m", ">= 0", l.place_radius_m));
   if (!(l.max_age_s > 0)) v.push_back(Violation("localization/max_age_s", "> 0", l.max_age_s));
+  if (!(l.jump_m > 0)) v.push_back(Violation("localization/jump_m", "> 0", l.jump_m));
+  if (!(l.jump_rad > 0)) v.push_back(Violation("localization/jump_rad", "> 0", l.jump_rad));
+  if (!(l.retract_s >= 0)) v.push_back(Violation("localization/retract_s", ">= 0", l.retract_s));
+  if (!(l.settle_s >= 0)) v.push_back(Violation("localization/settle_s", ">= 0", l.settle_s));
   const auto& t = p.tasks;
   if (!(t.goal_tolerance_m > 0))
     v.push_back(Violation("tasks/goal_tolerance_m", "> 0", t.goal_tolerance_m));
@@ -617,9 +621,36 @@ std::vector<Vec2> NavigationController::NewObstaclesNear(const Vec2& at, double 
 
 // --- Map -------------------------------------------------------------------------------------
 
+bool NavigationController::MappingAllowed(double now) const {
+  return pose_ && certain_ && now - localization_time_ <= params_.localization.max_age_s &&
+         now >= mapping_resumes_;
+}
+
+// The estimate jumped: the features sensed in the seconds before were placed where the robot
+// was believed to be, not where it was. Take them back, drop the evidence not yet confirmed,
+// and map nothing until the estimate has settled.
+void NavigationController::EstimateJumped(double now) {
+  ++estimate_jumps_;
+  mapping_resumes_ = now + params_.localization.settle_s;
+  sonar_mapper_.Forget();
+  quadris_mapper_.Forget();
+  batches_.clear();  // found, not yet added: placed with the old pose as well
+  MapChange change;
+  while (!recent_ids_.empty() && recent_ids_.back().first >= now - params_.localization.retract_s) {
+    change.removed.push_back(recent_ids_.back().second);
+    recent_ids_.pop_back();
+  }
+  recent_ids_.clear();  // older ones were placed before the estimate went wrong: they stay
+  ApplyChange(std::move(change), now);
+}
+
 void NavigationController::ApplyChange(MapChange change, double now) {
-  (void)now;
   MapChange sent;
+  for (const std::string& id : change.removed) {
+    if (!db_.RemoveFeature(id)) continue;
+    added_ids_.erase(std::remove(added_ids_.begin(), added_ids_.end(), id), added_ids_.end());
+    sent.removed.push_back(id);
+  }
   for (spott_map::MapFeature& f : change.added) {
     const auto s = f.attributes.find("sensor");
     const std::string prefix = s == f.attributes.end() ? "sensed" : s->second;
@@ -629,6 +660,7 @@ void NavigationController::ApplyChange(MapChange change, double now) {
     f.source = spott_map::FeatureSource::kSensed;
     if (!db_.AddFeature(f)) continue;
     added_ids_.push_back(f.id);
+    recent_ids_.emplace_back(now, f.id);
     sent.added.push_back(f);
   }
   bool doors = false;
@@ -638,7 +670,9 @@ void NavigationController::ApplyChange(MapChange change, double now) {
       doors = true;
     }
   }
-  if (sent.added.empty() && sent.doors.empty()) return;
+  while (!recent_ids_.empty() && recent_ids_.front().first < now - params_.localization.retract_s)
+    recent_ids_.pop_front();
+  if (sent.added.empty() && sent.doors.empty() && sent.removed.empty()) return;
   io_->SendMapUpdate(sent);
   MapChanged();
   if (doors) known_.Build(db_);
@@ -685,6 +719,25 @@ void NavigationController::SetPlaces(const std::vector<spott_map::Place>& places
 // --- Sensors ---------------------------------------------------------------------------------
 
 void NavigationController::SetPose(const Pose2& pose, double now) {
+  // map->odom: where odometry's frame lies in the map. It moves smoothly while the estimate
+  // tracks; a jump means the localization changed its mind about where the robot is.
+  if (odom_) {
+    const double yaw = Wrap(pose.yaw - odom_->yaw);
+    const double c = std::cos(yaw), sn = std::sin(yaw);
+    const Pose2 correction{pose.x - (c * odom_->x - sn * odom_->y),
+                           pose.y - (sn * odom_->x + c * odom_->y), yaw};
+    if (correction_) {
+      // Where the last correction puts the robot now, against where the estimate does.
+      const double cy = std::cos(correction_->yaw), sy = std::sin(correction_->yaw);
+      const Vec2 predicted(correction_->x + cy * odom_->x - sy * odom_->y,
+                           correction_->y + sy * odom_->x + cy * odom_->y);
+      const double moved = (predicted - pose.Position()).norm();
+      const double turned = std::abs(Wrap(correction.yaw - correction_->yaw));
+      if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad)
+        EstimateJumped(now);
+    }
+    correction_ = correction;
+  }
   pose_ = pose;
   pose_time_ = now;
   dirty_ = true;  // conditions on the pose (in_room, in_that_room) see it at the next scan
@@ -711,9 +764,7 @@ void NavigationController::Sonar(const RangeRing& ring, double now) {
   sonar_pose_ = *pose_;
   // All incoming sensor information is taken as valid for the map (III-C.3), but only while
   // the pose it is placed with is certain: a lost estimate would draw the walls again elsewhere.
-  if (certain_ && now - localization_time_ <= params_.localization.max_age_s) {
-    sonar_mapper_.AddRing(ring, *pose_);
-  }
+  if (MappingAllowed(now)) sonar_mapper_.AddRing(ring, *pose_);
 }
 
 void NavigationController::Infrared(const RangeRing& ring, double now) {
@@ -724,7 +775,7 @@ void NavigationController::Infrared(const RangeRing& ring, double now) {
 
 void NavigationController::RangeProfile(const Vec2& origin, const std::vector<Vec2>& points,
                                         double now) {
-  if (!pose_ || !certain_ || now - localization_time_ > params_.localization.max_age_s) return;
+  if (!MappingAllowed(now)) return;
   quadris_mapper_.AddPoints(origin, points, *pose_);
 }
 

@@ -62,6 +62,8 @@ std::vector<std::string> ValidateParameters(const DoorSensingParameters& p) {
     v.push_back(Violation("range_m", "> 0", p.range_m));
   if (!(std::isfinite(p.end_margin_m) && p.end_margin_m >= 0))
     v.push_back(Violation("end_margin_m", ">= 0", p.end_margin_m));
+  if (!(std::isfinite(p.pose_error_m) && p.pose_error_m >= 0))
+    v.push_back(Violation("pose_error_m", ">= 0", p.pose_error_m));
   if (!(std::isfinite(p.match_m) && p.match_m > 0))
     v.push_back(Violation("match_m", "> 0", p.match_m));
   if (!(std::isfinite(p.beyond_m) && p.beyond_m > 0))
@@ -155,8 +157,27 @@ int SensorMapper::Score(const Vec2& p) const {
   return score_[Index(ix, iy)];
 }
 
+bool SensorMapper::ArcMeetsKnown(const Vec2& from, double angle, double range,
+                                 double half_cone) const {
+  if (half_cone <= 0.0) return false;
+  // Sampled at half a cell along the arc, on three radii half a cell apart.
+  const int n =
+      std::max(1, static_cast<int>(std::ceil(2.0 * half_cone * range / (0.5 * p_.cell_m))));
+  for (const double r : {range - 0.5 * p_.cell_m, range, range + 0.5 * p_.cell_m}) {
+    for (int k = 0; k <= n; ++k) {
+      const double a = angle - half_cone + 2.0 * half_cone * k / n;
+      const Vec2 q = from + r * Vec2(std::cos(a), std::sin(a));
+      const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
+      const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
+      if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) continue;
+      if (flags_[Index(ix, iy)] & kBlocked) return true;
+    }
+  }
+  return false;
+}
+
 void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo, double max_range,
-                        int hit) {
+                        int hit, double half_cone) {
   if (!echo || !have_map_) return;
   const Vec2 dir(std::cos(angle), std::sin(angle));
   const double free_to = std::min(range, max_range) - p_.cell_m;
@@ -179,6 +200,10 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
     }
   }
   if (crossed || range > max_range) return;
+  // A sonar echo comes from the nearest reflector anywhere in the cone, not only on its axis:
+  // a known obstacle (a door's jamb, a wall met obliquely) at that range within the cone
+  // explains it. Placed on the axis it would be a phantom in free space beside the jamb.
+  if (ArcMeetsKnown(from, angle, range, half_cone)) return;
   const Vec2 h = from + range * dir;
   const int ix = static_cast<int>(std::floor((h.x() - origin_.x()) / p_.cell_m));
   const int iy = static_cast<int>(std::floor((h.y() - origin_.y()) / p_.cell_m));
@@ -213,6 +238,8 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
     const double margin = d_.end_margin_m + t * std::tan(half_cone) / std::cos(incidence);
     const double along = (*x - z.opening.a).dot(u);
     if (along < margin || along > len - margin) continue;
+    const bool leaf_sure =
+        along >= margin + d_.pose_error_m && along <= len - margin - d_.pose_error_m;
     // The way to the opening must be clear of known obstacles (not through a wall).
     bool clear = true;
     for (double s = 0.05; s < t - 0.1 && clear; s += 0.5 * p_.cell_m) {
@@ -228,7 +255,8 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
     if (!clear) continue;
     int vote = 0;
     if (echo && std::abs(range - t) <= d_.match_m) {
-      vote = 1;  // the leaf
+      if (!leaf_sure) continue;  // the leaf, or the wall beside it
+      vote = 1;                  // the leaf
     } else if ((echo && range > t + d_.beyond_m) || !echo) {
       vote = -1;  // through the opening (a leaf this square on would have echoed)
     }
@@ -250,7 +278,8 @@ void SensorMapper::AddRing(const RangeRing& ring, const Pose2& robot) {
     const bool echo = r < ring.max_range_m - 1e-3;
     VoteDoors(from, angle, r, echo, ring.max_range_m, 0.5 * ring.field_of_view_rad);
     if (echo && r <= ring.min_range_m + p_.sonar_min_margin_m) continue;  // clamped reading
-    Beam(from, angle, r, echo, p_.sonar_max_range_m, p_.sonar_hit_score);
+    Beam(from, angle, r, echo, p_.sonar_max_range_m, p_.sonar_hit_score,
+         0.5 * ring.field_of_view_rad);
   }
 }
 
@@ -268,8 +297,15 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
     const double r = d.norm();
     if (!std::isfinite(r) || r < 1e-3) continue;
     Beam(from, std::atan2(d.y(), d.x()), r, true, p_.range_finder_max_range_m,
-         p_.range_finder_hit_score);
+         p_.range_finder_hit_score, 0.0);
   }
+}
+
+void SensorMapper::Forget() {
+  std::fill(score_.begin(), score_.end(), 0);
+  for (std::uint8_t& f : flags_) f &= static_cast<std::uint8_t>(~kConfirmed);
+  pending_.clear();
+  for (auto& [id, votes] : door_votes_) votes = 0;
 }
 
 SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {

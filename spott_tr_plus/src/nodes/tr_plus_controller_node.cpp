@@ -124,6 +124,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   auto& d = c.doors;
   r.Get("doors/range_m", d.range_m, "m");
   r.Get("doors/end_margin_m", d.end_margin_m, "m");
+  r.Get("doors/pose_error_m", d.pose_error_m, "m");
   r.Get("doors/match_m", d.match_m, "m");
   r.Get("doors/beyond_m", d.beyond_m, "m");
   r.Get("doors/normal_angle_rad", d.normal_angle_rad, "rad");
@@ -148,6 +149,10 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("localization/distance_m", l.distance_m, "m");
   r.Get("localization/place_radius_m", l.place_radius_m, "m");
   r.Get("localization/max_age_s", l.max_age_s, "s");
+  r.Get("localization/jump_m", l.jump_m, "m");
+  r.Get("localization/jump_rad", l.jump_rad, "rad");
+  r.Get("localization/retract_s", l.retract_s, "s");
+  r.Get("localization/settle_s", l.settle_s, "s");
   auto& k = c.tasks;
   r.Get("tasks/goal_tolerance_m", k.goal_tolerance_m, "m");
   r.Get("tasks/navigate_retries", k.navigate_retries);
@@ -339,6 +344,12 @@ class ControllerNode : public ControllerIo {
     u.header.frame_id = params_.frame_id;
     u.header.stamp = ros::Time::now();
     for (const spott_map::MapFeature& f : change.added) u.added.push_back(mconv::ToMsg(f));
+    u.removed = change.removed;
+    if (!change.removed.empty()) {
+      ROS_WARN("tr_plus_controller: the estimate jumped: %zu sensed features taken back (%s%s)",
+               change.removed.size(), change.removed.front().c_str(),
+               change.removed.size() > 1 ? ", ..." : "");
+    }
     for (const auto& [id, state] : change.doors) {
       spott_msgs::DoorState d;
       d.door_id = id;

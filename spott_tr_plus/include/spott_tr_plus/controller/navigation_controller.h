@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -60,6 +61,7 @@ enum class NavigateOutcome { kSucceeded = 0, kUnreachable = 1, kPreempted = 2, k
 struct MapChange {
   std::vector<spott_map::MapFeature> added;
   std::vector<std::pair<std::string, spott_map::DoorState>> doors;
+  std::vector<std::string> removed;  ///< Sensed features taken back (ids).
 };
 
 struct TaskFeedback {
@@ -104,6 +106,14 @@ struct LocalizationParameters {
   double distance_m = 2.0;       ///< ... and every this far travelled (m), > 0 (distance).
   double place_radius_m = 0.75;  ///< ... and within this of a localization place (m), >= 0.
   double max_age_s = 2.0;        ///< A localization status older than this is stale (s), > 0.
+  /// The estimate jumped: map->odom (the pose against odometry) changed by more than this
+  /// between two poses (m, > 0; rad, > 0). What was sensed shortly before was placed with the
+  /// wrong pose, and what is sensed next with one that may still settle.
+  double jump_m = 0.3;
+  double jump_rad = 0.35;
+  double retract_s =
+      10.0;               ///< Sensed features added this long before a jump are removed (s), >= 0.
+  double settle_s = 3.0;  ///< Nothing is mapped for this long after a jump (s), >= 0.
 };
 
 struct TaskParameters {
@@ -206,6 +216,8 @@ class NavigationController {
   /// Features the controller added to the map so far (ids: sonar_N, quadris_N, contact_N).
   const std::vector<std::string>& added_features() const { return added_ids_; }
   int localization_fixes() const { return fixes_; }
+  /// Jumps of the estimate seen so far (each retracted what was sensed just before it).
+  int estimate_jumps() const { return estimate_jumps_; }
   bool has_task() const { return task_ != nullptr; }
 
  private:
@@ -219,6 +231,8 @@ class NavigationController {
   void Finish(const std::string& outcome, bool success, const std::string& message, double now,
               bool defer = false);
   void ApplyChange(MapChange change, double now);
+  void EstimateJumped(double now);
+  bool MappingAllowed(double now) const;
   void MapChanged();
   void UpdateFiringRule();
   void SendFeedback(double now);
@@ -246,6 +260,10 @@ class NavigationController {
   int next_batch_ = 0;
   std::map<std::string, int> next_id_;
   std::vector<std::string> added_ids_;
+  std::deque<std::pair<double, std::string>> recent_ids_;  ///< (time added, id), for retraction.
+  std::optional<Pose2> correction_;  ///< map->odom of the last pose (pose composed with odom^-1).
+  double mapping_resumes_ = -1e300;  ///< After an estimate jump: no mapping before this time.
+  int estimate_jumps_ = 0;
 
   std::optional<Pose2> pose_;
   double pose_time_ = -1e300;

@@ -62,8 +62,14 @@ struct MappingParameters {
 
 /// Door states from the beams that cross a door's opening.
 struct DoorSensingParameters {
-  double range_m = 3.0;           ///< Openings farther than this from the transducer: no vote (m).
-  double end_margin_m = 0.12;     ///< Beams crossing this close to a jamb: no vote (m), >= 0.
+  double range_m = 3.0;        ///< Openings farther than this from the transducer: no vote (m).
+  double end_margin_m = 0.12;  ///< Beams crossing this close to a jamb: no vote (m), >= 0.
+  /// The estimate's error along an opening (m), >= 0. A "closed" vote needs the whole cone on
+  /// the opening even with the robot this far off along it: else the echo may come from the
+  /// wall beside the door, collinear with the leaf (doors lie in hallway walls, where the
+  /// localization's error is largest along the hallway). An "open" vote needs no such margin:
+  /// a beam that echoes beyond the opening went through it wherever the robot really was.
+  double pose_error_m = 0.15;
   double match_m = 0.15;          ///< An echo this close to the opening's line: the leaf (m), > 0.
   double beyond_m = 0.3;          ///< An echo this far past the opening: open (m), > 0.
   double normal_angle_rad = 0.3;  ///< A no-echo beam this close to the door's normal: open (rad).
@@ -98,6 +104,10 @@ class SensorMapper {
   /// (base frame), with the robot at `robot`.
   void AddPoints(const Vec2& origin, const std::vector<Vec2>& points, const Pose2& robot);
 
+  /// Drops the evidence gathered so far (cell scores, confirmations not taken yet, door votes):
+  /// it was placed with a pose that turned out wrong (the estimate jumped).
+  void Forget();
+
   /// The features confirmed since the last call that `db` does not hold yet (fused), and the
   /// door states sensed that differ from `db`'s.
   SensedBatch Take(const spott_map::MapDatabase& db);
@@ -113,7 +123,11 @@ class SensorMapper {
     std::string id;
     spott_map::Segment opening;
   };
-  void Beam(const Vec2& from, double angle, double range, bool echo, double max_range, int hit);
+  /// `half_cone`: the beam's half width (rad; 0 for a range finder's point).
+  void Beam(const Vec2& from, double angle, double range, bool echo, double max_range, int hit,
+            double half_cone);
+  /// Whether a known obstacle meets the arc at `range` (+- half a cell) across the cone.
+  bool ArcMeetsKnown(const Vec2& from, double angle, double range, double half_cone) const;
   void VoteDoors(const Vec2& from, double angle, double range, bool echo, double max_range,
                  double half_cone);
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
