@@ -4,6 +4,8 @@
 # then a table of the results (times, path lengths, speeds). Every run is in its own network
 # namespace when unshare is at hand (as tools/isolated.sh does) (rostest's and roslaunch's fixed
 # ports). Usage: launch/scripts/fig18_campaign.sh [N] [FIRST_SEED]    (from the repository)
+# FIG18_LOCALIZATION=truth runs the stack on the simulator's pose (no localization error), to
+# tell the controller's failures from the localization's.
 set -u
 N=${1:-20}
 FIRST=${2:-1}
@@ -22,10 +24,10 @@ run_one() {  # seed start_pose
   export ROS_MASTER_URI=http://127.0.0.1:11311 ROS_HOSTNAME=127.0.0.1
   export ROS_LOG_DIR="$OUT/log-$1"
   timeout 600 roslaunch -p 11311 spott_launch fig18.launch seed:="$1" start_pose:="$2" \
-    result_file:="$RESULTS" > "$OUT/run-$1.log" 2>&1
+    result_file:="$RESULTS" localization:="${FIG18_LOCALIZATION:-markov}" > "$OUT/run-$1.log" 2>&1
 }
 export -f run_one
-export OUT RESULTS
+export OUT RESULTS FIG18_LOCALIZATION
 for ((seed = FIRST; seed < FIRST + N; ++seed)); do
   start=$("$ROOT/.ws/devel/lib/spott_launch/fig18_run" --case "$seed" "$WORLD") || {
     echo "seed $seed: no case"; continue; }

@@ -90,6 +90,7 @@ Fig18Run RunFig18Case(ros::NodeHandle& nh, const Fig18Case& c, double timeout_s,
   bool have_truth = false;
   double length = 0.0;
   int contacts = 0;
+  bool pressed = false;
   ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
       "/sim/ground_truth", 50, [&](const nav_msgs::Odometry::ConstPtr& m) {
         std::lock_guard<std::mutex> lock(mutex);
@@ -101,12 +102,18 @@ Fig18Run RunFig18Case(ros::NodeHandle& nh, const Fig18Case& c, double timeout_s,
   ros::Subscriber bumper_sub = nh.subscribe<spott_msgs::BumperRing>(
       "/bumper", 10, [&](const spott_msgs::BumperRing::ConstPtr& m) {
         std::lock_guard<std::mutex> lock(mutex);
-        for (bool p : m->pressed) {
-          if (p) {
-            ++contacts;
-            break;
-          }
+        bool now_pressed = false;
+        for (bool p : m->pressed) now_pressed = now_pressed || p;
+        if (now_pressed) ++contacts;
+        // Where each contact began, and how far off the estimate was then: the campaign's
+        // failures are told apart by these lines in the run's log.
+        if (now_pressed && !pressed) {
+          ROS_WARN(
+              "fig18_run: contact begins at truth (%.2f, %.2f), estimate (%.2f, %.2f): "
+              "localization error %.2f m",
+              truth.x(), truth.y(), estimate.x(), estimate.y(), (estimate - truth).norm());
         }
+        pressed = now_pressed;
       });
   ros::Subscriber status_sub = nh.subscribe<spott_msgs::LocalizationStatus>(
       "localization_status", 5, [&](const spott_msgs::LocalizationStatus::ConstPtr& m) {
@@ -123,8 +130,12 @@ Fig18Run RunFig18Case(ros::NodeHandle& nh, const Fig18Case& c, double timeout_s,
   }
   // markov_localization starts at the run's start (stack.launch passes start_pose as its
   // initial pose); wait until its estimate says so.
-  const ros::WallTime settle = ros::WallTime::now() + ros::WallDuration(30.0);
+  // With localization:=truth nothing publishes the status: no wait.
+  const ros::WallTime begin = ros::WallTime::now();
+  const ros::WallTime settle = begin + ros::WallDuration(30.0);
   while (ros::WallTime::now() < settle) {
+    if (ros::WallTime::now() - begin > ros::WallDuration(5.0) && status_sub.getNumPublishers() == 0)
+      break;
     {
       std::lock_guard<std::mutex> lock(mutex);
       if ((estimate - c.start.Position()).norm() < 0.2) break;
