@@ -206,7 +206,9 @@ std::optional<NavigationPlan> PlanNavigation(const BuildingMap& map, const Point
   queue.push({0.0, 0});
   std::vector<std::string> closed_on_the_way;
   while (!queue.empty()) {
-    const auto [c, v] = queue.top();
+    // Named copies, not a structured binding: the lambda below captures them (C++17).
+    const double c = queue.top().first;
+    const std::size_t v = queue.top().second;
     queue.pop();
     if (c > cost[v] || v == 1) continue;
     const std::string& here = v == 0 ? from->id : room_of(v);
