@@ -149,11 +149,16 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db) {
   revision_ = db.revision();
 }
 
+bool SensorMapper::CellOf(const Vec2& p, int* ix, int* iy) const {
+  *ix = static_cast<int>(std::floor((p.x() - origin_.x()) / p_.cell_m));
+  *iy = static_cast<int>(std::floor((p.y() - origin_.y()) / p_.cell_m));
+  return *ix >= 0 && *iy >= 0 && *ix < width_ && *iy < height_;
+}
+
 int SensorMapper::Score(const Vec2& p) const {
   if (!have_map_) return 0;
-  const int ix = static_cast<int>(std::floor((p.x() - origin_.x()) / p_.cell_m));
-  const int iy = static_cast<int>(std::floor((p.y() - origin_.y()) / p_.cell_m));
-  if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return 0;
+  int ix, iy;
+  if (!CellOf(p, &ix, &iy)) return 0;
   return score_[Index(ix, iy)];
 }
 
@@ -167,9 +172,8 @@ bool SensorMapper::ArcMeetsKnown(const Vec2& from, double angle, double range,
     for (int k = 0; k <= n; ++k) {
       const double a = angle - half_cone + 2.0 * half_cone * k / n;
       const Vec2 q = from + r * Vec2(std::cos(a), std::sin(a));
-      const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
-      const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
-      if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) continue;
+      int ix, iy;
+      if (!CellOf(q, &ix, &iy)) continue;
       if (flags_[Index(ix, iy)] & kBlocked) return true;
     }
   }
@@ -186,9 +190,8 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
   int last = -1;
   for (double s = 0.0; s < free_to; s += step) {
     const Vec2 q = from + s * dir;
-    const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
-    const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
-    if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return;
+    int ix, iy;
+    if (!CellOf(q, &ix, &iy)) return;
     const int index = static_cast<int>(Index(ix, iy));
     if (index == last) continue;
     last = index;
@@ -205,9 +208,8 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
   // explains it. Placed on the axis it would be a phantom in free space beside the jamb.
   if (ArcMeetsKnown(from, angle, range, half_cone)) return;
   const Vec2 h = from + range * dir;
-  const int ix = static_cast<int>(std::floor((h.x() - origin_.x()) / p_.cell_m));
-  const int iy = static_cast<int>(std::floor((h.y() - origin_.y()) / p_.cell_m));
-  if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return;
+  int ix, iy;
+  if (!CellOf(h, &ix, &iy)) return;
   const std::size_t index = Index(ix, iy);
   if (flags_[index] & (kKnown | kBlocked | kDoor | kOutside)) return;
   score_[index] = static_cast<std::int8_t>(std::min(p_.max_score, score_[index] + hit));
@@ -244,9 +246,8 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
     bool clear = true;
     for (double s = 0.05; s < t - 0.1 && clear; s += 0.5 * p_.cell_m) {
       const Vec2 q = from + s * dir;
-      const int ix = static_cast<int>(std::floor((q.x() - origin_.x()) / p_.cell_m));
-      const int iy = static_cast<int>(std::floor((q.y() - origin_.y()) / p_.cell_m));
-      if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) {
+      int ix, iy;
+      if (!CellOf(q, &ix, &iy)) {
         clear = false;
       } else if (flags_[Index(ix, iy)] & kBlocked) {
         clear = false;

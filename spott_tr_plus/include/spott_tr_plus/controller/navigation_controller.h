@@ -111,9 +111,10 @@ struct LocalizationParameters {
   /// wrong pose, and what is sensed next with one that may still settle.
   double jump_m = 0.3;
   double jump_rad = 0.35;
-  double retract_s =
-      10.0;               ///< Sensed features added this long before a jump are removed (s), >= 0.
-  double settle_s = 3.0;  ///< Nothing is mapped for this long after a jump (s), >= 0.
+  /// Sensed features added this long before a jump are removed (s), >= 0.
+  double retract_s = 10.0;
+  /// Nothing is mapped for this long after a jump (s), >= 0.
+  double settle_s = 3.0;
 };
 
 struct TaskParameters {

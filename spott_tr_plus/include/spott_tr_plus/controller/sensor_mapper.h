@@ -130,6 +130,8 @@ class SensorMapper {
   bool ArcMeetsKnown(const Vec2& from, double angle, double range, double half_cone) const;
   void VoteDoors(const Vec2& from, double angle, double range, bool echo, double max_range,
                  double half_cone);
+  /// The grid cell holding `p`; false when it lies outside the grid.
+  bool CellOf(const Vec2& p, int* ix, int* iy) const;
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
 
   std::string sensor_;
