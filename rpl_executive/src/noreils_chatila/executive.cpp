@@ -148,6 +148,7 @@ class Executive::Impl : public SurveillanceListener, public RobotModules {
     return modules_->Send(handle, command, now);
   }
   void Halt(OperatorHandle handle, double now) override { modules_->Halt(handle, now); }
+  void OnMissionStart(double now) override { modules_->OnMissionStart(now); }
 
   // --- message 6-2 ------------------------------------------------------------------------------
   void OnMonitorFired(const Firing& firing, double /*now*/) override {
@@ -248,6 +249,7 @@ class Executive::Impl : public SurveillanceListener, public RobotModules {
     diagnosis_ = Diagnosis();
     fired_.clear();
     log_.Add(now_, Message::Kind::kMission, "EM", "", 0, "mission " + m.name + " started");
+    modules_->OnMissionStart(now_);
     root_mission_ = StartMissionFrame(m, 0, 0);
     r.accepted = true;
     return r;

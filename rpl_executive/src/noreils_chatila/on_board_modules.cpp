@@ -151,6 +151,8 @@ OperatorReply OnBoardModules::Send(OperatorHandle handle, const OperatorCommand&
   return reply;
 }
 
+void OnBoardModules::OnMissionStart(double /*now*/) { pilot_.ResetSpeed(); }
+
 void OnBoardModules::Halt(OperatorHandle handle, double /*now*/) {
   if (handle != handle_ || holder_ == Holder::kNone) return;
   Release(OperatorStatus::kRunning, "");  // halted by the executive: no report

@@ -156,6 +156,22 @@ TEST(Example2, TheCurrentCommandAndTheActiveMonitorsAreReportedForTheNodesFeedba
   EXPECT_NE(s1.control.find("WHILE"), std::string::npos) << s1.control;
 }
 
+TEST(Example2, ANewMissionStartsAtThePilotsDefaultSpeedNotAtTheLastSetSpeed) {
+  Example2 run(1);
+  run.MoveTo(2.5, 5.2);  // inside ZONE109: set-speed 20
+  ASSERT_DOUBLE_EQ(run.kit_.pilot().speed_mps(), 0.2);
+  run.echoes_ = {{1, 0.30}};  // an obstacle in the zone: S2, FAIL, still at 20 cm/s
+  run.Wait(5);
+  ASSERT_EQ(run.exec_.state(), MissionState::kFailed);
+  ASSERT_DOUBLE_EQ(run.kit_.pilot().speed_mps(), 0.2);
+  run.echoes_.clear();
+  run.pose_ = Pose2{0.8, 5.2, 0.0};
+  run.Cycle();
+  const StartResult r = run.exec_.StartMission(run.file_, run.t_);
+  ASSERT_TRUE(r.accepted) << r.refusal;
+  EXPECT_DOUBLE_EQ(run.kit_.pilot().speed_mps(), OnBoardParameters().pilot.default_speed_mps);
+}
+
 TEST(Example2, ObstacleInTheZoneMakesTheMissionFail) {
   for (unsigned seed = 1; seed <= 10; ++seed) {
     Example2 run(seed);

@@ -40,6 +40,8 @@ class OnBoardModules : public RobotModules {
 
   OperatorReply Send(OperatorHandle handle, const OperatorCommand& command, double now) override;
   void Halt(OperatorHandle handle, double now) override;
+  /// The Pilot's speed back to its default.
+  void OnMissionStart(double now) override;
 
   void OnPose(const PoseDatum& pose);
   /// Processes run on each new scan.

@@ -55,6 +55,8 @@ class Pilot {
   /// is no path to resume.
   bool Resume(const Pose2& pose);
   void SetSpeed(double speed_mps);
+  /// Back to default_speed_mps (a new mission).
+  void ResetSpeed() { speed_mps_ = parameters_.default_speed_mps; }
   /// Stops where it is; the path is kept for Resume.
   void Stop();
 

@@ -108,6 +108,9 @@ class RobotModules {
   /// Halts a running operator (the executive's own decision: NEXT, FAIL, an ENV that no longer
   /// holds). No report is expected afterwards; one that comes is ignored.
   virtual void Halt(OperatorHandle handle, double now) = 0;
+  /// A mission has been accepted and starts: settings an earlier mission's operators left
+  /// (set-speed) return to the robot's defaults, so that no mission inherits them.
+  virtual void OnMissionStart(double /*now*/) {}
 };
 
 }  // namespace rpl_executive::noreils_chatila
