@@ -6,16 +6,19 @@
 #
 # Usage (from the repository root, after ./spott build):
 #   tools/isolated.sh rpl_executive/scripts/run_hilare_missions.sh [RUNS] [FIRST_SEED]
-# Environment: OUT (default rpl_executive/eval/hilare_missions_runs.txt), RTF (default 4).
+# Environment: OUT (default .ws/eval/hilare_missions_runs.txt), RTF (default 4).
 set -u
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 RUNS="${1:-10}"
 FIRST="${2:-1}"
-OUT="${OUT:-$ROOT/rpl_executive/eval/hilare_missions_runs.txt}"
+OUT="${OUT:-$ROOT/.ws/eval/hilare_missions_runs.txt}"
+mkdir -p "$(dirname "$OUT")"
 RTF="${RTF:-4.0}"
 export PATH="/usr/bin:/bin:$PATH"
+set +u  # the ROS setup scripts read unset variables
 # shellcheck disable=SC1091
 source "$ROOT/.ws/devel/setup.bash"
+set -u
 {
   echo "# hilare missions: $RUNS runs from seed $FIRST, real-time factor $RTF, $(date -u +%FT%TZ)"
   echo "# load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -7,17 +7,20 @@
 # Usage (from the repository root, after ./spott build; rostest needs its own network namespace
 # on a shared machine):
 #   tools/isolated.sh rpl_executive/scripts/run_office_delivery.sh [RUNS] [FIRST_SEED]
-# Environment: OUT (results file, default rpl_executive/eval/office_delivery_runs.txt),
+# Environment: OUT (results file, default .ws/eval/office_delivery_runs.txt),
 # RTF (real-time factor, default 4).
 set -u
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 RUNS="${1:-10}"
 FIRST="${2:-1}"
-OUT="${OUT:-$ROOT/rpl_executive/eval/office_delivery_runs.txt}"
+OUT="${OUT:-$ROOT/.ws/eval/office_delivery_runs.txt}"
+mkdir -p "$(dirname "$OUT")"
 RTF="${RTF:-4.0}"
 export PATH="/usr/bin:/bin:$PATH"
+set +u  # the ROS setup scripts read unset variables
 # shellcheck disable=SC1091
 source "$ROOT/.ws/devel/setup.bash"
+set -u
 {
   echo "# office delivery: $RUNS runs from seed $FIRST, real-time factor $RTF, $(date -u +%FT%TZ)"
   echo "# load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
