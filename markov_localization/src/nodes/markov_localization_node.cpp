@@ -18,6 +18,7 @@
 #include <spott_msgs/MapUpdate.h>
 #include <spott_msgs/RangeRing.h>
 #include <std_srvs/Empty.h>
+#include <std_srvs/SetBool.h>
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
@@ -91,6 +92,7 @@ class LocalizationNode {
       scan_sub_ = nh.subscribe(params.laser.topic, 5, &LocalizationNode::OnScan, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &LocalizationNode::OnInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
+    sonar_srv_ = nh.advertiseService("enable_sonar", &LocalizationNode::OnEnableSonar, this);
     action_ = std::make_unique<ml::ActiveLocalizeServer>(nh, params_, [this] { SetUniform(); });
   }
 
@@ -123,6 +125,23 @@ class LocalizationNode {
 
   bool OnGlobal(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     SetUniform();
+    return true;
+  }
+
+  // The travel mode "doorway" of Beetz et al. (section 3.1) switches the sonars off against
+  // crosstalk: the ring's readings are then not used and the belief follows the odometry (its
+  // motion is applied at the next update); tf and the status go on.
+  bool OnEnableSonar(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {
+    res.success = params_.sonar_enabled;
+    if (!params_.sonar_enabled) {
+      res.message = "the node does not localize on sonar (sonar_enabled false)";
+      return true;
+    }
+    if (sonar_on_ != req.data)
+      ROS_INFO("markov_localization: sonar readings %s", req.data ? "used again" : "not used");
+    sonar_on_ = req.data;
+    sonar_off_since_ = ros::Time::now();
+    res.message = sonar_on_ ? "sonar readings used" : "sonar readings not used";
     return true;
   }
 
@@ -319,6 +338,17 @@ class LocalizationNode {
       return;
     }
     ranges_.assign(ring.ranges.begin(), ring.ranges.end());
+    if (!sonar_on_ && (ros::Time::now() - sonar_off_since_).toSec() > params_.sonar_off_max_s) {
+      ROS_WARN("markov_localization: sonar readings used again: switched off for more than %.0f s",
+               params_.sonar_off_max_s);
+      sonar_on_ = true;
+    }
+    if (!sonar_on_) {  // switched off (enable_sonar): no update, the estimate on odometry
+      reading_odom_ = odometry_.At(ring.header.stamp.toSec()).value_or(*odom_);
+      Publish(ring.header.stamp, ml::LocalizerStep{}, sonar_model_->beam_angles_rad, ranges_,
+              ring.max_range);
+      return;
+    }
     OnReading(sonar_index_, ranges_, ring.header.stamp, sonar_model_->beam_angles_rad,
               ring.max_range);
   }
@@ -469,7 +499,9 @@ class LocalizationNode {
   std::vector<double> ranges_, laser_ranges_;
   ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_modes_pub_, belief_pub_;
   ros::Subscriber odom_sub_, ring_sub_, scan_sub_, initial_sub_, map_sub_, updates_sub_;
-  ros::ServiceServer global_srv_;
+  ros::ServiceServer global_srv_, sonar_srv_;
+  bool sonar_on_ = true;  // enable_sonar
+  ros::Time sonar_off_since_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;

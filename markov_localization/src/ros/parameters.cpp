@@ -45,6 +45,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("map_updates_topic", p.map_updates_topic);
   r.Get("sonar_enabled", p.sonar_enabled);
   r.Get("ring_topic", p.ring_topic);
+  r.Get("sonar_off_max_s", p.sonar_off_max_s);
   auto& g = p.gate;
   r.Get("gate/update_min_d_m", g.update_min_d_m);
   r.GetDegrees("gate/update_min_a_deg", g.update_min_a_rad);
@@ -184,6 +185,8 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("wander/stall_steps", w.stall_steps);
 
   if (p.sonar_enabled && p.ring_topic.empty()) v.push_back("~ring_topic must not be empty");
+  if (!(p.sonar_off_max_s > 0.0 && p.sonar_off_max_s <= 600.0))
+    v.push_back("~sonar_off_max_s must be in (0, 600] s");
   if (!p.sonar_enabled && !l.enabled)
     v.push_back("~sonar_enabled and ~laser/enabled are both false: nothing to localize on");
   if (l.enabled && l.topic.empty()) v.push_back("~laser/topic must not be empty");

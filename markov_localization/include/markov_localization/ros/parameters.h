@@ -46,6 +46,9 @@ struct NodeParameters {
   std::string map_topic = "map";
   std::string map_updates_topic = "map_updates";  ///< spott_msgs/MapUpdate ("" = none).
   bool sonar_enabled = true;                      ///< Localize on the RangeRing of ring_topic.
+  /// enable_sonar false lasts at most this long (s): readings are used again after it, in case
+  /// the caller that switched them off (a doorway's travel mode) is gone. (0, 600].
+  double sonar_off_max_s = 20.0;
   std::string ring_topic = "sonar";
   LaserParameters laser;
   MotionGateParameters gate;
