@@ -107,6 +107,11 @@ class ExecutiveEvents {
     }
     return -1.0;
   }
+  /// RPL: each change of the travel mode, (state stamp in s, mode), in order.
+  std::vector<std::pair<double, std::string>> travel_modes() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return travel_modes_;
+  }
   int Count(const std::string& what, double from_s = 0.0) const {
     int n = 0;
     for (const std::string& l : lines()) {
@@ -119,6 +124,8 @@ class ExecutiveEvents {
   void OnState(const spott_msgs::ExecutiveState& s) {
     std::lock_guard<std::mutex> lock(mutex_);
     lines_.insert(lines_.end(), s.events.begin(), s.events.end());
+    if (travel_modes_.empty() || travel_modes_.back().second != s.travel_mode)
+      travel_modes_.push_back({s.header.stamp.toSec(), s.travel_mode});
     last_ = s;
   }
   void OnMonitor(const spott_msgs::MonitorEvent& m) {
@@ -129,6 +136,7 @@ class ExecutiveEvents {
   std::vector<std::string> lines_;
   std::vector<spott_msgs::MonitorEvent> monitor_events_;
   spott_msgs::ExecutiveState last_;
+  std::vector<std::pair<double, std::string>> travel_modes_;
   ros::Subscriber state_, monitors_;
 };
 

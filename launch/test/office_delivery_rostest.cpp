@@ -10,11 +10,14 @@
 // Parameters (~): kidnap_after_s (sim s after the plan started, 5), kidnap_rad (-1.22),
 // timeout_s (sim s for the whole mission, 600), report_file ("" = none): one line per run for
 // rpl_executive/scripts/run_office_delivery.sh.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <spott_msgs/Kidnap.h>
 
+#include <mutex>
 #include <sstream>
+#include <vector>
 
 #include "executive_test_support.h"
 #include "spott_ros/testing/node_process.h"
@@ -78,6 +81,14 @@ TEST(OfficeDelivery, SurvivesA70DegreeTurnByRelocalizingAndReachesWolframsShelf)
 
   Truth truth(nh);
   Certainty certainty(nh);
+  // amcl_pose comes with each of the localization's sensor updates, and only then.
+  std::mutex updates_mutex;
+  std::vector<double> updates;
+  ros::Subscriber updates_sub = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+      "/amcl_pose", 100, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(updates_mutex);
+        updates.push_back(m->header.stamp.toSec());
+      });
   ExecutiveEvents events(nh);
   MissionClient mission("mission", true);
   ASSERT_TRUE(mission.waitForServer(ros::Duration(60.0))) << "no /mission server";
@@ -121,6 +132,24 @@ TEST(OfficeDelivery, SurvivesA70DegreeTurnByRelocalizingAndReachesWolframsShelf)
       relocalized_at < 0 ? -1 : events.TimeOf("MODULE-ACTIVATED NAVIGATION", relocalized_at);
   const int plans = events.Count("MODULE-ACTIVATED NAVIGATION");
   const double error_m = truth.DistanceTo(kShelfX, kShelfY);
+  // Doorways crossed (travel mode "doorway", section 3.1) and the sonar updates inside them,
+  // from 0.3 s after the mode changed (the switch's latency) to its end.
+  int doorways = 0, updates_in_doorways = 0, updates_after_doorways = 0;
+  double doorway_s = 0.0;
+  {
+    const auto modes = events.travel_modes();
+    std::lock_guard<std::mutex> lock(updates_mutex);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      if (modes[i].second != "doorway") continue;
+      const double from = modes[i].first + 0.3;
+      const double to = i + 1 < modes.size() ? modes[i + 1].first : end;
+      ++doorways;
+      doorway_s += to - modes[i].first;
+      for (double t : updates) updates_in_doorways += t > from && t < to;
+      if (i + 1 < modes.size())
+        for (double t : updates) updates_after_doorways += t > to + 0.3;
+    }
+  }
   std::ostringstream line;
   line.precision(4);
   line << "seed=" << seed << " outcome=" << (done && result ? result->outcome : "timeout")
@@ -131,7 +160,9 @@ TEST(OfficeDelivery, SurvivesA70DegreeTurnByRelocalizingAndReachesWolframsShelf)
        << " relocalized_s=" << (relocalized_at < 0 ? -1 : relocalized_at - start)
        << " replanned_s=" << (replanned_at < 0 ? -1 : replanned_at - start)
        << " navigation_plans=" << plans << " min_certainty=" << certainty.minimum_after_watch()
-       << " contacts=" << truth.contacts() << " driven_m=" << truth.travelled_m() << " message=\""
+       << " contacts=" << truth.contacts() << " driven_m=" << truth.travelled_m()
+       << " doorways=" << doorways << " doorway_s=" << doorway_s
+       << " sonar_updates_in_doorways=" << updates_in_doorways << " message=\""
        << (result ? result->message.substr(0, 300) : "") << "\"";
   std::string report = line.str();
   for (char& c : report) {
@@ -156,6 +187,11 @@ TEST(OfficeDelivery, SurvivesA70DegreeTurnByRelocalizingAndReachesWolframsShelf)
   EXPECT_TRUE(result->success) << result->outcome << ": " << result->message;
   EXPECT_LT(error_m, 0.5) << "ground truth " << error_m << " m from the front of the shelf";
   EXPECT_EQ(truth.contacts(), 0) << "bumper contacts";
+  // "switch off the sonars when driving through doorways": no sensor update in a doorway, and
+  // updates again after it.
+  EXPECT_GE(doorways, 1) << "the route to room B passes a doorway";
+  EXPECT_EQ(updates_in_doorways, 0) << "the localization used sonar readings in a doorway";
+  EXPECT_GT(updates_after_doorways, 0) << "the sonars were not switched on again";
 }
 
 }  // namespace

@@ -20,8 +20,8 @@ std::vector<std::string> ValidateParameters(const NodeParameters& p) {
   for (const std::string* f :
        {&p.map_frame, &p.base_frame, &p.odom_frame, &p.arbiter, &p.wheels_source,
         &p.navigate_action, &p.active_localize_action, &p.global_localization_service,
-        &p.planner_cmd_topic, &p.wander_cmd_topic, &p.sonar_topic, &p.laser_topic,
-        &p.battery_topic}) {
+        &p.enable_sonar_service, &p.planner_cmd_topic, &p.wander_cmd_topic, &p.sonar_topic,
+        &p.laser_topic, &p.battery_topic}) {
     if (f->empty()) e.push_back("frame, topic, action and service names must not be empty");
   }
   if (!(p.state_rate_hz >= 0 && p.state_rate_hz <= 100))
@@ -81,10 +81,12 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("rpl/travel_modes/office_max_angular_rps", p.travel.office_max_angular_rps, "rad/s");
   r.Get("rpl/travel_modes/hallway_max_angular_rps", p.travel.hallway_max_angular_rps, "rad/s");
   r.Get("rpl/travel_modes/doorway_max_angular_rps", p.travel.doorway_max_angular_rps, "rad/s");
+  r.Get("rpl/travel_modes/doorway_sonars_off", p.travel.doorway_sonars_off);
   r.Get("rpl/tracking_status_timeout_s", p.tracking_status_timeout_s, "s");
   r.Get("rpl/navigate_action", p.navigate_action);
   r.Get("rpl/active_localize_action", p.active_localize_action);
   r.Get("rpl/global_localization_service", p.global_localization_service);
+  r.Get("rpl/enable_sonar_service", p.enable_sonar_service);
   r.Get("rpl/planner_cmd_topic", p.planner_cmd_topic);
   r.Get("rpl/wander_cmd_topic", p.wander_cmd_topic);
 

@@ -25,6 +25,9 @@ struct TravelModeLimits {
   double office_max_angular_rps = 0.0;
   double hallway_max_angular_rps = 0.0;
   double doorway_max_angular_rps = 0.0;
+  /// "switch off the sonars when driving through doorways (to avoid crosstalk)" (section 3.1):
+  /// the localization's enable_sonar service, false in a doorway, true again outside.
+  bool doorway_sonars_off = true;
 };
 
 struct NodeParameters {
@@ -52,6 +55,8 @@ struct NodeParameters {
   std::string navigate_action = "harmonic_planner/navigate";
   std::string active_localize_action = "active_localize";
   std::string global_localization_service = "global_localization";
+  /// markov_localization's sensor selection (std_srvs/SetBool): the doorway travel mode.
+  std::string enable_sonar_service = "enable_sonar";
   /// velocity sources that ACTIVE-LOCALIZATION and NAVIGATION drive through (relayed to
   /// /cmd_vel/<wheels_source> while the plan holds WHEELS): the harmonic planner's descent and
   /// the localization's random motion.

@@ -4,6 +4,7 @@
 #include <spott_msgs/SetSpeedLimits.h>
 #include <spott_msgs/TakeWheels.h>
 #include <std_srvs/Empty.h>
+#include <std_srvs/SetBool.h>
 
 #include <cmath>
 #include <limits>
@@ -62,6 +63,7 @@ RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters
   release_ = nh.serviceClient<spott_msgs::ReleaseWheels>(arbiter + "release_wheels");
   limits_ = nh.serviceClient<spott_msgs::SetSpeedLimits>(arbiter + "set_speed_limits");
   global_ = nh.serviceClient<std_srvs::Empty>(params.global_localization_service);
+  sonar_ = nh.serviceClient<std_srvs::SetBool>(params.enable_sonar_service);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   status_sub_ = nh.subscribe("localization_status", 5, &RplBinding::OnStatus, this, hints);
   graph_sub_ = nh.subscribe("room_door_graph", 1, &RplBinding::OnGraph, this);
@@ -83,6 +85,7 @@ RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters
 }
 
 RplBinding::~RplBinding() {
+  if (sonars_off_) SwitchSonars(true);
   if (have_wheels_) {
     spott_msgs::ReleaseWheels r;
     r.request.source = params_.wheels_source;
@@ -334,9 +337,8 @@ void RplBinding::SetTravelMode(office::TravelMode mode, const std::string& regio
     case office::TravelMode::kDoorway:
       s.request.max_linear_mps = t.doorway_max_linear_mps;
       s.request.max_angular_rps = t.doorway_max_angular_rps;
-      // The paper switches the sonars off here; markov_localization has no sensor switch.
-      s.request.reason = "doorway" + (region.empty() ? "" : " " + region) +
-                         ": slow (sonars stay on: the localization has no sensor switch)";
+      s.request.reason = "doorway" + (region.empty() ? "" : " " + region) + ": slow" +
+                         (t.doorway_sonars_off ? ", sonars off" : "");
       break;
     case office::TravelMode::kNone:
       s.request.reason = "";
@@ -349,6 +351,23 @@ void RplBinding::SetTravelMode(office::TravelMode mode, const std::string& regio
                s.response.message.c_str());
     }
   });
+  const bool off = mode == office::TravelMode::kDoorway && t.doorway_sonars_off;
+  if (off != sonars_off_) deferred_.push_back([this, off] { SwitchSonars(!off); });
+  sonars_off_ = off;
+}
+
+void RplBinding::SwitchSonars(bool on) {
+  std_srvs::SetBool b;
+  b.request.data = on;
+  if (!sonar_.exists()) {
+    ROS_WARN_THROTTLE(10.0, "rpl_executive: no %s service: sonars stay %s",
+                      params_.enable_sonar_service.c_str(), on ? "on" : "as they are");
+    return;
+  }
+  if (!sonar_.call(b) || !b.response.success) {
+    ROS_WARN("rpl_executive: %s %s failed: %s", params_.enable_sonar_service.c_str(),
+             on ? "true" : "false", b.response.message.c_str());
+  }
 }
 
 std::string RplBinding::travel_mode() const { return office::TravelModeName(mode_); }

@@ -95,6 +95,8 @@ class RplBinding : public rpl::office::NavigateClient,
                     const spott_msgs::ActiveLocalizeResultConstPtr& result);
   void Relay(const geometry_msgs::Twist& cmd, bool wander);
   void SyncWheels();
+  /// The localization's sonar readings on or off (the doorway travel mode).
+  void SwitchSonars(bool on);
   void RunDeferred();
   void ArmWakeUp();
   /// Runs `fn` from the spinner once the current callback has returned. A SimpleActionClient's
@@ -116,7 +118,7 @@ class RplBinding : public rpl::office::NavigateClient,
   NavigateClientT navigate_;
   ActiveClientT active_;
   int nav_generation_ = 0, active_generation_ = 0;
-  ros::ServiceClient take_, release_, limits_, global_;
+  ros::ServiceClient take_, release_, limits_, global_, sonar_;
   ros::Subscriber status_sub_, graph_sub_, places_sub_, arbiter_sub_, planner_sub_, wander_sub_;
   ros::Publisher cmd_pub_;
   ros::Timer wake_timer_, watchdog_timer_;
@@ -131,6 +133,7 @@ class RplBinding : public rpl::office::NavigateClient,
   bool event_logged_ = false;
   std::vector<std::pair<std::string, rpl::office::Point>> places_;
   rpl::office::TravelMode mode_ = rpl::office::TravelMode::kNone;
+  bool sonars_off_ = false;  // asked the localization to leave its sonar readings out
 };
 
 }  // namespace rpl_executive
