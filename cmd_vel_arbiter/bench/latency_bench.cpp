@@ -19,6 +19,7 @@
 
 #include "cmd_vel_arbiter/arbiter.h"
 #include "spott_ros/testing/private_master.h"
+#include "spott_ros/testing/ros_benchmark.h"
 
 namespace {
 
@@ -83,9 +84,7 @@ void Measure(benchmark::State& state, const std::string& in, const std::string& 
     samples.push_back(s);
     state.SetIterationTime(s);
   }
-  std::sort(samples.begin(), samples.end());
-  state.counters["p50_us"] = 1e6 * samples[samples.size() / 2];
-  state.counters["p99_us"] = 1e6 * samples[samples.size() * 99 / 100];
+  spott_ros::testing::RecordPercentiles(state, samples);
 }
 
 void BM_ArbiterThroughRos(benchmark::State& state) {
@@ -125,11 +124,5 @@ int main(int argc, char** argv) {
   int ros_argc = 1;
   ros::init(ros_argc, argv, "latency_bench", ros::init_options::NoSigintHandler);
   spott_ros::testing::PrivateMaster::WaitForMaster(10.0);
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  spinner.stop();
-  ros::shutdown();
-  return 0;
+  return spott_ros::testing::RunBenchmarksSpinning(argc, argv);
 }

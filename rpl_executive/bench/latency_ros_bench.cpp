@@ -46,6 +46,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -55,6 +56,7 @@
 #include <vector>
 
 #include "spott_ros/testing/private_master.h"
+#include "spott_ros/testing/ros_benchmark.h"
 
 namespace {
 
@@ -67,11 +69,30 @@ double Seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-void Percentiles(benchmark::State& state, std::vector<double> samples) {
-  if (samples.empty()) return;
-  std::sort(samples.begin(), samples.end());
-  state.counters["p50_us"] = 1e6 * samples[samples.size() / 2];
-  state.counters["p99_us"] = 1e6 * samples[samples.size() * 99 / 100];
+// Three warm-up rounds (connections, the first plan), then one timed round per iteration.
+// `once(timeout_s)` gives the latency (s), -1 when the trigger's precondition never came, -2
+// when the answer did not; `why(code)` says which. False after an error.
+bool Measure(benchmark::State& state, const std::function<double(double)>& once,
+             const std::function<const char*(double)>& why) {
+  for (int i = 0; i < 3; ++i) {
+    const double s = once(20.0);
+    if (s < 0) {
+      state.SkipWithError(why(s));
+      return false;
+    }
+  }
+  std::vector<double> samples;
+  for (auto _ : state) {
+    const double s = once(10.0);
+    if (s < 0) {
+      state.SkipWithError(why(s));
+      return false;
+    }
+    samples.push_back(s);
+    state.SetIterationTime(s);
+  }
+  spott_ros::testing::RecordPercentiles(state, samples);
+  return true;
 }
 
 // Waits on `cv` under `lock` until `done` or `timeout_s` passes.
@@ -216,50 +237,23 @@ void BM_LowCertaintyToNavigateCancel(benchmark::State& state) {
   while (!robot.Connected() && Clock::now() < deadline) ros::WallDuration(0.1).sleep();
   ros::WallDuration(1.0).sleep();  // the room/door graph and the status have arrived
   StartMission(mission, spott_msgs::MissionGoal::RPL, "office_delivery", "");
-  for (int i = 0; i < 3; ++i) {  // warm up (connections, the first plan)
-    if (robot.Once(20.0) < 0) {
-      state.SkipWithError("no Navigate goal, or it was not cancelled on low certainty");
-      mission.cancelGoal();
-      return;
-    }
-  }
-  std::vector<double> samples;
-  for (auto _ : state) {
-    const double s = robot.Once(10.0);
-    if (s < 0) {
-      state.SkipWithError(s < -1.5 ? "the Navigate goal was not cancelled within 2 s"
-                                   : "no new Navigate goal after the relocalization");
-      break;
-    }
-    samples.push_back(s);
-    state.SetIterationTime(s);
-  }
+  Measure(
+      state, [&](double timeout_s) { return robot.Once(timeout_s); },
+      [](double code) {
+        return code < -1.5 ? "the Navigate goal was not cancelled within 2 s"
+                           : "no (new) Navigate goal from the plan";
+      });
   mission.cancelGoal();
   mission.waitForResult(ros::Duration(5.0));
-  Percentiles(state, samples);
 }
 
 void BM_LowCertaintyToNavigateCancel_PollingPeer(benchmark::State& state) {
   ros::NodeHandle nh;
   OfficeRobot robot(nh);
   g_master->Spawn({"/proc/self/exe", "--peer=polling", "__name:=polling_peer"});
-  for (int i = 0; i < 3; ++i) {
-    if (robot.Once(20.0, true) < 0) {
-      state.SkipWithError("the polling peer sent no goal or did not cancel it");
-      return;
-    }
-  }
-  std::vector<double> samples;
-  for (auto _ : state) {
-    const double s = robot.Once(10.0, true);
-    if (s < 0) {
-      state.SkipWithError("the polling peer sent no goal or did not cancel it");
-      break;
-    }
-    samples.push_back(s);
-    state.SetIterationTime(s);
-  }
-  Percentiles(state, samples);
+  Measure(
+      state, [&](double timeout_s) { return robot.Once(timeout_s, true); },
+      [](double) { return "the polling peer sent no goal or did not cancel it"; });
 }
 
 // ---- issue 18: the sonar belt and the wheels as seen by the Noreils-Chatila executive ---------
@@ -365,50 +359,21 @@ void BM_SonarToReflexStopOnCmdVel(benchmark::State& state) {
     StartMission(mission, spott_msgs::MissionGoal::NOREILS_CHATILA, "", kReflexMission);
     return belt.Once(timeout_s);
   };
-  for (int i = 0; i < 3; ++i) {  // warm up
-    if (once(20.0) < 0) {
-      state.SkipWithError("the mission did not move the robot, or the reflex did not stop it");
-      mission.cancelGoal();
-      return;
-    }
-  }
-  std::vector<double> samples;
-  for (auto _ : state) {
-    const double s = once(10.0);
-    if (s < 0) {
-      state.SkipWithError(s < -1.5 ? "no still /cmd_vel within 2 s of the close echoes"
-                                   : "the mission did not move the robot");
-      break;
-    }
-    samples.push_back(s);
-    state.SetIterationTime(s);
-  }
+  Measure(state, once, [](double code) {
+    return code < -1.5 ? "no still /cmd_vel within 2 s of the close echoes"
+                       : "the mission did not move the robot";
+  });
   mission.cancelGoal();
   mission.waitForResult(ros::Duration(5.0));
-  Percentiles(state, samples);
 }
 
 void BM_SonarToReflexStopOnCmdVel_ReflexPeer(benchmark::State& state) {
   ros::NodeHandle nh;
   HilareBelt belt(nh);
   g_master->Spawn({"/proc/self/exe", "--peer=reflex", "__name:=reflex_peer"});
-  for (int i = 0; i < 3; ++i) {
-    if (belt.Once(20.0) < 0) {
-      state.SkipWithError("the reflex peer did not drive, or did not stop");
-      return;
-    }
-  }
-  std::vector<double> samples;
-  for (auto _ : state) {
-    const double s = belt.Once(10.0);
-    if (s < 0) {
-      state.SkipWithError("the reflex peer did not drive, or did not stop");
-      break;
-    }
-    samples.push_back(s);
-    state.SetIterationTime(s);
-  }
-  Percentiles(state, samples);
+  Measure(
+      state, [&](double timeout_s) { return belt.Once(timeout_s); },
+      [](double) { return "the reflex peer did not drive, or did not stop"; });
 }
 
 // Registration order is run order: the peers come after our benchmarks.
@@ -486,13 +451,6 @@ int RunReflexPeer() {
   return 0;
 }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -517,7 +475,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   using spott_ros::testing::PrivateMaster;
-  ros::param::set("/robot_description", ReadFile(ROBOT_SIM_DIR "/urdf/hilare.urdf"));
+  ros::param::set("/robot_description",
+                  spott_ros::testing::ReadTextFile(ROBOT_SIM_DIR "/urdf/hilare.urdf"));
   if (!PrivateMaster::Run(
           {"rosparam", "load", PACKAGE_DIR "/config/rpl_executive.yaml", "/rpl_executive"}) ||
       !PrivateMaster::Run({"rosparam", "load", ARBITER_YAML, "/cmd_vel_arbiter"}) ||
@@ -541,11 +500,5 @@ int main(int argc, char** argv) {
   master.Spawn({WORLD_SERVER_EXE, "__name:=world_server"});
   master.Spawn({ARBITER_EXE, "__name:=cmd_vel_arbiter"});
   master.Spawn({NODE_EXE, "__name:=rpl_executive"});
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  spinner.stop();
-  ros::shutdown();
-  return 0;
+  return spott_ros::testing::RunBenchmarksSpinning(argc, argv);
 }

@@ -18,13 +18,12 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "spott_ros/testing/private_master.h"
+#include "spott_ros/testing/ros_benchmark.h"
 
 namespace {
 
@@ -109,19 +108,10 @@ void BM_BumperToCmdVelThroughRos(benchmark::State& state) {
     state.SetIterationTime(s);
     probe.Settle();
   }
-  std::sort(samples.begin(), samples.end());
-  state.counters["p50_us"] = 1e6 * samples[samples.size() / 2];
-  state.counters["p99_us"] = 1e6 * samples[samples.size() * 99 / 100];
+  spott_ros::testing::RecordPercentiles(state, samples);
 }
 
 BENCHMARK(BM_BumperToCmdVelThroughRos)->UseManualTime()->Iterations(100);
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -133,7 +123,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "reflex_latency_bench: the private rosmaster did not start\n");
     return 1;
   }
-  ros::param::set("/robot_description", ReadFile(ROBOT_SIM_DIR "/urdf/nomad200.urdf"));
+  ros::param::set("/robot_description",
+                  spott_ros::testing::ReadTextFile(ROBOT_SIM_DIR "/urdf/nomad200.urdf"));
   if (!spott_ros::testing::PrivateMaster::Run(
           {"rosparam", "load", CONTROLLER_YAML, "/tr_plus_controller"})) {
     std::fprintf(stderr, "reflex_latency_bench: rosparam load %s failed\n", CONTROLLER_YAML);
@@ -158,11 +149,5 @@ int main(int argc, char** argv) {
   }
   master.Spawn({ARBITER_EXE, "__name:=cmd_vel_arbiter"});
   master.Spawn({CONTROLLER_EXE, "__name:=tr_plus_controller"});
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  spinner.stop();
-  ros::shutdown();
-  return 0;
+  return spott_ros::testing::RunBenchmarksSpinning(argc, argv);
 }
