@@ -460,6 +460,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
     const SensorModel* model;
     int b;
     int z;
+    bool dropped;  // NaN: the sensor dropped out; the beam says nothing
   };
   std::vector<Beam> beams;
   for (const SensorReading& r : readings) {
@@ -473,7 +474,10 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       throw std::invalid_argument("SensorUpdate: " + std::to_string(r.ranges_m->size()) +
                                   " readings for a sensor model of " + std::to_string(nb) +
                                   " beams");
-    for (int b = 0; b < nb; ++b) beams.push_back(Beam{&s, b, s.BeamBin(b, (*r.ranges_m)[b])});
+    for (int b = 0; b < nb; ++b) {
+      const double range = (*r.ranges_m)[b];
+      beams.push_back(Beam{&s, b, s.BeamBin(b, range), std::isnan(range)});
+    }
   }
   SensorUpdateStats stats;
   stats.beam_used.assign(beams.size(), 1);
@@ -483,9 +487,15 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       &stats.beam_used);
   {
     std::vector<Beam> kept;
-    for (std::size_t i = 0; i < beams.size(); ++i)
-      if (stats.beam_used[i]) kept.push_back(beams[i]);
-    stats.beams_filtered = static_cast<int>(beams.size() - kept.size());
+    for (std::size_t i = 0; i < beams.size(); ++i) {
+      if (beams[i].dropped) {
+        stats.beam_used[i] = 0;
+        ++stats.beams_dropped;
+      } else if (stats.beam_used[i]) {
+        kept.push_back(beams[i]);
+      }
+    }
+    stats.beams_filtered = static_cast<int>(beams.size() - kept.size()) - stats.beams_dropped;
     beams.swap(kept);
   }
   stats.beams = static_cast<int>(beams.size());

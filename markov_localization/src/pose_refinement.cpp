@@ -25,6 +25,7 @@ double ScanLogLikelihood(const MapModel& map, const std::vector<SensorReading>& 
     const double sigma = sigma_scale * s.parameters().sigma_hit_m;
     for (int b = 0; b < s.num_beams(); ++b, ++i) {
       if (used && i < used->size() && !(*used)[i]) continue;
+      if (std::isnan((*r.ranges_m)[b])) continue;  // dropped out
       total += s.LogLikelihood(s.ExpectedRange(map, pose, b), (*r.ranges_m)[b], sigma);
     }
   }

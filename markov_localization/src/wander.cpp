@@ -11,7 +11,9 @@ namespace {
 
 double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 
+// A dropped-out beam (NaN) is not free space: the wanderer does not drive where it cannot see.
 double Reading(double r, double max_range) {
+  if (std::isnan(r)) return 0.0;
   return std::isfinite(r) && r < max_range ? std::max(0.0, r) : max_range;
 }
 

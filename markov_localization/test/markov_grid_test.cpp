@@ -130,6 +130,24 @@ TEST(MarkovGrid, SensorUpdateFromUniformIsTheNormalizedLikelihood) {
   EXPECT_GT(grid.Probability(3, 1, 0), 5 * grid.Probability(1, 1, 0));
 }
 
+TEST(MarkovGrid, ADroppedOutBeamIsLeftOutNotReadAsNoEcho) {
+  const MapModel map = Corridor();
+  const SensorModel sensor(map, 4, OneBeam());
+  MarkovGrid grid(map, sensor, FourHeadings(false));
+  const SensorUpdateStats dropped = grid.SensorUpdate({std::nan("")});
+  EXPECT_EQ(dropped.beams, 0);
+  EXPECT_EQ(dropped.beams_dropped, 1);
+  ASSERT_EQ(dropped.beam_used.size(), 1u);
+  EXPECT_EQ(dropped.beam_used[0], 0);
+  for (int k = 0; k < 4; ++k)  // the uniform belief is left as it was
+    for (int ix = 1; ix <= 5; ++ix) EXPECT_NEAR(grid.Probability(ix, 1, k), 1.0 / 20, 1e-7);
+  // A reading that came (2.5 m) still updates: only the dropped beam was left out.
+  const SensorUpdateStats read = grid.SensorUpdate({2.5});
+  EXPECT_EQ(read.beams, 1);
+  EXPECT_EQ(read.beams_dropped, 0);
+  EXPECT_GT(grid.Probability(3, 1, 0), 5 * grid.Probability(1, 1, 0));
+}
+
 TEST(MarkovGrid, MotionShiftsEachHeadingAlongItself) {
   const MapModel map = Corridor();
   const SensorModel sensor(map, 4, OneBeam());

@@ -82,6 +82,18 @@ TEST(Wander, AWallAheadStopsTheRobotAndTurnsItToAFreeDirection) {
   EXPECT_NEAR(std::abs(c.angular_rps), WanderParameters{}.max_turn_rps, 1e-9);
 }
 
+TEST(Wander, ADroppedOutSonarIsNotFreeSpace) {
+  const auto angles = SonarRingAngles(24);
+  std::vector<double> ranges(24, 0.3);  // walls all around ...
+  ranges[12] = 5.0;                     // ... but behind
+  ranges[0] = std::nan("");             // the sonar ahead dropped out
+  Wanderer wander(WanderParameters{}, 7);
+  const auto c = wander.Step(angles, ranges, 5.0, 0.0);
+  EXPECT_EQ(c.linear_mps, 0.0) << "drove towards a sonar that reads nothing";
+  ASSERT_TRUE(wander.heading());
+  EXPECT_NEAR(std::abs(*wander.heading()), M_PI, 1e-9);
+}
+
 TEST(Wander, AfterStallStepsWithoutProgressItTurnsBack) {
   const auto angles = SonarRingAngles(24);
   std::vector<double> ranges(24, 0.6);

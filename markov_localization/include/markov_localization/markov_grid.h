@@ -93,14 +93,17 @@ struct SensorUpdateStats {
   /// (the lost detector), or the belief was reset to uniform (nothing fitted any more).
   bool lost_detected = false;
   std::string lost_reason;  ///< Why, when lost_detected.
-  /// Per beam of the readings (in order): 1 when used, 0 when the distance filter left it out.
+  /// Per beam of the readings (in order): 1 when used, 0 when the distance filter left it out
+  /// or the beam dropped out.
   std::vector<std::uint8_t> beam_used;
   int beams_filtered = 0;
+  int beams_dropped = 0;  ///< NaN readings (a sensor that dropped out), left out.
 };
 
 /// One reading of a range sensor for SensorUpdate: `ranges_m[b]` is the reading of beam b of
-/// `sensor` (NaN or >= max range: no echo). The sensor model must be built on the grid's map
-/// and heading bins. Both pointers must stay valid during the call.
+/// `sensor`: >= max range or +inf: no echo; NaN: the sensor dropped out, the beam is left out
+/// (spott_msgs/RangeRing's convention; REP 117's for a laser). The sensor model must be built on
+/// the grid's map and heading bins. Both pointers must stay valid during the call.
 struct SensorReading {
   const SensorModel* sensor = nullptr;
   const std::vector<double>* ranges_m = nullptr;

@@ -149,7 +149,9 @@ std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::v
   for (int i : beams) {
     const double r = i < static_cast<int>(scan.ranges.size()) ? scan.ranges[i] : NAN;
     const bool echo = std::isfinite(r) && r >= scan.range_min && r < scan.range_max;
-    ranges.push_back(echo ? r : std::numeric_limits<double>::infinity());
+    // REP 117: NaN is an erroneous reading, left out like a dropped sonar; +-inf and readings
+    // outside [range_min, range_max) count as no echo.
+    ranges.push_back(std::isnan(r) ? r : echo ? r : std::numeric_limits<double>::infinity());
   }
   return ranges;
 }
