@@ -214,7 +214,7 @@ class OfficeRobot {
   std::mt19937 rng_{17};
 };
 
-bool StartMission(MissionClient& client, uint8_t language, const std::string& name,
+void StartMission(MissionClient& client, uint8_t language, const std::string& name,
                   const std::string& text) {
   spott_msgs::MissionGoal goal;
   goal.language = language;
@@ -222,6 +222,19 @@ bool StartMission(MissionClient& client, uint8_t language, const std::string& na
   goal.text = text;
   goal.source_name = "latency_ros_bench";
   client.sendGoal(goal);
+}
+
+// The /mission server is up and the probe's topics are connected (`connected`), then a second
+// for the latched maps and the first data to arrive. False (the benchmark skipped) without it.
+bool WaitForExecutive(benchmark::State& state, MissionClient& mission,
+                      const std::function<bool()>& connected) {
+  if (!mission.waitForServer(ros::Duration(30.0))) {
+    state.SkipWithError("no /mission server");
+    return false;
+  }
+  const Clock::time_point deadline = Clock::now() + std::chrono::seconds(30);
+  while (!connected() && Clock::now() < deadline) ros::WallDuration(0.1).sleep();
+  ros::WallDuration(1.0).sleep();
   return true;
 }
 
@@ -229,13 +242,7 @@ void BM_LowCertaintyToNavigateCancel(benchmark::State& state) {
   ros::NodeHandle nh;
   OfficeRobot robot(nh);
   MissionClient mission("mission", true);
-  if (!mission.waitForServer(ros::Duration(30.0))) {
-    state.SkipWithError("no /mission server");
-    return;
-  }
-  const Clock::time_point deadline = Clock::now() + std::chrono::seconds(30);
-  while (!robot.Connected() && Clock::now() < deadline) ros::WallDuration(0.1).sleep();
-  ros::WallDuration(1.0).sleep();  // the room/door graph and the status have arrived
+  if (!WaitForExecutive(state, mission, [&] { return robot.Connected(); })) return;
   StartMission(mission, spott_msgs::MissionGoal::RPL, "office_delivery", "");
   Measure(
       state, [&](double timeout_s) { return robot.Once(timeout_s); },
@@ -345,13 +352,7 @@ void BM_SonarToReflexStopOnCmdVel(benchmark::State& state) {
   ros::NodeHandle nh;
   HilareBelt belt(nh);
   MissionClient mission("mission", true);
-  if (!mission.waitForServer(ros::Duration(30.0))) {
-    state.SkipWithError("no /mission server");
-    return;
-  }
-  const Clock::time_point deadline = Clock::now() + std::chrono::seconds(30);
-  while (!belt.Connected() && Clock::now() < deadline) ros::WallDuration(0.1).sleep();
-  ros::WallDuration(1.0).sleep();  // the executive has its belt
+  if (!WaitForExecutive(state, mission, [&] { return belt.Connected(); })) return;
   bool sent = false;
   auto once = [&](double timeout_s) {
     if (sent) mission.waitForResult(ros::Duration(5.0));  // the previous run's FAIL
