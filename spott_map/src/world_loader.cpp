@@ -1,9 +1,9 @@
 #include "spott_map/world_loader.h"
 
-#include <fstream>
 #include <sstream>
 
 #include "spott_map/yaml_reader.h"
+#include "spott_text/file_reading.h"
 #include "world_validation.h"
 
 namespace spott_map {
@@ -277,15 +277,14 @@ WorldLoadResult LoadWorldFromString(const std::string& text, const std::string& 
 }
 
 WorldLoadResult LoadWorldFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
+  std::string error;
+  const auto text = spott_text::ReadTextFile(path, &error);
+  if (!text) {
     WorldLoadResult result;
-    result.errors.push_back(SourceError{SourceLocation{path, 0, 0}, "cannot open world file"});
+    result.errors.push_back(SourceError{SourceLocation{path, 0, 0}, "cannot read world file: " + error});
     return result;
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return LoadWorldFromString(text.str(), path);
+  return LoadWorldFromString(*text, path);
 }
 
 }  // namespace spott_map

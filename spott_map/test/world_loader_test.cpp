@@ -127,7 +127,18 @@ TEST(WorldLoader, MinimalWorldIsValid) {
 TEST(WorldLoader, MissingFileNamesThePath) {
   const WorldLoadResult r = LoadWorldFile("data/no_such_world.yaml");
   ASSERT_EQ(r.errors.size(), 1u);
-  EXPECT_EQ(r.errors[0].ToString(), "data/no_such_world.yaml: cannot open world file");
+  EXPECT_EQ(r.errors[0].ToString(),
+            "data/no_such_world.yaml: cannot read world file: no such file");
+}
+
+// /dev/zero would have been read into memory until it was exhausted (issue 21).
+TEST(WorldLoader, ADeviceOrDirectoryIsRefusedWithoutReadingIt) {
+  for (const char* path : {"/dev/zero", "/dev/urandom", "data"}) {
+    const WorldLoadResult r = LoadWorldFile(path);
+    ASSERT_EQ(r.errors.size(), 1u) << path;
+    EXPECT_NE(r.errors[0].message.find("not a regular file"), std::string::npos)
+        << r.errors[0].ToString();
+  }
 }
 
 TEST(WorldLoader, YamlSyntaxErrorHasItsPosition) {

@@ -30,11 +30,11 @@
 // is skipped.
 #include "spott_tr_plus/parser.h"
 
-#include <fstream>
 #include <sstream>
 #include <unordered_set>
 
 #include "lexer.h"
+#include "spott_text/file_reading.h"
 
 namespace spott_tr_plus {
 
@@ -567,17 +567,16 @@ ParseResult ParseProgramText(const std::string& text, const std::string& file) {
 }
 
 ParseResult ParseProgramFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::string error;
+  const auto text = spott_text::ReadTextFile(path, &error);
+  if (!text) {
     ParseResult r;
     r.program.file = path;
     r.diagnostics.push_back(
-        Diagnostic{Diagnostic::Severity::kError, path, {}, "cannot read the program file"});
+        Diagnostic{Diagnostic::Severity::kError, path, {}, "cannot read the program file: " + error});
     return r;
   }
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  return ParseProgramText(buf.str(), path);
+  return ParseProgramText(*text, path);
 }
 
 }  // namespace spott_tr_plus

@@ -238,7 +238,8 @@ TEST(Parser, DeepNestingIsAnErrorNotACrash) {
 TEST(Parser, MissingFileIsALocatedError) {
   const ParseResult r = ParseProgramFile("/nonexistent/x.tr");
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.diagnostics[0].ToString(), "/nonexistent/x.tr: cannot read the program file");
+  EXPECT_EQ(r.diagnostics[0].ToString(),
+            "/nonexistent/x.tr: cannot read the program file: no such file");
 }
 
 }  // namespace

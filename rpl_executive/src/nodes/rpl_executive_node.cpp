@@ -13,7 +13,6 @@
 #include <spott_msgs/MissionAction.h>
 #include <visualization_msgs/Marker.h>
 
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -22,6 +21,7 @@
 #include "../ros/parameters.h"
 #include "../ros/rpl_binding.h"
 #include "spott_ros/parameter_reader.h"
+#include "spott_text/file_reading.h"
 
 namespace rpl_executive {
 namespace {
@@ -57,16 +57,15 @@ std::string ShippedText(const std::string& name, bool rpl, std::string* file, st
   }
   const std::string dir = ros::package::getPath("rpl_executive");
   const std::string path = dir + (rpl ? "/plans/" + name + ".rpl" : "/missions/" + name + ".nc");
-  std::ifstream in(path);
-  if (!in) {
-    *error =
-        "no shipped " + std::string(rpl ? "plan" : "mission") + " '" + name + "' (" + path + ")";
+  std::string why;
+  const auto text = spott_text::ReadTextFile(path, &why);
+  if (!text) {
+    *error = "no shipped " + std::string(rpl ? "plan" : "mission") + " '" + name + "' (" + path +
+             ": " + why + ")";
     return "";
   }
-  std::stringstream s;
-  s << in.rdbuf();
   *file = path;
-  return s.str();
+  return *text;
 }
 
 class MissionNode {

@@ -1,7 +1,8 @@
 #include "rpl_executive/noreils_chatila/mission_parser.h"
 
-#include <fstream>
 #include <sstream>
+
+#include "spott_text/file_reading.h"
 
 namespace rpl_executive::noreils_chatila {
 
@@ -613,19 +614,18 @@ ParseResult ParseMissionText(const std::string& text, const std::string& file) {
 }
 
 ParseResult ParseMissionFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::string error;
+  const auto text = spott_text::ReadTextFile(path, &error);
+  if (!text) {
     ParseResult result;
     result.file.file = path;
     Diagnostic d;
     d.file = path;
-    d.message = "cannot read the mission file";
+    d.message = "cannot read the mission file: " + error;
     result.diagnostics.push_back(d);
     return result;
   }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return ParseMissionText(buffer.str(), path);
+  return ParseMissionText(*text, path);
 }
 
 }  // namespace rpl_executive::noreils_chatila
