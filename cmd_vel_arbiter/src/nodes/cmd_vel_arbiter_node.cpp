@@ -14,6 +14,7 @@
 #include <map>
 
 #include "cmd_vel_arbiter/ros/conversions.h"
+#include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace cmd_vel_arbiter {
@@ -49,7 +50,7 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
 class ArbiterNode {
  public:
   ArbiterNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
-      : arbiter_(p.arbiter) {
+      : arbiter_(p.arbiter), refusals_(nh, "cmd_vel_arbiter") {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
@@ -86,9 +87,8 @@ class ArbiterNode {
     bool ignored = false;
     std::string refused;
     const Output out = arbiter_.Command(source, conv::FromTwist(msg, &ignored), Now(), &refused);
-    if (!refused.empty()) {
-      ROS_WARN_THROTTLE(1.0, "cmd_vel_arbiter: refused a command of '%s': %s", source.c_str(),
-                        refused.c_str());
+    if (!refused.empty()) {  // the source stops (arbiter.h)
+      refusals_.Refuse("cmd_vel/" + source, "linear.x/angular.z", refused);
     } else if (ignored) {
       ROS_WARN_THROTTLE(10.0,
                         "cmd_vel_arbiter: '%s' sends linear.y/z or angular.x/y, which a planar "
@@ -102,7 +102,7 @@ class ArbiterNode {
     std::string error;
     const auto angles = conv::PressedAngles(ring, &error);
     if (!angles) {
-      ROS_WARN_THROTTLE(1.0, "cmd_vel_arbiter: refused a bumper message: %s", error.c_str());
+      refusals_.Refuse("bumper", "pressed/segment_angles", error);
       return;
     }
     Emit(arbiter_.SetContacts(*angles, Now()));
@@ -151,6 +151,7 @@ class ArbiterNode {
   }
 
   Arbiter arbiter_;
+  spott_ros::InputRefusals refusals_;
   std::uint64_t published_revision_ = ~std::uint64_t{0};
   ros::Publisher cmd_pub_, status_pub_;
   std::vector<ros::Subscriber> inputs_;

@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <future>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -40,21 +41,49 @@
 #include "markov_localization/ros/parameters.h"
 #include "spott_map/ros/map_update.h"
 #include "spott_map/world_loader.h"
+#include "spott_ros/input_refusals.h"
+#include "spott_ros/pose_conversions.h"
 
 namespace ml = markov_localization;
 namespace conv = markov_localization::ros_conversions;
 
 namespace {
 
-spott_map::Pose2 PoseOf(const geometry_msgs::Pose& pose) {
-  return spott_map::Pose2{pose.position.x, pose.position.y, tf2::getYaw(pose.orientation)};
+// The planar pose, or nothing when a number is not finite or the quaternion has no yaw.
+std::optional<spott_map::Pose2> PoseOf(const geometry_msgs::Pose& pose) {
+  const auto p = spott_ros::ToPose2D(pose);
+  if (!p) return std::nullopt;
+  return spott_map::Pose2{p->x, p->y, p->theta};
+}
+
+// Why a ring is refused (its limit is not a usable number), or "".
+std::string RingProblem(const spott_msgs::RangeRing& ring) {
+  if (!(std::isfinite(ring.max_range) && ring.max_range > 0.0f && ring.max_range < 1000.0f))
+    return "max_range " + std::to_string(ring.max_range) + " is not in (0, 1000) m";
+  return "";
+}
+
+// A reading below 0 or beyond max_range is discarded (sensor_msgs/Range's rule): made NaN, the
+// ring's "dropped out", which the update leaves out. Returns the first such index, or -1.
+int DiscardImpossibleReadings(double max_range, std::vector<double>* ranges) {
+  int first = -1;
+  for (std::size_t i = 0; i < ranges->size(); ++i) {
+    double& r = (*ranges)[i];
+    if (std::isnan(r) || (r >= 0.0 && r <= max_range * 1.001)) continue;
+    if (first < 0) first = static_cast<int>(i);
+    r = std::numeric_limits<double>::quiet_NaN();
+  }
+  return first;
 }
 
 class LocalizationNode {
  public:
   LocalizationNode(ros::NodeHandle& nh, const ml::NodeParameters& params,
                    std::optional<spott_map::World> world)
-      : params_(params), world_(std::move(world)), tf_listener_(tf_buffer_) {
+      : params_(params),
+        world_(std::move(world)),
+        tf_listener_(tf_buffer_),
+        refusals_(nh, "markov_localization") {
     if (params.initial_pose)
       pending_initial_ = params.initial_pose;
     else if (world_ && params.initial_pose_from_world)
@@ -103,17 +132,31 @@ class LocalizationNode {
   }
 
   void OnOdom(const nav_msgs::Odometry& msg) {
-    odom_ = PoseOf(msg.pose.pose);
+    const auto pose = PoseOf(msg.pose.pose);
+    if (!pose) {
+      refusals_.Refuse("odom", "pose.pose", "not finite or no yaw in the quaternion");
+      return;
+    }
+    odom_ = pose;
     odometry_.Add(msg.header.stamp.toSec(), *odom_);
   }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped& msg) {
-    if (!localizer_) {
-      pending_initial_ = PoseOf(msg.pose.pose);
+    const auto pose = PoseOf(msg.pose.pose);
+    if (!pose) {
+      refusals_.Refuse("initialpose", "pose.pose", "not finite or no yaw in the quaternion");
       return;
     }
-    localizer_->SetGaussian(PoseOf(msg.pose.pose), params_.initial_sigma_xy_m,
-                            params_.initial_sigma_theta_rad);
+    if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.map_frame) {
+      refusals_.Refuse("initialpose", "header.frame_id",
+                       "'" + msg.header.frame_id + "' is not '" + params_.map_frame + "'");
+      return;
+    }
+    if (!localizer_) {
+      pending_initial_ = pose;
+      return;
+    }
+    localizer_->SetGaussian(*pose, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad);
     ROS_INFO("markov_localization: initial pose set");
   }
 
@@ -163,7 +206,7 @@ class LocalizationNode {
   void OnMapUpdate(const spott_msgs::MapUpdate& update) {
     const auto before = db_->revision();
     for (const std::string& problem : spott_map::ros_conversions::ApplyMapUpdate(update, 0.1, *db_))
-      ROS_WARN("markov_localization: map update: %s", problem.c_str());
+      refusals_.Refuse(params_.map_updates_topic, "update", problem);
     if (db_->revision() == before) return;
     try {
       NewMap(std::make_shared<const ml::MapModel>(
@@ -328,6 +371,10 @@ class LocalizationNode {
   }
 
   void OnRing(const spott_msgs::RangeRing& ring) {
+    if (const std::string problem = RingProblem(ring); !problem.empty()) {
+      refusals_.Refuse(params_.ring_topic, "ranges", problem);
+      return;
+    }
     if (!odom_) return;
     if (!sonar_model_ && !SonarGeometry(ring)) return;
     TryStart();
@@ -338,6 +385,11 @@ class LocalizationNode {
       return;
     }
     ranges_.assign(ring.ranges.begin(), ring.ranges.end());
+    if (const int i = DiscardImpossibleReadings(ring.max_range, &ranges_); i >= 0) {
+      refusals_.Refuse(params_.ring_topic, "ranges",
+                       "ranges[" + std::to_string(i) + "] = " + std::to_string(ring.ranges[i]) +
+                           " is outside [0, max_range]: discarded as dropped out");
+    }
     if (!sonar_on_ && (ros::Time::now() - sonar_off_since_).toSec() > params_.sonar_off_max_s) {
       ROS_WARN("markov_localization: sonar readings used again: switched off for more than %.0f s",
                params_.sonar_off_max_s);
@@ -354,6 +406,12 @@ class LocalizationNode {
   }
 
   void OnScan(const sensor_msgs::LaserScan& scan) {
+    if (!(std::isfinite(scan.angle_min) && std::isfinite(scan.angle_increment) &&
+          std::isfinite(scan.range_max) && scan.range_max > 0.0f && scan.range_max < 1000.0f)) {
+      refusals_.Refuse(params_.laser.topic, "angle_min/angle_increment/range_max",
+                       "not finite, or range_max not in (0, 1000) m");
+      return;
+    }
     if (!odom_) return;
     if (!laser_model_ && !LaserGeometry(scan)) return;
     TryStart();
@@ -505,6 +563,7 @@ class LocalizationNode {
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
+  spott_ros::InputRefusals refusals_;
 };
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "spott_global_planner/ros/conversions.h"
 #include "spott_global_planner/ros/parameters.h"
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/robot_geometry.h"
 
@@ -56,7 +57,10 @@ std::string Structure(const spott_msgs::RoomDoorGraph& g) {
 class GlobalPlannerNode {
  public:
   GlobalPlannerNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& params)
-      : params_(params), session_(params.core), tf_listener_(tf_buffer_) {
+      : params_(params),
+        session_(params.core),
+        tf_listener_(tf_buffer_),
+        refusals_(nh, "global_planner") {
     path_pub_ = nh.advertise<spott_msgs::GlobalPath>("global_path", 1, true);
     goal_pub_ = nh.advertise<spott_msgs::ProjectedGoal>("projected_goal", 1, true);
     status_pub_ = nh.advertise<spott_msgs::GlobalPlanStatus>("global_plan_status", 1, true);
@@ -75,22 +79,21 @@ class GlobalPlannerNode {
  private:
   void OnGraph(const spott_msgs::RoomDoorGraph& msg) {
     if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.frame_id) {
-      ROS_ERROR("global_planner: refusing room_door_graph in frame '%s' (expected '%s')",
-                msg.header.frame_id.c_str(), params_.frame_id.c_str());
+      refusals_.Refuse("room_door_graph", "header.frame_id",
+                       "'" + msg.header.frame_id + "' is not '" + params_.frame_id + "'");
       return;
     }
     std::string error;
     std::optional<spott_map::RoomDoorGraph> graph = map_conv::FromMsg(msg, &error);
     if (!graph) {
-      ROS_ERROR("global_planner: refusing room_door_graph of world '%s': %s (keeping the %s)",
-                msg.world.c_str(), error.c_str(), session_.has_graph() ? "last one" : "none");
+      refusals_.Refuse("room_door_graph", "rooms/doors",
+                       "world '" + msg.world + "': " + error + " (keeping the " +
+                           (session_.has_graph() ? "last one)" : "none)"));
       return;
     }
     if (graph->rooms().empty() && session_.has_graph()) {
       // A graph without rooms would leave nothing to plan in: keep the one we have.
-      ROS_ERROR_THROTTLE(10.0,
-                         "global_planner: refusing an empty room_door_graph (keeping the last "
-                         "one)");
+      refusals_.Refuse("room_door_graph", "rooms", "an empty graph (keeping the last one)");
       return;
     }
     const std::string structure = Structure(msg);
@@ -109,8 +112,9 @@ class GlobalPlannerNode {
     for (const auto& d : msg.doors) {
       const auto state = map_conv::DoorStateFromMsg(d.state);
       if (!state) {
-        ROS_WARN("global_planner: map update: invalid state %d for door '%s'", d.state,
-                 d.door_id.c_str());
+        refusals_.Refuse(
+            "map_updates", "doors[].state",
+            "invalid state " + std::to_string(d.state) + " for door '" + d.door_id + "'");
       } else if (!session_.SetDoorState(d.door_id, *state)) {
         ROS_WARN("global_planner: map update: unknown door '%s' (or an opening closed)",
                  d.door_id.c_str());
@@ -120,15 +124,20 @@ class GlobalPlannerNode {
   }
 
   void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
+    if (msg.features.empty() && have_features_) {  // features are removed with a MapUpdate
+      refusals_.Refuse("map_features", "features", "an empty array would remove every obstacle");
+      return;
+    }
     std::vector<spott_map::MapFeature> features;
     for (const auto& f : msg.features) {
       std::string error;
       if (auto feature = map_conv::FromMsg(f, &error)) {
         features.push_back(std::move(*feature));
       } else {
-        ROS_WARN("global_planner: ignoring map feature '%s': %s", f.id.c_str(), error.c_str());
+        refusals_.Refuse("map_features", "features[]", error);
       }
     }
+    have_features_ = have_features_ || !features.empty();
     for (const std::string& room : session_.SetFeatures(features)) {
       ROS_INFO("global_planner: passages through node '%s' changed", room.c_str());
     }
@@ -276,6 +285,8 @@ class GlobalPlannerNode {
   ros::Subscriber graph_sub_, updates_sub_, features_sub_, goal_sub_, window_sub_;
   ros::ServiceServer plan_srv_;
   ros::Timer timer_;
+  bool have_features_ = false;
+  spott_ros::InputRefusals refusals_;
 };
 
 }  // namespace

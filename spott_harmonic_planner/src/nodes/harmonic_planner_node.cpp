@@ -25,6 +25,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
@@ -33,6 +34,7 @@
 #include "spott_harmonic_planner/ros/conversions.h"
 #include "spott_harmonic_planner/ros/parameters.h"
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/input_refusals.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_geometry.h"
 
@@ -48,7 +50,8 @@ class HarmonicPlannerNode {
         planner_(p.planner),
         contacts_(p.contact_memory_s, p.contact_size_m),
         server_(pnh, "navigate", false),
-        listener_(tf_) {
+        listener_(tf_),
+        refusals_(nh, "harmonic_planner") {
     cmd_pub_ = pnh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     goal_pub_ = nh.advertise<spott_msgs::GlobalGoal>("global_goal", 1, true);
     status_pub_ = pnh.advertise<spott_msgs::PotentialFieldStatus>("status", 1);
@@ -77,10 +80,14 @@ class HarmonicPlannerNode {
   void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
     if (msg.features.empty() && !db_.features().empty()) {
       // An empty array would remove every wall: a publisher clears features through MapUpdate.
-      ROS_WARN_THROTTLE(10.0,
-                        "harmonic_planner: map_features: ignored an empty feature array (it would "
-                        "remove all %zu obstacles, walls included)",
-                        db_.features().size());
+      refusals_.Refuse("map_features", "features",
+                       "an empty array would remove all " + std::to_string(db_.features().size()) +
+                           " obstacles, walls included (remove features with a MapUpdate)");
+      return;
+    }
+    if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.frame_id) {
+      refusals_.Refuse("map_features", "header.frame_id",
+                       "'" + msg.header.frame_id + "' is not '" + params_.frame_id + "'");
       return;
     }
     spott_map::MapDatabase db;
@@ -88,9 +95,8 @@ class HarmonicPlannerNode {
     for (const auto& f : msg.features) {
       std::string error;
       const auto feature = mconv::FromMsg(f, &error);
-      if (!feature) {
-        ROS_WARN("harmonic_planner: map_features: feature '%s' ignored: %s", f.id.c_str(),
-                 error.c_str());
+      if (!feature) {  // the feature is left out, the others are kept
+        refusals_.Refuse("map_features", "features[]", error);
         continue;
       }
       db.AddFeature(*feature);
@@ -103,11 +109,11 @@ class HarmonicPlannerNode {
     std::string error;
     auto graph = mconv::FromMsg(msg, &error);
     if (!graph) {
-      ROS_WARN("harmonic_planner: room_door_graph ignored: %s", error.c_str());
+      refusals_.Refuse("room_door_graph", "rooms/doors", error);
       return;
     }
     if (graph->rooms().empty() && !db_.graph().rooms().empty()) {
-      ROS_WARN_THROTTLE(10.0, "harmonic_planner: room_door_graph: ignored an empty graph");
+      refusals_.Refuse("room_door_graph", "rooms", "an empty graph would replace the building's");
       return;
     }
     db_.SetGraph(*graph);
@@ -165,7 +171,7 @@ class HarmonicPlannerNode {
   void OnOdom(const nav_msgs::Odometry& msg) {
     const auto pose = spott_ros::ToPose2D(msg.pose.pose);
     if (!pose) {
-      ROS_WARN_THROTTLE(5.0, "harmonic_planner: odom: a pose that is not finite was ignored");
+      refusals_.Refuse("odom", "pose.pose", "not finite or no yaw in the quaternion");
       return;
     }
     odom_ = spott_map::Pose2{pose->x, pose->y, pose->theta};
@@ -210,14 +216,24 @@ class HarmonicPlannerNode {
   void OnGoal() {
     const auto goal = server_.acceptNewGoal();
     std::string error;
-    const auto request = conv::FromGoal(*goal, params_.frame_id, params_.planner.goal_tolerance_m,
-                                        params_.heading_tolerance_rad, &error);
+    auto request = conv::FromGoal(*goal, params_.frame_id, params_.planner.goal_tolerance_m,
+                                  params_.heading_tolerance_rad, &error);
+    // The global planner would refuse it too, but only after the round trip.
+    if (request && params_.navigate.use_global_planner && !db_.graph().rooms().empty() &&
+        !db_.graph().RoomContaining(request->target)) {
+      char where[96];
+      std::snprintf(where, sizeof where, "target (%.6g, %.6g)", request->target.x(),
+                    request->target.y());
+      error = std::string(where) + " is outside every room of the map";
+      request.reset();
+    }
     if (!request) {
+      refusals_.Refuse("~navigate", "goal", error);
       spott_msgs::NavigateResult r;
       r.outcome = spott_msgs::NavigateResult::FAILED;
       r.reason = "bad Navigate goal: " + error;
-      ROS_WARN("harmonic_planner: %s", r.reason.c_str());
       server_.setAborted(r, r.reason);
+      if (session_) Finish();  // the goal this one preempted stops too
       return;
     }
     request_ = *request;
@@ -298,6 +314,10 @@ class HarmonicPlannerNode {
   }
 
   void Drive(double linear, double angular) {
+    if (!std::isfinite(linear) || !std::isfinite(angular)) {  // never on the wheels
+      ROS_ERROR_THROTTLE(5.0, "harmonic_planner: a steering command was not finite: stopped");
+      linear = angular = 0.0;
+    }
     geometry_msgs::Twist twist;
     twist.linear.x = linear;
     twist.angular.z = angular;
@@ -419,6 +439,7 @@ class HarmonicPlannerNode {
   actionlib::SimpleActionServer<spott_msgs::NavigateAction> server_;
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
+  spott_ros::InputRefusals refusals_;
   ros::Publisher cmd_pub_, goal_pub_, window_pub_, status_pub_, steering_pub_, potential_pub_,
       contours_pub_, path_pub_;
   ros::Subscriber features_sub_, graph_sub_, projected_sub_, plan_status_sub_, odom_sub_,

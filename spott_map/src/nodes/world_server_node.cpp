@@ -19,6 +19,7 @@
 #include "spott_map/ros/conversions.h"
 #include "spott_map/ros/map_update.h"
 #include "spott_map/world_loader.h"
+#include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace spott_map {
@@ -36,7 +37,7 @@ struct WorldServerParameters {
 class WorldServer {
  public:
   WorldServer(ros::NodeHandle& nh, ros::NodeHandle& pnh, WorldServerParameters params, World world)
-      : params_(std::move(params)), world_(std::move(world)) {
+      : params_(std::move(params)), world_(std::move(world)), refusals_(nh, "world_server") {
     db_ = MapDatabase::FromWorld(world_);
     map_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     graph_pub_ = nh.advertise<spott_msgs::RoomDoorGraph>("room_door_graph", 1, true);
@@ -86,7 +87,7 @@ class WorldServer {
     const auto before = db_.revision();
     for (const std::string& problem :
          conv::ApplyMapUpdate(update, params_.feature_tolerance_m, db_)) {
-      ROS_WARN("world_server: map update: %s", problem.c_str());
+      refusals_.Refuse("map_updates", "update", problem);  // the rest of the update applies
     }
     if (db_.revision() != before) PublishAll();
   }
@@ -174,6 +175,7 @@ class WorldServer {
   ros::Publisher map_pub_, graph_pub_, features_pub_, markers_pub_, places_pub_;
   ros::Subscriber updates_sub_;
   ros::ServiceServer door_srv_, locate_srv_, lookup_srv_, load_srv_;
+  spott_ros::InputRefusals refusals_;
 };
 
 // Reads and checks every parameter; each violation names its parameter.

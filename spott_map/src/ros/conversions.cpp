@@ -8,7 +8,11 @@ namespace spott_map::ros_conversions {
 
 namespace {
 
-bool Finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+// Finite and within the size rule (conversions.h).
+bool Plausible(const Vec2& p) {
+  return std::abs(p.x()) <= kMaxCoordinateM && std::abs(p.y()) <= kMaxCoordinateM;
+}
+bool PlausibleSize(double v) { return v >= 0.0 && v <= kMaxSizeM; }
 
 geometry_msgs::Quaternion YawQuaternion(double yaw) {
   tf2::Quaternion q;
@@ -126,9 +130,11 @@ std::optional<MapFeature> FromMsg(const spott_msgs::MapFeature& m, std::string* 
   f.source =
       m.source == spott_msgs::MapFeature::SOURCE_CAD ? FeatureSource::kCad : FeatureSource::kSensed;
   f.label = m.label;
+  if (m.points.size() > kMaxPoints)
+    return fail("more than " + std::to_string(kMaxPoints) + " points");
   for (const auto& p : m.points) {
     f.points.push_back(FromPoint(p));
-    if (!Finite(f.points.back())) return fail("a point is not finite");
+    if (!Plausible(f.points.back())) return fail("a point is not finite or beyond 10 km");
   }
   if (f.type == FeatureType::kPoint && f.points.size() != 1) return fail("a point needs 1 point");
   if (f.type == FeatureType::kLineSegment && f.points.size() != 2) {
@@ -143,6 +149,9 @@ std::optional<MapFeature> FromMsg(const spott_msgs::MapFeature& m, std::string* 
     return fail("pose or size is not finite");
   }
   if (f.size_x < 0 || f.size_y < 0 || f.size_z < 0) return fail("negative size");
+  if (!Plausible(Vec2(f.pose.x, f.pose.y))) return fail("pose beyond 10 km of the origin");
+  if (!PlausibleSize(f.size_x) || !PlausibleSize(f.size_y) || !PlausibleSize(f.size_z))
+    return fail("size over 1 km");
   const bool area = f.type != FeatureType::kPoint && f.type != FeatureType::kLineSegment;
   if (area && (f.size_x <= 0 || f.size_y <= 0)) return fail("an area feature needs a size");
   for (const auto& a : m.attributes) f.attributes[a.key] = a.value;
@@ -206,7 +215,8 @@ std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& m, std::st
     room.kind = r.kind == spott_msgs::Room::HALLWAY ? RoomKind::kHallway : RoomKind::kRoom;
     for (const auto& p : r.polygon.points) {
       room.polygon.emplace_back(p.x, p.y);
-      if (!Finite(room.polygon.back())) return fail("room " + r.id + ": point is not finite");
+      if (!Plausible(room.polygon.back()))
+        return fail("room " + r.id + ": point is not finite or beyond 10 km");
     }
     if (room.polygon.size() < 3) return fail("room " + r.id + ": fewer than 3 points");
     rooms.push_back(room);
@@ -225,9 +235,9 @@ std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& m, std::st
     door.center = FromPoint(d.centre);
     if (d.opening.size() != 2) return fail("door " + d.id + ": opening needs 2 points");
     door.opening = Segment{FromPoint(d.opening[0]), FromPoint(d.opening[1])};
-    if (!Finite(door.center) || !Finite(door.opening.a) || !Finite(door.opening.b) ||
-        !std::isfinite(door.width)) {
-      return fail("door " + d.id + ": value is not finite");
+    if (!Plausible(door.center) || !Plausible(door.opening.a) || !Plausible(door.opening.b) ||
+        !PlausibleSize(door.width)) {
+      return fail("door " + d.id + ": value is not finite, beyond 10 km, or a width over 1 km");
     }
     doors.push_back(door);
   }

@@ -56,10 +56,32 @@ TEST(Conversions, MalformedFeaturesAreRefusedWithAReason) {
   m = conv::ToMsg(MakeSegment("s", Segment{Vec2(0, 0), Vec2(1, 0)}, ""));
   m.points[1].x = std::nan("");
   EXPECT_FALSE(conv::FromMsg(m, &error));
-  EXPECT_EQ(error, "map feature 's': a point is not finite");
+  EXPECT_EQ(error, "map feature 's': a point is not finite or beyond 10 km");
+  m.points[1].x = 2e4;
+  EXPECT_FALSE(conv::FromMsg(m, &error));
   m.type = 42;
   EXPECT_FALSE(conv::FromMsg(m, &error));
   EXPECT_EQ(error, "map feature 's': unknown type 42");
+}
+
+// A 1e9 m feature was accepted into the map database and republished (issue 21).
+TEST(Conversions, FeaturesBeyondTheSizeRuleAreRefused) {
+  MapFeature f;
+  f.id = "crate";
+  f.type = FeatureType::kRectangle;
+  f.pose = Pose2{3.0, 8.0, 0.0};
+  f.size_x = f.size_y = 0.5;
+  std::string error;
+  spott_msgs::MapFeature m = conv::ToMsg(f);
+  ASSERT_TRUE(conv::FromMsg(m, &error)) << error;
+  m.size.x = 1e9;
+  EXPECT_FALSE(conv::FromMsg(m, &error));
+  EXPECT_EQ(error, "map feature 'crate': size over 1 km");
+  m.size.x = conv::kMaxSizeM;  // the limit itself is a (very large) building
+  EXPECT_TRUE(conv::FromMsg(m, &error)) << error;
+  m.pose.position.x = 1e300;
+  EXPECT_FALSE(conv::FromMsg(m, &error));
+  EXPECT_EQ(error, "map feature 'crate': pose beyond 10 km of the origin");
 }
 
 TEST(Conversions, GraphRoundTripKeepsRoomsDoorsAndStates) {

@@ -44,6 +44,7 @@
 #include <memory>
 
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_geometry.h"
@@ -226,6 +227,7 @@ class ControllerNode : public ControllerIo {
 
   void Start() {
     ros::NodeHandle& nh = nh_;
+    refusals_ = std::make_unique<spott_ros::InputRefusals>(nh, "tr_plus_controller");
     graph_sub_ = nh.subscribe("room_door_graph", 1, &ControllerNode::OnGraph, this);
     features_sub_ = nh.subscribe("map_features", 1, &ControllerNode::OnFeatures, this);
     places_sub_ = nh.subscribe("world_places", 1, &ControllerNode::OnPlaces, this);
@@ -455,23 +457,33 @@ class ControllerNode : public ControllerIo {
     std::string error;
     const auto graph = mconv::FromMsg(msg, &error);
     if (!graph) {
-      ROS_WARN("tr_plus_controller: room_door_graph ignored: %s", error.c_str());
+      refusals_->Refuse("room_door_graph", "rooms/doors", error);
       return;
     }
+    if (graph->rooms().empty() && have_graph_) {
+      refusals_->Refuse("room_door_graph", "rooms", "an empty graph would replace the building's");
+      return;
+    }
+    have_graph_ = !graph->rooms().empty();
     core_->SetGraph(*graph, Now());
     AfterEvent();
   }
 
   void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
+    if (msg.features.empty() && have_features_) {  // features are removed with a MapUpdate
+      refusals_->Refuse("map_features", "features", "an empty array would remove every feature");
+      return;
+    }
     std::vector<spott_map::MapFeature> features;
     for (const auto& f : msg.features) {
       std::string error;
       if (auto feature = mconv::FromMsg(f, &error)) {
         features.push_back(std::move(*feature));
       } else {
-        ROS_WARN("tr_plus_controller: map feature '%s' ignored: %s", f.id.c_str(), error.c_str());
+        refusals_->Refuse("map_features", "features[]", error);
       }
     }
+    have_features_ = have_features_ || !features.empty();
     core_->SetFeatures(features, Now());
     AfterEvent();
   }
@@ -565,7 +577,10 @@ class ControllerNode : public ControllerIo {
 
   void OnOdom(const nav_msgs::Odometry& msg) {
     const auto p = spott_ros::ToPose2D(msg.pose.pose);
-    if (!p) return;
+    if (!p) {
+      refusals_->Refuse("odom", "pose.pose", "not finite or no yaw in the quaternion");
+      return;
+    }
     core_->SetOdometry(Pose2{p->x, p->y, p->theta}, msg.twist.twist.linear.x,
                        msg.twist.twist.angular.z, Now());
   }
@@ -682,6 +697,8 @@ class ControllerNode : public ControllerIo {
   std::int64_t task_count_ = 0;
   std::vector<Done> pending_done_;
   bool have_pose_ = false;
+  bool have_graph_ = false, have_features_ = false;  ///< Once the map came: emptiness is refused.
+  std::unique_ptr<spott_ros::InputRefusals> refusals_;
   std::string ptu_pattern_;
   double last_heads_s_ = -1e300;
   std::string last_signature_, marker_text_;

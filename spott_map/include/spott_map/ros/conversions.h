@@ -45,9 +45,16 @@ std::uint8_t ToMsg(DoorState state);
 /// nullopt for a value that is not a spott_msgs/Door state constant.
 std::optional<DoorState> DoorStateFromMsg(std::uint8_t state);
 
+/// The rule for sizes in map messages: a coordinate lies within kMaxCoordinateM of the map
+/// origin and a size (or door width) is at most kMaxSizeM; anything else is a corrupt message,
+/// not a building. A feature has at most kMaxPoints points.
+constexpr double kMaxCoordinateM = 1e4;
+constexpr double kMaxSizeM = 1e3;
+constexpr std::size_t kMaxPoints = 100000;
+
 spott_msgs::MapFeature ToMsg(const MapFeature& feature);
-/// Checks the type, the number of points and that every number is finite; on failure returns
-/// nullopt and says why in `error`.
+/// Checks the type, the number of points, that every number is finite and within the size rule
+/// above; on failure returns nullopt and says why in `error`.
 std::optional<MapFeature> FromMsg(const spott_msgs::MapFeature& msg, std::string* error);
 spott_msgs::MapFeatureArray ToMsg(const std::vector<MapFeature>& features,
                                   const std::string& frame_id, const ros::Time& stamp);
@@ -57,7 +64,7 @@ spott_msgs::Door ToMsg(const Door& door);
 spott_msgs::RoomDoorGraph ToMsg(const RoomDoorGraph& graph, const std::string& world_name,
                                 const std::string& frame_id, const ros::Time& stamp);
 /// Rebuilds the graph; nullopt (with `error`) when a door names an unknown room, a polygon has
-/// fewer than three points, or a value is not finite.
+/// fewer than three points, or a value is not finite or outside the size rule.
 std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& msg, std::string* error);
 
 spott_msgs::NamedPlace ToMsg(const Place& place);
