@@ -73,6 +73,20 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(out.returncode, 0, out.stdout)
         self.assertIn('room_id: "hall_w"', out.stdout)
 
+    def test_stack_launch_refuses_an_unsupported_value_naming_the_accepted_ones(self):
+        for arg, accepted in (('localization:=amcl', 'localization_must_be_markov_or_truth'),
+                              ('controller:=bt', 'controller_must_be_tr_plus_or_none'),
+                              ('executive:=smach', 'executive_must_be_rpl_or_none')):
+            out = subprocess.run(['roslaunch', '--nodes', 'spott_launch', 'stack.launch',
+                                  arg], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                 text=True, timeout=120)
+            self.assertNotEqual(out.returncode, 0, arg)
+            self.assertIn(accepted, out.stdout, arg)
+        out = subprocess.run(['roslaunch', '--nodes', 'spott_launch', 'stack.launch'],
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                             timeout=120)
+        self.assertEqual(out.returncode, 0, out.stdout[-500:])
+
 
 if __name__ == '__main__':
     rospy.init_node('command_line_test')
