@@ -28,6 +28,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <future>
 #include <limits>
 #include <memory>
@@ -123,6 +124,9 @@ class LocalizationNode {
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
     sonar_srv_ = nh.advertiseService("enable_sonar", &LocalizationNode::OnEnableSonar, this);
     action_ = std::make_unique<ml::ActiveLocalizeServer>(nh, params_, [this] { SetUniform(); });
+    if (params_.save_pose_period_s > 0)
+      save_timer_ = nh.createTimer(ros::Duration(params_.save_pose_period_s),
+                                   &LocalizationNode::SavePose, this);
   }
 
  private:
@@ -365,9 +369,26 @@ class LocalizationNode {
       localizer_.reset();
       return;
     }
-    if (pending_initial_ && !params_.start_uniform)
+    if (params_.last_map_to_odom && !resumed_) {  // respawned: the odometry went on meanwhile
+      const ml::Pose2 at = ml::Compose(*params_.last_map_to_odom, *odom_);
+      localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad);
+      ROS_WARN("markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom",
+               at.x, at.y, at.yaw * 180.0 / M_PI);
+      resumed_ = true;
+    } else if (pending_initial_ && !params_.start_uniform) {
       localizer_->SetGaussian(*pending_initial_, params_.initial_sigma_xy_m,
                               params_.initial_sigma_theta_rad);
+    }
+  }
+
+  // AMCL's save_pose_rate: map -> odom on the parameter server while not lost, so that a node
+  // respawned after a crash resumes from it (parameters.h, last_map_to_odom).
+  void SavePose(const ros::TimerEvent&) {
+    if (!localizer_ || !localizer_->has_estimate() || localizer_->lost()) return;
+    const ml::Pose2 t = localizer_->map_to_odom();
+    char text[96];
+    std::snprintf(text, sizeof text, "%.4f %.4f %.5f", t.x, t.y, t.yaw);
+    ros::NodeHandle("~").setParam("last_map_to_odom", std::string(text));
   }
 
   void OnRing(const spott_msgs::RangeRing& ring) {
@@ -564,6 +585,8 @@ class LocalizationNode {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   spott_ros::InputRefusals refusals_;
+  ros::Timer save_timer_;
+  bool resumed_ = false;  ///< Started from last_map_to_odom (once).
 };
 
 }  // namespace

@@ -80,6 +80,16 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
     p.initial_pose = spott_map::ParsePoseText(initial_pose, &why);
     if (!p.initial_pose) v.push_back("~initial_pose: " + why);
   }
+  std::string last_map_to_odom;
+  r.Get("last_map_to_odom", last_map_to_odom);
+  if (!last_map_to_odom.empty()) {
+    std::string why;
+    p.last_map_to_odom = spott_map::ParsePoseText(last_map_to_odom, &why);
+    if (!p.last_map_to_odom) v.push_back("~last_map_to_odom: " + why);
+  }
+  r.Get("save_pose_period_s", p.save_pose_period_s, "s");
+  r.Require(p.save_pose_period_s >= 0.0 && p.save_pose_period_s <= 60.0, "save_pose_period_s",
+            "in [0, 60]", p.save_pose_period_s);
   r.Get("initial_sigma_xy_m", p.initial_sigma_xy_m);
   r.GetDegrees("initial_sigma_theta_deg", p.initial_sigma_theta_rad);
   r.Get("belief_rate_hz", p.belief_rate_hz);

@@ -63,6 +63,12 @@ struct NodeParameters {
   /// robot_start). The stack passes the simulator's start_pose, so that the belief starts where
   /// the robot is instead of being corrected by /initialpose after the controller began mapping.
   std::optional<spott_map::Pose2> initial_pose;
+  /// Written by the node itself every save_pose_period_s: its map -> odom ("x y yaw") while it
+  /// is not lost (AMCL's save_pose_rate). A node respawned after a crash finds it and resumes
+  /// at that transform composed with the odometry of the moment (a Gaussian of the initial
+  /// sigmas), whatever start_uniform says. A new launch resets it from the YAML ("").
+  std::optional<spott_map::Pose2> last_map_to_odom;
+  double save_pose_period_s = 2.0;  ///< [0, 60] s; 0: never saved.
   double initial_sigma_xy_m = 0.3;  ///< Spread of the belief set by /initialpose.
   double initial_sigma_theta_rad = 0.2;
   double belief_rate_hz = 1.0;  ///< Rate of the `belief` grid (it touches every state), > 0.
