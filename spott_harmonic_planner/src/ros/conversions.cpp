@@ -152,6 +152,12 @@ std::optional<NavigateRequest> FromGoal(const spott_msgs::NavigateGoal& goal,
     *error = "position_tolerance and heading_tolerance must be finite and >= 0 (0 = default)";
     return std::nullopt;
   }
+  // A wider tolerance would end the goal where the robot stands: it is not a goal any more.
+  if (goal.position_tolerance > kMaxPositionToleranceM || goal.heading_tolerance > M_PI) {
+    *error = "position_tolerance must be at most " + std::to_string(kMaxPositionToleranceM) +
+             " m and heading_tolerance at most pi";
+    return std::nullopt;
+  }
   NavigateRequest r;
   r.target = Vec2(t.pose.position.x, t.pose.position.y);
   if (!goal.ignore_heading) {

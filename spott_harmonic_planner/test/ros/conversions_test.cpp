@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "../test_maps.h"
 
@@ -88,6 +89,33 @@ TEST(Conversions, NavigateGoalBiasKindsAreReadAndBadOnesRefusedByField) {
   g.bias_kind = 9;
   EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
   EXPECT_NE(error.find("bias_kind"), std::string::npos) << error;
+}
+
+// Issue 21: each of these drove the robot or ended without moving before it was refused.
+TEST(Conversions, NavigateGoalsThatAreNoGoalAreRefusedByField) {
+  spott_msgs::NavigateGoal g;
+  g.target.header.frame_id = "map";
+  g.target.pose.position.x = 1.0;
+  g.target.pose.orientation.w = 1.0;
+  std::string error;
+  ASSERT_TRUE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error)) << error;
+  g.position_tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("position_tolerance"), std::string::npos) << error;
+  g.position_tolerance = 1e6;  // finite, but every pose of the building is within it
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("position_tolerance"), std::string::npos) << error;
+  g.position_tolerance = ros_conversions::kMaxPositionToleranceM;
+  EXPECT_TRUE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error)) << error;
+  g.position_tolerance = 0.0;
+  g.target.pose.orientation.z = std::nan("");  // the heading counts: no yaw in it
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("orientation"), std::string::npos) << error;
+  g.ignore_heading = true;  // the heading does not count: the quaternion is not read
+  EXPECT_TRUE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error)) << error;
+  g.target.pose.position.y = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(ros_conversions::FromGoal(g, "map", 0.2, 0.1, &error));
+  EXPECT_NE(error.find("position"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -37,10 +37,13 @@ nav_msgs::Path ToPath(const PotentialField::Path& path, const std::string& frame
 spott_msgs::PotentialFieldStatus ToStatus(const LocalPlanner& planner, double solve_time_s,
                                           const std::string& frame_id, const ros::Time& stamp);
 
+/// The widest position tolerance a Navigate goal may ask for (m).
+constexpr double kMaxPositionToleranceM = 10.0;
+
 /// A Navigate goal as a request, with the node's defaults for zero tolerances; nullopt with
 /// `error` (naming the field) for a target that is not finite or not in `frame_id`, an unknown
 /// speed mode, an orientation without a yaw while the heading counts, or a tolerance that is
-/// not finite and >= 0.
+/// not finite and >= 0 or wider than kMaxPositionToleranceM (heading: pi).
 std::optional<NavigateRequest> FromGoal(const spott_msgs::NavigateGoal& goal,
                                         const std::string& frame_id, double default_tolerance_m,
                                         double default_heading_tolerance_rad, std::string* error);
