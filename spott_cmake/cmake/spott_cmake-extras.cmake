@@ -3,6 +3,12 @@
 set(CMAKE_CXX_STANDARD 17)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
 add_compile_options(-Wall -Wextra)
+# ./spott test --sanitize configures SPOTT_SANITIZE_FLAGS (ASan + UBSan) in a workspace of its
+# own: every target of the package, libraries, nodes and tests alike, is built and linked with it.
+if(SPOTT_SANITIZE_FLAGS)
+  add_compile_options(${SPOTT_SANITIZE_FLAGS})
+  add_link_options(${SPOTT_SANITIZE_FLAGS})
+endif()
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE RelWithDebInfo)
 endif()

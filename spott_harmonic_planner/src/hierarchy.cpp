@@ -216,6 +216,15 @@ void Hierarchy<T>::BuildCoarse(std::size_t l) {
   T* Bq = buf.data() + 5 * fw;  // Bq[(q * 3 + r) * cw + k]
   const auto B = [&](int q, int r) { return Bq + (q * 3 + r) * cw; };
   const T* src[5] = {f.diag.data(), f.e.data(), f.n.data(), f.ne.data(), f.nw.data()};
+  // Fine5 reads each cell's east and north neighbour flags: on the last column and the top row
+  // they lie beyond the mask (ASan found the read). A copy padded with zeros (no neighbour, no
+  // coupling) keeps the kernel's loop branch-free.
+  std::vector<std::uint8_t> active;
+  if (five0) {
+    active.reserve(f.active.size() + fnx + 1);
+    active.assign(f.active.begin(), f.active.end());
+    active.resize(f.active.size() + fnx + 1, 0);
+  }
   for (const Run& run : c.runs) {
     const int Y = run.y;
     // Coarse columns X0 - 1 .. X1 (local k = 0 .. count + 1), only interior ones hold B.
@@ -234,7 +243,7 @@ void Hierarchy<T>::BuildCoarse(std::size_t l) {
       const T* ne = nullptr;
       const T* nw = nullptr;
       if (five0) {
-        kernels::Fine5(f.active.data() + base, f.active.data() + base + fnx, F, F + fw, F + 2 * fw,
+        kernels::Fine5(active.data() + base, active.data() + base + fnx, F, F + fw, F + 2 * fw,
                        len);
         d = F;
         e = F + fw;
