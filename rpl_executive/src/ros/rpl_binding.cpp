@@ -85,6 +85,9 @@ RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters
 }
 
 RplBinding::~RplBinding() {
+  // The modules cancel through this object's clients, which the members' destruction would
+  // take away before the executive: they stop now, while everything is alive.
+  executive_.Shutdown();
   if (sonars_off_) SwitchSonars(true);
   if (have_wheels_) {
     spott_msgs::ReleaseWheels r;

@@ -448,6 +448,8 @@ Executive::Executive(const ExecutiveParameters& parameters)
     : runtime_(std::make_unique<internal::Runtime>(parameters)) {}
 Executive::~Executive() = default;
 
+void Executive::Shutdown() { runtime_.reset(); }
+
 void Executive::DeclareFluent(const FluentSpec& spec) { runtime_->DeclareFluent(spec); }
 void Executive::AddModule(std::shared_ptr<BehaviourModule> module) {
   runtime_->AddModule(std::move(module));

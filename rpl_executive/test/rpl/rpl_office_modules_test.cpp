@@ -231,10 +231,12 @@ class Office {
     return n;
   }
 
-  Executive executive;
+  // The fakes first: the executive, destroyed before them, deactivates the modules, which cancel
+  // through them (UBSan found the call on a destroyed client).
   ScriptedNavigate navigate;
   ScriptedActiveLocalize active;
   RecordingTravel travel;
+  Executive executive;
   std::shared_ptr<NavigationModule> navigation;
   std::shared_ptr<ActiveLocalizationModule> localization;
   std::shared_ptr<PositionTrackingModule> tracking;

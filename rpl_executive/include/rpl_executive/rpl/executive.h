@@ -125,6 +125,10 @@ class Executive {
   /// Throws std::invalid_argument when ValidateParameters finds a violation.
   explicit Executive(const ExecutiveParameters& parameters = ExecutiveParameters());
   ~Executive();  // deactivates the modules still active (no cleanups run)
+  /// Deactivates the modules still active and drops the plan and the modules now, as the
+  /// destructor would: an owner whose members the modules call (its Navigate client) calls it
+  /// first in its own destructor. Nothing but destruction may follow.
+  void Shutdown();
   Executive(const Executive&) = delete;
   Executive& operator=(const Executive&) = delete;
 
