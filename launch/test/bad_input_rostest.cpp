@@ -97,35 +97,23 @@ ros::Publisher Advertise(ros::NodeHandle& nh, const std::string& topic, int subs
   return pub;
 }
 
-class BadInput : public ::testing::Test {
+class BadInput : public spott_launch::testing::StackTest {
  protected:
   static void SetUpTestSuite() {
-    spinner_ = new ros::AsyncSpinner(2);
-    spinner_->start();
-    nh_ = new ros::NodeHandle;
-    truth_ = new Truth(*nh_);
+    StackTest::SetUpTestSuite();
     watch_ = new Watch(*nh_);
   }
-  static void TearDownTestSuite() {  // before ROS's globals go: no callback meets a dead mutex
+  static void TearDownTestSuite() {
     spinner_->stop();
     delete watch_;
-    delete truth_;
-    delete nh_;
-    delete spinner_;
+    StackTest::TearDownTestSuite();
   }
   // Refusal counts rise at the next diagnostics period (1 s, simulated).
   static bool WaitRefused(const std::string& node, const std::string& cause, std::uint64_t above) {
     return WaitUntil([&] { return watch_->Refused(node, cause) > above; }, 10.0);
   }
-  static ros::AsyncSpinner* spinner_;
-  static ros::NodeHandle* nh_;
-  static Truth* truth_;
-  static Watch* watch_;
+  static inline Watch* watch_ = nullptr;
 };
-ros::AsyncSpinner* BadInput::spinner_ = nullptr;
-ros::NodeHandle* BadInput::nh_ = nullptr;
-Truth* BadInput::truth_ = nullptr;
-Watch* BadInput::watch_ = nullptr;
 
 TEST_F(BadInput, TheRobotIsLocalizedAtTheStart) {
   ASSERT_TRUE(WaitUntil([] { return truth_->seen() && watch_->EstimateNear(*truth_, 0.5); }, 60.0))

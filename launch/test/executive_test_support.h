@@ -4,6 +4,7 @@
 #pragma once
 
 #include <actionlib/client/simple_action_client.h>
+#include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <spott_msgs/BumperRing.h>
@@ -138,6 +139,28 @@ class ExecutiveEvents {
   spott_msgs::ExecutiveState last_;
   std::vector<std::pair<double, std::string>> travel_modes_;
   ros::Subscriber state_, monitors_;
+};
+
+/// A suite of tests on one running stack: a spinner, a node handle and the ground truth shared
+/// by its tests. A suite with more (watchers) calls these from its own SetUp/TearDownTestSuite.
+/// Everything goes before ROS's globals do, so that no callback meets a destroyed mutex.
+class StackTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    spinner_ = new ros::AsyncSpinner(2);
+    spinner_->start();
+    nh_ = new ros::NodeHandle;
+    truth_ = new Truth(*nh_);
+  }
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete truth_;
+    delete nh_;
+    delete spinner_;
+  }
+  static inline ros::AsyncSpinner* spinner_ = nullptr;
+  static inline ros::NodeHandle* nh_ = nullptr;
+  static inline Truth* truth_ = nullptr;
 };
 
 using MissionClient = actionlib::SimpleActionClient<spott_msgs::MissionAction>;

@@ -87,21 +87,16 @@ class Estimate {
   ros::Subscriber sub_;
 };
 
-class NodeKill : public ::testing::Test {
+class NodeKill : public spott_launch::testing::StackTest {
  protected:
   static void SetUpTestSuite() {
-    spinner_ = new ros::AsyncSpinner(2);
-    spinner_->start();
-    nh_ = new ros::NodeHandle;
-    truth_ = new Truth(*nh_);
+    StackTest::SetUpTestSuite();
     estimate_ = new Estimate(*nh_);
   }
   static void TearDownTestSuite() {
     spinner_->stop();
     delete estimate_;
-    delete truth_;
-    delete nh_;
-    delete spinner_;
+    StackTest::TearDownTestSuite();
   }
   // A leg along the west hallway; true when it SUCCEEDED within 0.3 m of the truth.
   static ::testing::AssertionResult Leg(double x, double y) {
@@ -121,15 +116,8 @@ class NodeKill : public ::testing::Test {
       return ::testing::AssertionFailure() << truth_->contacts() << " bumper contacts";
     return ::testing::AssertionSuccess();
   }
-  static ros::AsyncSpinner* spinner_;
-  static ros::NodeHandle* nh_;
-  static Truth* truth_;
-  static Estimate* estimate_;
+  static inline Estimate* estimate_ = nullptr;
 };
-ros::AsyncSpinner* NodeKill::spinner_ = nullptr;
-ros::NodeHandle* NodeKill::nh_ = nullptr;
-Truth* NodeKill::truth_ = nullptr;
-Estimate* NodeKill::estimate_ = nullptr;
 
 TEST_F(NodeKill, TheStackFinishesALegBeforeAnyKill) {
   ASSERT_TRUE(WaitUntil([] { return truth_->seen() && estimate_->ErrorTo(*truth_) < 0.5; }, 60.0));

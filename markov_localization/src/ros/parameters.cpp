@@ -73,20 +73,17 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("transform_tolerance_s", p.transform_tolerance_s);
   r.Get("start_uniform", p.start_uniform);
   r.Get("initial_pose_from_world", p.initial_pose_from_world);
-  std::string initial_pose;
-  r.Get("initial_pose", initial_pose);
-  if (!initial_pose.empty()) {
+  // "x y yaw", "" = none.
+  const auto get_pose = [&](const std::string& key, std::optional<spott_map::Pose2>& pose) {
+    std::string text;
+    r.Get(key, text);
+    if (text.empty()) return;
     std::string why;
-    p.initial_pose = spott_map::ParsePoseText(initial_pose, &why);
-    if (!p.initial_pose) v.push_back("~initial_pose: " + why);
-  }
-  std::string last_map_to_odom;
-  r.Get("last_map_to_odom", last_map_to_odom);
-  if (!last_map_to_odom.empty()) {
-    std::string why;
-    p.last_map_to_odom = spott_map::ParsePoseText(last_map_to_odom, &why);
-    if (!p.last_map_to_odom) v.push_back("~last_map_to_odom: " + why);
-  }
+    pose = spott_map::ParsePoseText(text, &why);
+    if (!pose) v.push_back("~" + key + ": " + why);
+  };
+  get_pose("initial_pose", p.initial_pose);
+  get_pose("last_map_to_odom", p.last_map_to_odom);
   r.Get("save_pose_period_s", p.save_pose_period_s, "s");
   r.Require(p.save_pose_period_s >= 0.0 && p.save_pose_period_s <= 60.0, "save_pose_period_s",
             "in [0, 60]", p.save_pose_period_s);
