@@ -152,19 +152,23 @@ void RasterizeFeature(const MapFeature& feature, double padding_m, OccupancyRast
   for (int iy = y0; iy <= y1; ++iy) {
     for (int ix = x0; ix <= x1; ++ix) {
       const double d = shape.DistanceTo(raster.CellCentre(ix, iy));
-      // Only a cell whose centre is within half a diagonal can meet the geometry.
-      if (d <= half_diagonal) {
-        const Box cell{raster.origin() + Vec2(ix * res, iy * res),
-                       raster.origin() + Vec2((ix + 1) * res, (iy + 1) * res)};
-        // Touching counts (within round-off, so that mirror-image cells of a symmetric
-        // building get the same answer).
-        if (shape.DistanceTo(cell) <= 1e-9) {
-          raster.Mark(ix, iy, Cell::kObstacle);
-          continue;
-        }
+      // Only a cell whose centre is within half a diagonal of the geometry (or of the padding's
+      // edge) can meet it: the square is no nearer than that.
+      if (d >= padding_m + half_diagonal) continue;
+      const Box cell{raster.origin() + Vec2(ix * res, iy * res),
+                     raster.origin() + Vec2((ix + 1) * res, (iy + 1) * res)};
+      const double square = d < padding_m && d > half_diagonal ? d : shape.DistanceTo(cell);
+      // Touching counts (within round-off, so that mirror-image cells of a symmetric building
+      // get the same answer).
+      if (square <= 1e-9) {
+        raster.Mark(ix, iy, Cell::kObstacle);
+      } else if (square < padding_m) {
+        // Padding when any point of the cell is nearer than the padding: a robot whose centre
+        // is anywhere in a free cell keeps it. By the centre alone a robot passing a jamb's
+        // corner could be half a diagonal (0.071 m at 0.1 m cells) nearer, which is about all
+        // the padding allows for the localization's error.
+        raster.Mark(ix, iy, Cell::kPadding);
       }
-      // Free with a clearance of exactly the padding: the robot fits.
-      if (d < padding_m) raster.Mark(ix, iy, Cell::kPadding);
     }
   }
 }

@@ -9,10 +9,11 @@ namespace {
 
 TEST(Rasterize, KnownWallGivesTheHandCountedCellsWithPadding) {
   // 0.1 m cells from (-1, -1). The wall runs along the middle of row 10 (y in [0, 0.1]) over
-  // columns 10..29. Padding 0.25 m reaches centres 0.1 and 0.2 m off the line (rows 8..12);
-  // beyond the ends it reaches 0.25 m, 0.229 m and 0.15 m in those rows.
+  // columns 10..29. A cell is padding when any point of it is nearer than 0.24 m: rows 8..12
+  // (their near edges 0.05 and 0.15 m off the line), and beyond each end two columns (near
+  // edges 0.05 and 0.15 m off the end) in every one of those rows.
   OccupancyRaster raster(Vec2(-1, -1), 40, 25, 0.1);
-  RasterizeFeature(MakeSegment("w", Segment{Vec2(0.05, 0.05), Vec2(1.95, 0.05)}, "wall"), 0.25,
+  RasterizeFeature(MakeSegment("w", Segment{Vec2(0.05, 0.05), Vec2(1.95, 0.05)}, "wall"), 0.24,
                    raster);
   EXPECT_EQ(raster.CountCells(Cell::kObstacle), 20u);
   for (int ix = 10; ix <= 29; ++ix) EXPECT_EQ(raster.at(ix, 10), Cell::kObstacle) << ix;
@@ -23,10 +24,45 @@ TEST(Rasterize, KnownWallGivesTheHandCountedCellsWithPadding) {
   EXPECT_EQ(raster.at(32, 10), Cell::kFree);
   EXPECT_EQ(raster.at(20, 12), Cell::kPadding);
   EXPECT_EQ(raster.at(20, 13), Cell::kFree);
-  EXPECT_EQ(raster.at(8, 12), Cell::kFree);  // corner: 0.2 m up and 0.2 m out is 0.28 m away
-  EXPECT_EQ(raster.at(9, 12), Cell::kPadding);
-  // Rows 10, 9, 11: 24 cells each; rows 8, 12: 22 cells. 116 in all, 20 of them obstacle.
-  EXPECT_EQ(raster.CountCells(Cell::kPadding), 96u);
+  // The corner cell 0.15 m up and 0.15 m out: its near corner is 0.21 m away (its centre 0.28 m).
+  EXPECT_EQ(raster.at(8, 12), Cell::kPadding);
+  EXPECT_EQ(raster.at(7, 12), Cell::kFree);  // 0.15 up, 0.25 out: 0.29 m
+  EXPECT_EQ(raster.at(7, 11), Cell::kFree);  // 0.05 up, 0.25 out: 0.255 m
+  EXPECT_EQ(raster.at(9, 13), Cell::kFree);  // 0.25 up
+  // Rows 8..12, columns 8..31: 120 cells, 20 of them obstacle.
+  EXPECT_EQ(raster.CountCells(Cell::kPadding), 100u);
+}
+
+// Every point of a cell left free keeps the padding from the geometry: a robot whose centre is
+// anywhere in it (not only at its centre) clears the obstacle by the localization error allowed.
+TEST(Rasterize, EveryPointOfAFreeCellKeepsThePadding) {
+  const double padding = 0.2285 + 0.075;
+  for (const double phase : {0.0, 0.03, 0.05, 0.08}) {
+    OccupancyRaster raster(Vec2(-2.0 + phase, -1.5 + phase), 40, 30, 0.1);
+    // A jamb: the end of a 0.15 m wall, and a box.
+    const MapFeature wall =
+        MakeSegment("w", Segment{Vec2(-2.0, 0.0), Vec2(-0.45, 0.0)}, "wall", 0.15);
+    MapFeature box;
+    box.type = FeatureType::kRectangle;
+    box.pose = Pose2{1.0, 0.5, 0.4};
+    box.size_x = 0.5;
+    box.size_y = 0.3;
+    RasterizeFeature(wall, padding, raster);
+    RasterizeFeature(box, padding, raster);
+    for (int iy = 0; iy < raster.height(); ++iy) {
+      for (int ix = 0; ix < raster.width(); ++ix) {
+        if (raster.at(ix, iy) != Cell::kFree) continue;
+        const Vec2 c = raster.CellCentre(ix, iy);
+        for (const double dx : {-0.05, 0.0, 0.05}) {
+          for (const double dy : {-0.05, 0.0, 0.05}) {
+            const Vec2 q = c + Vec2(dx, dy);
+            EXPECT_GE(std::min(wall.DistanceTo(q), box.DistanceTo(q)), padding - 1e-9)
+                << "cell " << ix << ", " << iy << " phase " << phase;
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST(Rasterize, ThickWallAndAreaFeatures) {
@@ -52,38 +88,46 @@ TEST(Rasterize, ThickWallAndAreaFeatures) {
   EXPECT_EQ(walls.at(10, 8), Cell::kFree);
 }
 
-// A 0.8 m door (common in homes and offices) between 0.15 m walls, as cim_office's doors are
-// built: walls are boxes with flat ends, and a cell whose centre clears the padding is free, so
-// the Nomad 200 (radius 0.2285 m) and the B21 (0.2625 m), each padded by a localization error
-// of 0.075 m, keep a free column through the opening at 0.1 m cells, wherever the lattice falls.
-TEST(Rasterize, AnEightyCentimetreDoorStaysPassableForTheNomadAndTheB21) {
-  for (const double radius : {0.2285, 0.2625}) {
+// Doors between 0.15 m walls, as the shipped worlds build them (walls are boxes with flat ends):
+// with every point of a free cell keeping the padding, a door keeps a free column of 0.1 m cells
+// wherever the lattice falls when the span left between the padded jambs is at least two cells.
+// The shipped worlds' 0.9 m doors for the Nomad 200 (radius 0.2285 m) and the B21 (0.2625 m) with
+// the stack's localization error of 0.075 m (spans 0.293 and 0.225 m); a 0.8 m door, common in
+// homes, for the Nomad with 0.05 m (0.243 m).
+TEST(Rasterize, DoorsStayPassableWhenTheSpanBetweenThePaddedJambsIsTwoCells) {
+  struct Case {
+    double door, radius, error;
+  };
+  for (const Case& k :
+       {Case{0.9, 0.2285, 0.075}, Case{0.9, 0.2625, 0.075}, Case{0.8, 0.2285, 0.05}}) {
     for (const double phase : {0.0, 0.02, 0.05, 0.07}) {
       OccupancyRaster raster(Vec2(-2.0 + phase, -1.0), 40, 20, 0.1);
-      // The wall y = 0 from x = -2 to 2, with the opening x in [-0.4, 0.4].
-      RasterizeFeature(MakeSegment("w1", Segment{Vec2(-2.0, 0.0), Vec2(-0.4, 0.0)}, "wall", 0.15),
-                       radius + 0.075, raster);
-      RasterizeFeature(MakeSegment("w2", Segment{Vec2(0.4, 0.0), Vec2(2.0, 0.0)}, "wall", 0.15),
-                       radius + 0.075, raster);
+      // The wall y = 0 from x = -2 to 2, with the opening x in [-door / 2, door / 2].
+      const double h = 0.5 * k.door;
+      RasterizeFeature(MakeSegment("w1", Segment{Vec2(-2.0, 0.0), Vec2(-h, 0.0)}, "wall", 0.15),
+                       k.radius + k.error, raster);
+      RasterizeFeature(MakeSegment("w2", Segment{Vec2(h, 0.0), Vec2(2.0, 0.0)}, "wall", 0.15),
+                       k.radius + k.error, raster);
       bool column = false;
       for (int ix = 0; ix < raster.width() && !column; ++ix) {
         bool free = true;
         for (int iy = 0; iy < raster.height(); ++iy) free &= raster.at(ix, iy) == Cell::kFree;
         column = free;
       }
-      EXPECT_TRUE(column) << "radius " << radius << ", lattice phase " << phase;
+      EXPECT_TRUE(column) << "door " << k.door << ", radius " << k.radius << ", error " << k.error
+                          << ", lattice phase " << phase;
     }
   }
 }
 
 TEST(Rasterize, WallEndsAreFlat) {
-  // A 0.15 m thick wall ending at x = -0.02: the cell centre (0.05, 0.05) beyond its end, level
-  // with it, is 0.07 m from the box and free at a padding of 0.06 m (a rounded end, reaching
-  // 0.075 m further, would leave it 0.011 m away: padding).
+  // A 0.15 m thick wall ending at x = -0.02: the cell x in [0, 0.1], y in [0, 0.1] beyond its
+  // end, level with it, is 0.02 m from the box and free at a padding of 0.015 m (a rounded end,
+  // reaching 0.075 m further, would meet it: obstacle).
   OccupancyRaster raster(Vec2(-1.0, -0.5), 20, 10, 0.1);
   const MapFeature wall =
       MakeSegment("w", Segment{Vec2(-1.0, 0.0), Vec2(-0.02, 0.0)}, "wall", 0.15);
-  RasterizeFeature(wall, 0.06, raster);
+  RasterizeFeature(wall, 0.015, raster);
   EXPECT_EQ(raster.at(10, 5), Cell::kFree);
   EXPECT_EQ(raster.at(9, 5), Cell::kObstacle);
   EXPECT_NEAR(wall.DistanceTo(Vec2(0.05, 0.05)), 0.07, 1e-12);

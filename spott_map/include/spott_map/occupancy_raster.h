@@ -60,8 +60,9 @@ class OccupancyRaster {
 };
 
 /// Draws one obstacle: kObstacle where its geometry (segments thickened by their thickness,
-/// area features by their outline) meets a cell's square, kPadding where a cell's centre lies
-/// within `padding_m` of it. Points are obstacles in the cell that holds them.
+/// area features by their outline) meets a cell's square, kPadding where any point of a cell's
+/// square lies within `padding_m` of it (a robot centred anywhere in a free cell keeps the
+/// padding). Points are obstacles in the cell that holds them.
 void RasterizeFeature(const MapFeature& feature, double padding_m, OccupancyRaster& raster);
 
 /// Distance from an axis-aligned box to a segment (0 when they meet).
