@@ -54,6 +54,13 @@ Localizer::Localizer(std::shared_ptr<const LocalizationModels> models,
     throw std::invalid_argument("Localizer: models without a sensor");
   grid_ = std::make_unique<MarkovGrid>(*models_->map, *models_->sensors[0], params.grid);
   pending_.resize(models_->sensors.size());
+  event_.assign(models_->sensors.size(), 0);
+  for (int s : params.event_sensors) {
+    if (s < 0 || s >= static_cast<int>(event_.size()))
+      throw std::invalid_argument("Localizer: event sensor " + std::to_string(s) + " of " +
+                                  std::to_string(event_.size()) + " sensors");
+    event_[s] = 1;
+  }
 }
 
 void Localizer::ReplaceModels(std::shared_ptr<const LocalizationModels> models) {
@@ -115,22 +122,43 @@ bool Localizer::GateOpen(const Pose2& odom, double now_s) const {
   return interval > 0.0 && now_s - update_time_s_ >= interval;
 }
 
-LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges_m,
-                                   const Pose2& odom, double now_s) {
+void Localizer::CheckReading(int sensor, const std::vector<double>& ranges_m,
+                             const char* caller) const {
   if (sensor < 0 || sensor >= static_cast<int>(pending_.size()))
-    throw std::invalid_argument("Localizer::OnReading: no sensor " + std::to_string(sensor));
+    throw std::invalid_argument(std::string(caller) + ": no sensor " + std::to_string(sensor));
   if (static_cast<int>(ranges_m.size()) != models_->sensors[sensor]->num_beams())
-    throw std::invalid_argument("Localizer::OnReading: " + std::to_string(ranges_m.size()) +
+    throw std::invalid_argument(std::string(caller) + ": " + std::to_string(ranges_m.size()) +
                                 " readings for sensor " + std::to_string(sensor) + " of " +
                                 std::to_string(models_->sensors[sensor]->num_beams()) + " beams");
+}
+
+LocalizerStep Localizer::OnEventReading(int sensor, const std::vector<double>& ranges_m,
+                                        const Pose2& odom, double now_s) {
+  CheckReading(sensor, ranges_m, "Localizer::OnEventReading");
+  if (!event_[sensor])
+    throw std::invalid_argument("Localizer::OnEventReading: sensor " + std::to_string(sensor) +
+                                " is gated (OnReading)");
+  Pending& p = pending_[sensor];
+  p.ranges = ranges_m;
+  p.odom = odom;
+  p.fresh = true;
+  return Update(odom, now_s, sensor);
+}
+
+LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges_m,
+                                   const Pose2& odom, double now_s) {
+  CheckReading(sensor, ranges_m, "Localizer::OnReading");
+  if (event_[sensor])
+    throw std::invalid_argument("Localizer::OnReading: sensor " + std::to_string(sensor) +
+                                " is read through OnEventReading");
   Pending& p = pending_[sensor];
   const bool twice = p.fresh && opener_ == sensor;
   p.ranges = ranges_m;
   p.odom = odom;
   p.fresh = true;
   if (!GateOpen(odom, now_s)) return LocalizerStep{};
-  bool all = true;
-  for (const auto& q : pending_) all = all && q.fresh;
+  bool all = true;  // every gated sensor's reading of this moment is here
+  for (std::size_t s = 0; s < pending_.size(); ++s) all = all && (event_[s] || pending_[s].fresh);
   if (!all && !twice) {
     if (opener_ < 0) opener_ = sensor;  // wait for the other sensors' readings of this moment
     return LocalizerStep{};
@@ -138,7 +166,7 @@ LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges
   return Update(odom, now_s);
 }
 
-LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
+LocalizerStep Localizer::Update(const Pose2& odom, double now_s, int only) {
   LocalizerStep step;
   step.updated = true;
   const int resets_before = grid_->forced_resets();
@@ -148,15 +176,22 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
   }
   std::vector<SensorReading> readings;
   for (std::size_t s = 0; s < pending_.size(); ++s) {
-    if (!pending_[s].fresh) continue;
+    const bool use = only >= 0 ? static_cast<int>(s) == only : !event_[s];
+    if (!use || !pending_[s].fresh) continue;
     readings.push_back(SensorReading{models_->sensors[s].get(), &pending_[s].ranges});
   }
   step.sensors_used = static_cast<int>(readings.size());
   const bool motion_reset = grid_->forced_resets() != resets_before;
   const std::string motion_reason = motion_reset ? grid_->lost_reason() : std::string();
-  step.stats = grid_->SensorUpdateWith(readings);
-  for (auto& p : pending_) p.fresh = false;
-  opener_ = -1;
+  // An event sensor's narrow view (a profile) does not judge whether the robot is lost.
+  step.stats = grid_->SensorUpdateWith(readings, /*detect_lost=*/only < 0);
+  if (only >= 0) {
+    pending_[only].fresh = false;  // the gated readings wait for their own update
+  } else {
+    for (std::size_t s = 0; s < pending_.size(); ++s)
+      if (!event_[s]) pending_[s].fresh = false;
+    opener_ = -1;
+  }
   force_ = false;
   has_update_odom_ = true;
   update_odom_ = odom;
@@ -169,7 +204,7 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
   }
   summary_ = Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
   const auto& c = summary_.certainty;
-  if (!step.stats.lost_detected &&
+  if (only < 0 && !step.stats.lost_detected &&
       grid_->ReportCertainty(c.certainty, params_.certainty.threshold)) {
     step.lost = true;
     step.lost_reason = grid_->lost_reason();
@@ -177,8 +212,10 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
     summary_ = Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
   }
   // The pose below the cell size from this update's readings (pose_refinement.h).
-  const Pose2 refined =
-      RefinePose(*models_->map, readings, c.estimate, grid_->angular_resolution(), params_.refine);
+  // Only with the beams the update used: the distance filter's short readings (an unmapped
+  // desk) would pull the pose towards them by up to the refinement's cell.
+  const Pose2 refined = RefinePose(*models_->map, readings, c.estimate, grid_->angular_resolution(),
+                                   params_.refine, &step.stats.beam_used);
   // The published estimate stays with the mode it followed while twins swap the maximum.
   const Pose2 estimate = sticky_.Select(summary_.modes, refined, odom, &step.switched);
   map_to_odom_ = MapToOdomOf(estimate, odom);

@@ -454,7 +454,8 @@ namespace {
 constexpr double kMinGroupProduct = 1e-30;
 }  // namespace
 
-SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>& readings) {
+SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>& readings,
+                                               bool detect_lost) {
   // Every beam of every reading: its model, row offset and the reading's range bin.
   struct Beam {
     const SensorModel* model;
@@ -620,6 +621,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   }
   // The detector's input: the surprise when asked for (NaN while it cannot be computed: the
   // detector then waits), else the predictive fit.
+  if (!detect_lost) return stats;
   lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam);
   if (lost_) {
     lost_reason_ = detector_.reason();

@@ -16,6 +16,7 @@
 #include <spott_msgs/BeliefModes.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MapUpdate.h>
+#include <spott_msgs/RangeProfile.h>
 #include <spott_msgs/RangeRing.h>
 #include <std_srvs/Empty.h>
 #include <std_srvs/SetBool.h>
@@ -120,6 +121,8 @@ class LocalizationNode {
       ring_sub_ = nh.subscribe(params.ring_topic, 5, &LocalizationNode::OnRing, this);
     if (params.laser.enabled)
       scan_sub_ = nh.subscribe(params.laser.topic, 5, &LocalizationNode::OnScan, this);
+    if (params.profile.enabled)
+      profile_sub_ = nh.subscribe(params.profile.topic, 10, &LocalizationNode::OnProfile, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &LocalizationNode::OnInitialPose, this);
     global_srv_ = nh.advertiseService("global_localization", &LocalizationNode::OnGlobal, this);
     sonar_srv_ = nh.advertiseService("enable_sonar", &LocalizationNode::OnEnableSonar, this);
@@ -349,6 +352,17 @@ class LocalizationNode {
       sensor_params_.push_back(*laser_model_);
     }
     const int nt = static_cast<int>(std::lround(2 * M_PI / params_.grid.angular_resolution_rad));
+    profile_index_ = -1;
+    if (params_.profile.enabled) {  // a beam at every heading bin from the centre
+      ml::SensorModelParameters fp = params_.profile.model;
+      fp.beam_angles_rad.clear();
+      for (int b = 0; b < nt; ++b) fp.beam_angles_rad.push_back(2 * M_PI * b / nt);
+      fp.beam_origins_m.clear();
+      fp.sensor_offset_m = 0.0;
+      fp.beam_width_rad = 0.0;
+      profile_index_ = static_cast<int>(sensor_params_.size());
+      sensor_params_.push_back(fp);
+    }
     ml::LocalizerParameters lp;
     lp.grid = params_.grid;
     lp.gate = params_.gate;
@@ -356,6 +370,7 @@ class LocalizationNode {
     lp.modes = params_.modes;
     lp.sticky = params_.sticky;
     lp.refine = params_.refine;
+    if (profile_index_ >= 0) lp.event_sensors = {profile_index_};
     try {
       const auto start = std::chrono::steady_clock::now();
       models_ = ml::LocalizationModels::Build(map_, sensor_params_, nt);
@@ -422,6 +437,7 @@ class LocalizationNode {
               ring.max_range);
       return;
     }
+    last_ring_max_range_ = ring.max_range;
     OnReading(sonar_index_, ranges_, ring.header.stamp, sonar_model_->beam_angles_rad,
               ring.max_range);
   }
@@ -447,14 +463,49 @@ class LocalizationNode {
               laser_model_->max_range_m);
   }
 
+  // A horizontal QUADRIS profile: one update at once with its samples binned by direction
+  // (ProfileParameters). The active-localization server and the wanderer are still given the
+  // last ring (they steer on it).
+  void OnProfile(const spott_msgs::RangeProfile& msg) {
+    if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
+    if (!odom_ || !localizer_ || profile_index_ < 0) return;
+    geometry_msgs::TransformStamped t;
+    try {
+      t = tf_buffer_.lookupTransform(params_.profile.base_frame, msg.header.frame_id,
+                                     msg.header.stamp, ros::Duration(0.05));
+    } catch (const tf2::TransformException&) {
+      try {  // the heads' joint states may lag the profile: their latest
+        t = tf_buffer_.lookupTransform(params_.profile.base_frame, msg.header.frame_id,
+                                       ros::Time(0));
+      } catch (const tf2::TransformException& e) {
+        ROS_WARN_THROTTLE(5, "markov_localization: no tf %s -> %s: %s",
+                          params_.profile.base_frame.c_str(), msg.header.frame_id.c_str(),
+                          e.what());
+        return;
+      }
+    }
+    std::string why;
+    profile_ranges_ =
+        conv::ProfileReadings(msg, t.transform, models_->num_headings, params_.profile.min_height_m,
+                              params_.profile.max_height_m, &why);
+    if (profile_ranges_.empty()) {
+      refusals_.Refuse(params_.profile.topic, "ranges", why);
+      return;
+    }
+    const auto& reactive = sonar_model_ ? sonar_model_->beam_angles_rad : no_beams_;
+    OnReading(profile_index_, profile_ranges_, msg.header.stamp, reactive,
+              sonar_model_ ? last_ring_max_range_ : 0.0, /*event=*/true);
+  }
+
   void OnReading(int sensor, const std::vector<double>& ranges, const ros::Time& stamp,
-                 const std::vector<double>& beam_angles, double max_range) {
+                 const std::vector<double>& beam_angles, double max_range, bool event = false) {
     PollRebuild();
     // The odometry when the reading was taken (odometry_buffer.h), not the newest.
     reading_odom_ = odometry_.At(stamp.toSec()).value_or(*odom_);
     const auto start = std::chrono::steady_clock::now();
     const ml::LocalizerStep step =
-        localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
+        event ? localizer_->OnEventReading(sensor, ranges, reading_odom_, stamp.toSec())
+              : localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
     if (step.lost)
       ROS_WARN("markov_localization: lost: %s; relocalizing", step.lost_reason.c_str());
     if (step.switched) {
@@ -473,7 +524,7 @@ class LocalizationNode {
       last_compute_s_ =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    Publish(stamp, step, beam_angles, ranges, max_range);
+    Publish(stamp, step, beam_angles, event ? ranges_ : ranges, max_range);
   }
 
   void Publish(const ros::Time& stamp, const ml::LocalizerStep& step,
@@ -560,7 +611,10 @@ class LocalizationNode {
   std::vector<int> laser_beams_;
   std::size_t laser_readings_ = 0;
   std::vector<ml::SensorModelParameters> sensor_params_;
-  int sonar_index_ = -1, laser_index_ = -1;
+  int sonar_index_ = -1, laser_index_ = -1, profile_index_ = -1;
+  std::vector<double> profile_ranges_;
+  const std::vector<double> no_beams_;
+  double last_ring_max_range_ = 0.0;
   std::shared_ptr<const ml::LocalizationModels> models_;
   std::future<std::shared_ptr<const ml::LocalizationModels>> rebuild_;
   std::unique_ptr<ml::Localizer> localizer_;
@@ -577,7 +631,8 @@ class LocalizationNode {
   double entropy_ = 0.0;  // H_P at the last belief grid (nats)
   std::vector<double> ranges_, laser_ranges_;
   ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_modes_pub_, belief_pub_;
-  ros::Subscriber odom_sub_, ring_sub_, scan_sub_, initial_sub_, map_sub_, updates_sub_;
+  ros::Subscriber odom_sub_, ring_sub_, scan_sub_, profile_sub_, initial_sub_, map_sub_,
+      updates_sub_;
   ros::ServiceServer global_srv_, sonar_srv_;
   bool sonar_on_ = true;  // enable_sonar
   ros::Time sonar_off_since_;

@@ -1,5 +1,7 @@
 #include "markov_localization/ros/conversions.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -154,6 +156,55 @@ std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::v
     ranges.push_back(std::isnan(r) ? r : echo ? r : std::numeric_limits<double>::infinity());
   }
   return ranges;
+}
+
+std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
+                                    const geometry_msgs::Transform& to_base, int bins,
+                                    double min_height_m, double max_height_m, std::string* why) {
+  const auto refuse = [why](const std::string& text) {
+    *why = text;
+    return std::vector<double>{};
+  };
+  if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return refuse("not horizontal");
+  if (bins < 4) return refuse("fewer than 4 beams");
+  if (msg.angles.size() != msg.ranges.size() || msg.points.size() != msg.ranges.size())
+    return refuse("angles, ranges and points differ in size");
+  if (!(std::isfinite(msg.max_range) && msg.max_range > 0.0f && msg.max_range < 1000.0f))
+    return refuse("max_range is not in (0, 1000) m");
+  const auto& q = to_base.rotation;
+  const auto& t = to_base.translation;
+  const Eigen::Quaterniond rq(q.w, q.x, q.y, q.z);
+  const Eigen::Vector3d origin(t.x, t.y, t.z);
+  if (!origin.allFinite() || !std::isfinite(rq.norm()) || rq.norm() < 1e-6)
+    return refuse("the head's transform is not finite");
+  const Eigen::Matrix3d r = rq.normalized().toRotationMatrix();
+  const double step = 2.0 * M_PI / bins;
+  const auto bin_of = [&](double x, double y) {
+    const int b = static_cast<int>(std::lround(std::atan2(y, x) / step));
+    return ((b % bins) + bins) % bins;
+  };
+  std::vector<double> z(bins, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < msg.ranges.size(); ++i) {
+    const double range = msg.ranges[i];
+    const double a = msg.angles[i];
+    if (!std::isfinite(a)) continue;
+    const bool ret = std::isfinite(range) && range > 0.0 && range < 0.999 * msg.max_range;
+    if (!ret) {  // no return: nothing along the sample's direction (from the head's height)
+      const Eigen::Vector3d d = r * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+      if (std::abs(d.z()) > 0.05 || origin.z() < min_height_m || origin.z() > max_height_m)
+        continue;
+      double& zb = z[bin_of(d.x(), d.y())];
+      if (std::isnan(zb)) zb = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    const auto& pt = msg.points[i];
+    const Eigen::Vector3d p = origin + r * Eigen::Vector3d(pt.x, pt.y, pt.z);
+    if (!p.allFinite() || p.z() < min_height_m || p.z() > max_height_m) continue;
+    double& zb = z[bin_of(p.x(), p.y())];
+    const double h = std::hypot(p.x(), p.y());
+    if (!(zb <= h)) zb = h;  // NaN, +infinity or farther: the nearest return wins
+  }
+  return z;
 }
 
 }  // namespace markov_localization::ros_conversions

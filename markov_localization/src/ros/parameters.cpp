@@ -65,6 +65,22 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("laser/z_short", l.model.z_short);
   r.Get("laser/z_max", l.model.z_max);
   r.Get("laser/z_rand", l.model.z_rand);
+  auto& f = p.profile;
+  f.model.max_range_m = 4.0;
+  f.model.critical_angle_rad = M_PI / 2;  // a light stripe scatters off every surface
+  r.Get("profile/enabled", f.enabled);
+  r.Get("profile/topic", f.topic);
+  r.Get("profile/base_frame", f.base_frame);
+  r.Get("profile/min_height_m", f.min_height_m, "m");
+  r.Get("profile/max_height_m", f.max_height_m, "m");
+  r.Get("profile/max_range_m", f.model.max_range_m, "m");
+  r.Get("profile/range_bin_m", f.model.range_bin_m, "m");
+  r.Get("profile/sigma_hit_m", f.model.sigma_hit_m, "m");
+  r.Get("profile/lambda_short_per_m", f.model.lambda_short_per_m, "1/m");
+  r.Get("profile/z_hit", f.model.z_hit);
+  r.Get("profile/z_short", f.model.z_short);
+  r.Get("profile/z_max", f.model.z_max);
+  r.Get("profile/z_rand", f.model.z_rand);
   r.Get("estimate/refine", p.refine.enabled);
   r.Get("estimate/refine_sigma_scale", p.refine.sigma_scale);
   r.Get("estimate/refine_max_offset_cells", p.refine.max_offset_cells);
@@ -200,6 +216,16 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   if (l.enabled && l.base_frame.empty()) v.push_back("~laser/base_frame must not be empty");
   if (l.max_beams < 2 || l.max_beams > 2000) v.push_back("~laser/max_beams must be in [2, 2000]");
   if (p.use_map_topic && p.map_topic.empty()) v.push_back("~map_topic must not be empty");
+  if (f.enabled && f.topic.empty()) v.push_back("~profile/topic must not be empty");
+  if (f.enabled && f.base_frame.empty()) v.push_back("~profile/base_frame must not be empty");
+  r.Require(std::isfinite(f.min_height_m) && std::isfinite(f.max_height_m) &&
+                f.min_height_m < f.max_height_m && f.max_height_m <= 10.0,
+            "profile/min_height_m", "below profile/max_height_m (<= 10 m)", f.min_height_m);
+  {
+    SensorModelParameters fm = f.model;
+    fm.beam_angles_rad = {0.0};
+    for (const auto& e : ValidateParameters(fm)) v.push_back("~profile/" + e);
+  }
   for (std::string e : ValidateParameters(g)) {
     if (e.rfind("update_min_a_rad", 0) == 0)
       e = "update_min_a_deg" + e.substr(16) + " (given in degrees)";

@@ -152,6 +152,52 @@ TEST(Conversions, AMapMessageKeepsItsCornerOriginResolutionAndRows) {
   EXPECT_EQ(m.at(2, 1), 100);
 }
 
+// A head 0.1 m ahead of the centre and 0.9 m up, panned 90 degrees left (its x along the base's
+// y), three samples: a return 2 m along the head's x, one on the floor (seen 1 m ahead, 0.85 m
+// below the head, so at 0.05 m), one without return 30 degrees to the head's right.
+TEST(Conversions, AProfileBecomesReadingsOfTheBeamsNearestItsSamplesDirections) {
+  spott_msgs::RangeProfile msg;
+  msg.orientation = spott_msgs::RangeProfile::HORIZONTAL;
+  msg.max_range = 4.0f;
+  const auto sample = [&](double angle, double range, double x, double y, double z) {
+    msg.angles.push_back(angle);
+    msg.ranges.push_back(range);
+    geometry_msgs::Point32 p;
+    p.x = x;
+    p.y = y;
+    p.z = z;
+    msg.points.push_back(p);
+  };
+  sample(0.0, 2.0, 2.0, 0.0, 0.0);
+  sample(0.0, 1.3, 1.0, 0.0, -0.85);
+  sample(-M_PI / 6, INFINITY, NAN, NAN, NAN);
+  geometry_msgs::Transform t;
+  t.translation.x = 0.1;
+  t.translation.z = 0.9;
+  t.rotation.z = std::sin(M_PI / 4);
+  t.rotation.w = std::cos(M_PI / 4);
+  std::string why;
+  const std::vector<double> z = conv::ProfileReadings(msg, t, 180, 0.1, 2.0, &why);
+  ASSERT_EQ(z.size(), 180u) << why;
+  // The return: at (0.1, 2.0, 0.9) in the base frame, seen from the centre at 87.1 degrees:
+  // beam 44 (88 degrees), 2.0025 m.
+  EXPECT_NEAR(z[44], std::hypot(0.1, 2.0), 1e-6);
+  // No return 30 degrees right of the head's x: 60 degrees, beam 30.
+  EXPECT_TRUE(std::isinf(z[30]));
+  // The floor sample is left out, and every other beam has no reading.
+  int readings = 0;
+  for (double r : z) readings += std::isnan(r) ? 0 : 1;
+  EXPECT_EQ(readings, 2);
+  // Not a usable profile: refused with the reason.
+  msg.orientation = spott_msgs::RangeProfile::VERTICAL;
+  EXPECT_TRUE(conv::ProfileReadings(msg, t, 180, 0.1, 2.0, &why).empty());
+  EXPECT_EQ(why, "not horizontal");
+  msg.orientation = spott_msgs::RangeProfile::HORIZONTAL;
+  msg.angles.pop_back();
+  EXPECT_TRUE(conv::ProfileReadings(msg, t, 180, 0.1, 2.0, &why).empty());
+  EXPECT_EQ(why, "angles, ranges and points differ in size");
+}
+
 TEST(Conversions, LaserBeamsAreSubsampledAsAmclDoes) {
   // 181 readings, laser_max_beams 30: step (181 - 1) / 29 = 6, beams 0, 6, ..., 180 (31).
   const std::vector<int> beams = conv::LaserBeams(181, 30);

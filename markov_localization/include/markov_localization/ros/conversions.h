@@ -14,6 +14,7 @@
 #include <sensor_msgs/LaserScan.h>
 #include <spott_msgs/BeliefModes.h>
 #include <spott_msgs/NavigateGoal.h>
+#include <spott_msgs/RangeProfile.h>
 
 #include "markov_localization/certainty.h"
 #include "markov_localization/occupancy_map.h"
@@ -58,6 +59,20 @@ std::vector<double> LaserBeamAngles(const sensor_msgs::LaserScan& scan,
 /// The readings of `beams` (m); NaN, infinite, below range_min or at/above range_max: no echo
 /// (+infinity).
 std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::vector<int>& beams);
+
+/// A horizontal range profile (QUADRIS, spott_msgs/RangeProfile) as the readings of the
+/// profiler model: one beam from the robot's centre every 2 pi / `bins` (beam b at b 2 pi / bins
+/// in the base frame). `to_base` takes the header frame to the base frame (the head's pan and
+/// tilt included). Each sample goes to the beam nearest its direction as seen from the centre,
+/// at its horizontal distance from it; a beam keeps its nearest sample. Samples whose height in
+/// the base frame is outside [min_height_m, max_height_m] are left out (the floor, what is above
+/// the walls). A sample without return (a non-finite range, or at max_range) makes its beam's
+/// reading +infinity ("no echo") unless a return fell in it. Beams no sample fell in are NaN (no
+/// reading: left out of the update). Empty when the message is not a usable horizontal profile
+/// (`why` says why).
+std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
+                                    const geometry_msgs::Transform& to_base, int bins,
+                                    double min_height_m, double max_height_m, std::string* why);
 
 /// map -> odom such that (map -> odom) * (odom -> base) = the estimate (REP-105):
 /// T = estimate * odom^-1.

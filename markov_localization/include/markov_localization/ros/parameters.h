@@ -36,6 +36,23 @@ struct LaserParameters {
   SensorModelParameters model;
 };
 
+/// A pan-tilt range profiler (the Nomad 200's QUADRIS heads, spott_msgs/RangeProfile on
+/// `topic`, about 1 Hz per head): an addition to the paper's sensors. Each horizontal profile is
+/// one update at once (Localizer::OnEventReading), as readings of a beam at every heading bin
+/// from the robot's centre (ros_conversions::ProfileReadings): a profile too slow for the gate
+/// would otherwise be applied up to a gate's interval away from where it was taken.
+struct ProfileParameters {
+  bool enabled = false;
+  std::string topic = "range_profile";
+  std::string base_frame =
+      "base_link";  ///< Profiles are taken to this frame (tf, the heads' joints).
+  /// Samples lower (the floor) or higher (above the walls) in the base frame are left out (m).
+  double min_height_m = 0.1;
+  double max_height_m = 2.0;
+  /// Model (single diffuse ray, as a laser's); max range capped by the profile's max_range.
+  SensorModelParameters model;
+};
+
 struct NodeParameters {
   /// The map (README "Maps"): map_file (map_server YAML) if set, else world_file (spott_map
   /// world, the default of the stack) if set, else the latched /map topic; use_map_topic makes
@@ -51,6 +68,7 @@ struct NodeParameters {
   double sonar_off_max_s = 20.0;
   std::string ring_topic = "sonar";
   LaserParameters laser;
+  ProfileParameters profile;
   MotionGateParameters gate;
   PoseRefinementParameters refine;
   std::string map_frame = "map";
