@@ -77,6 +77,8 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
     v.push_back(Violation("tasks/navigate_retries", ">= 0", t.navigate_retries));
   if (!(t.retry_delay_s >= 0))
     v.push_back(Violation("tasks/retry_delay_s", ">= 0", t.retry_delay_s));
+  if (!(t.clear_radius_m >= 0 && t.clear_radius_m <= 10))
+    v.push_back(Violation("tasks/clear_radius_m", "in [0, 10]", t.clear_radius_m));
   if (!(t.stop_speed_mps > 0))
     v.push_back(Violation("tasks/stop_speed_mps", "> 0", t.stop_speed_mps));
   if (!(t.stop_timeout_s > 0))
@@ -134,7 +136,7 @@ NavigationController::NavigationController(const ControllerParameters& params, C
     : params_(params),
       io_(io),
       sonar_mapper_("sonar", params.mapping, params.doors, /*sense_doors=*/true),
-      quadris_mapper_("quadris", params.mapping, params.doors, /*sense_doors=*/false),
+      quadris_mapper_("quadris", params.mapping, params.doors, /*sense_doors=*/true),
       rng_(params.seed) {}
 
 NavigationController::~NavigationController() {
@@ -644,6 +646,22 @@ void NavigationController::EstimateJumped(double now) {
   ApplyChange(std::move(change), now);
 }
 
+int NavigationController::ClearSensedNear(const Vec2& at, double radius, double now) {
+  MapChange change;
+  for (const std::string& id : added_ids_) {
+    const spott_map::MapFeature* f = db_.FindFeature(id);
+    if (f && f->DistanceTo(at) <= radius) change.removed.push_back(id);
+  }
+  const int n = static_cast<int>(change.removed.size());
+  // The evidence behind them goes too: else the next Take() would add them again at once.
+  if (n > 0) {
+    sonar_mapper_.Forget();
+    quadris_mapper_.Forget();
+  }
+  ApplyChange(std::move(change), now);
+  return n;
+}
+
 void NavigationController::ApplyChange(MapChange change, double now) {
   MapChange sent;
   for (const std::string& id : change.removed) {
@@ -776,6 +794,10 @@ void NavigationController::Infrared(const RangeRing& ring, double now) {
 void NavigationController::RangeProfile(const Vec2& origin, const std::vector<Vec2>& points,
                                         double now) {
   if (!MappingAllowed(now)) return;
+  if (!params_.doors.sonar_with_profiles && !profiles_seen_) {
+    profiles_seen_ = true;  // doors from the profiles from now on (DoorSensingParameters)
+    sonar_mapper_.SetSenseDoors(false);
+  }
   quadris_mapper_.AddPoints(origin, points, *pose_);
 }
 
@@ -879,6 +901,15 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
       dirty_ = true;
       Complete(owner, false);
     } else {
+      if (pose_ && params_.tasks.clear_radius_m > 0.0) {
+        const int cleared = ClearSensedNear(pose_->Position(), params_.tasks.clear_radius_m, now);
+        if (cleared > 0) {
+          std::ostringstream note;
+          note << "; " << cleared << " sensed features within " << params_.tasks.clear_radius_m
+               << " m taken back before the retry";
+          task_->message += note.str();
+        }
+      }
       delayed_[owner] = now + params_.tasks.retry_delay_s;  // retried when set_goal restarts
     }
   } else {

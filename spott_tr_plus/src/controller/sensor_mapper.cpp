@@ -297,8 +297,9 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
     const Vec2 d = q - from;
     const double r = d.norm();
     if (!std::isfinite(r) || r < 1e-3) continue;
-    Beam(from, std::atan2(d.y(), d.x()), r, true, p_.range_finder_max_range_m,
-         p_.range_finder_hit_score, 0.0);
+    const double angle = std::atan2(d.y(), d.x());
+    VoteDoors(from, angle, r, true, p_.range_finder_max_range_m, 0.0);
+    Beam(from, angle, r, true, p_.range_finder_max_range_m, p_.range_finder_hit_score, 0.0);
   }
 }
 

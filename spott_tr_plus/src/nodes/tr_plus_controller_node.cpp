@@ -131,6 +131,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("doors/normal_angle_rad", d.normal_angle_rad, "rad");
   r.Get("doors/votes", d.votes);
   r.Get("doors/max_votes", d.max_votes);
+  r.Get("doors/sonar_with_profiles", d.sonar_with_profiles);
   auto& x = c.reflex;
   r.Get("reflex/speed_mps", x.speed_mps, "m/s");
   r.Get("reflex/turn_rps", x.turn_rps, "rad/s");
@@ -158,6 +159,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("tasks/goal_tolerance_m", k.goal_tolerance_m, "m");
   r.Get("tasks/navigate_retries", k.navigate_retries);
   r.Get("tasks/retry_delay_s", k.retry_delay_s, "s");
+  r.Get("tasks/clear_radius_m", k.clear_radius_m, "m");
   r.Get("tasks/stop_speed_mps", k.stop_speed_mps, "m/s");
   r.Get("tasks/stop_timeout_s", k.stop_timeout_s, "s");
   r.Get("tasks/pose_timeout_s", k.pose_timeout_s, "s");

@@ -121,6 +121,11 @@ struct TaskParameters {
   double goal_tolerance_m = 0.25;  ///< Asked of Navigate (m), > 0.
   int navigate_retries = 2;        ///< Navigate failures retried before the task fails, >= 0.
   double retry_delay_s = 2.0;      ///< Wait before a retry (s), >= 0.
+  /// Before a retry, the features the controller sensed within this distance of the robot are
+  /// taken back (m), >= 0; 0: none. move_base's clearing recovery: a contact at a jamb or echoes
+  /// placed under a wrong estimate may be what cuts the robot off; what is really there the
+  /// sensors put back.
+  double clear_radius_m = 1.5;
   double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
   double stop_timeout_s = 3.0;     ///< Longest wait for the robot to stop (s), > 0.
   double pose_timeout_s = 60.0;    ///< Longest wait for a pose before interpreting (s), > 0.
@@ -233,6 +238,8 @@ class NavigationController {
               bool defer = false);
   void ApplyChange(MapChange change, double now);
   void EstimateJumped(double now);
+  /// Takes back the sensed features within `radius` of `at`; returns how many.
+  int ClearSensedNear(const Vec2& at, double radius, double now);
   bool MappingAllowed(double now) const;
   void MapChanged();
   void UpdateFiringRule();
@@ -256,6 +263,7 @@ class NavigationController {
   bool have_graph_ = false, have_features_ = false;
   std::vector<spott_map::Place> places_;
   SensorMapper sonar_mapper_, quadris_mapper_;
+  bool profiles_seen_ = false;  ///< QUADRIS profiles arrived: they sense the doors.
   KnownStructure known_;
   std::map<int, SensedBatch> batches_;
   int next_batch_ = 0;

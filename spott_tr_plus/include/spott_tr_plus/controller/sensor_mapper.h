@@ -75,6 +75,11 @@ struct DoorSensingParameters {
   double normal_angle_rad = 0.3;  ///< A no-echo beam this close to the door's normal: open (rad).
   int votes = 3;                  ///< Net votes that decide a state, >= 1.
   int max_votes = 6;              ///< Votes are clamped to [-max_votes, max_votes], >= votes.
+  /// Whether the sonar still votes once range profiles (QUADRIS) arrive. A profile's point lies
+  /// on the leaf or beyond the opening; a sonar's echo is the nearest reflector in a 30-degree
+  /// cone, and in one Fig. 18 run it sensed three doors wrong (two open ones closed, a closed
+  /// one open).
+  bool sonar_with_profiles = false;
 };
 
 std::vector<std::string> ValidateParameters(const MappingParameters& p);
@@ -101,8 +106,15 @@ class SensorMapper {
   /// Integrates a sonar (or infrared) ring read with the robot at `robot` (map frame).
   void AddRing(const RangeRing& ring, const Pose2& robot);
   /// Integrates a range finder's points (QUADRIS profile; base frame) measured from `origin`
-  /// (base frame), with the robot at `robot`.
+  /// (base frame), with the robot at `robot`. Each point votes on the doors its ray crosses when
+  /// the mapper senses doors (as a beam without cone).
   void AddPoints(const Vec2& origin, const std::vector<Vec2>& points, const Pose2& robot);
+
+  /// Whether the beams vote on door states (the controller stops the sonar's once profiles come).
+  void SetSenseDoors(bool sense) {
+    sense_doors_ = sense;
+    if (!sense) door_votes_.clear();
+  }
 
   /// Drops the evidence gathered so far (cell scores, confirmations not taken yet, door votes):
   /// it was placed with a pose that turned out wrong (the estimate jumped).
