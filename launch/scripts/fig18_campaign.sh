@@ -5,7 +5,9 @@
 # namespace when unshare is at hand (as tools/isolated.sh does) (rostest's and roslaunch's fixed
 # ports). Usage: launch/scripts/fig18_campaign.sh [N] [FIRST_SEED]    (from the repository)
 # FIG18_LOCALIZATION=truth runs the stack on the simulator's pose (no localization error), to
-# tell the controller's failures from the localization's.
+# tell the controller's failures from the localization's. FIG18_BAG=1 records each run's ground
+# truth, estimate, map updates, bumper and steering in $OUT/run-SEED.bag (rosbag; about 10 MB).
+# Do not rebuild or edit config/*.yaml while it runs: every run starts the nodes afresh.
 set -u
 N=${1:-20}
 FIRST=${2:-1}
@@ -24,10 +26,28 @@ run_one() {  # seed start_pose
   export ROS_MASTER_URI=http://127.0.0.1:11311 ROS_HOSTNAME=127.0.0.1
   export ROS_LOG_DIR="$OUT/log-$1"
   timeout 600 roslaunch -p 11311 spott_launch fig18.launch seed:="$1" start_pose:="$2" \
-    result_file:="$RESULTS" localization:="${FIG18_LOCALIZATION:-markov}" > "$OUT/run-$1.log" 2>&1
+    result_file:="$RESULTS" localization:="${FIG18_LOCALIZATION:-markov}" > "$OUT/run-$1.log" 2>&1 &
+  local launch=$!
+  local bag=""
+  if [[ -n "${FIG18_BAG:-}" ]]; then  # what the run's diagnosis needs, without tf
+    sleep 3
+    rosbag record -q -O "$OUT/run-$1.bag" /sim/ground_truth /amcl_pose /localization_status \
+      /belief_modes /map_updates /bumper /harmonic_planner/steering /harmonic_planner/status \
+      /tr_plus_controller/state /global_planner/projected_goal /cmd_vel __name:=fig18_bag \
+      > /dev/null 2>&1 &
+    bag=$!
+  fi
+  wait "$launch"
+  if [[ -n "$bag" ]]; then
+    kill -INT "$bag" 2> /dev/null
+    wait "$bag" 2> /dev/null
+    [[ -f "$OUT/run-$1.bag.active" ]] && rosbag reindex "$OUT/run-$1.bag.active" > /dev/null 2>&1 &&
+      mv "$OUT/run-$1.bag.active" "$OUT/run-$1.bag"
+  fi
+  return 0
 }
 export -f run_one
-export OUT RESULTS FIG18_LOCALIZATION
+export OUT RESULTS FIG18_LOCALIZATION FIG18_BAG
 for ((seed = FIRST; seed < FIRST + N; ++seed)); do
   start=$("$ROOT/.ws/devel/lib/spott_launch/fig18_run" --case "$seed" "$WORLD") || {
     echo "seed $seed: no case"; continue; }

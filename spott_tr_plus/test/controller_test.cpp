@@ -475,6 +475,31 @@ TEST(SensorMapper, AProfilesPointsOnADoorsLeafSenseItClosedAndPointsBeyondItOpen
   EXPECT_TRUE(m.door_votes().empty());
 }
 
+TEST(SensorMapper, AProfileTakenFromAWrongPoseMapsNothing) {
+  spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  SensorMapper m("quadris", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  // In hall_w facing east, looking at the north wall (face y = 9.425) from 1.0 m: ten points
+  // along it. Believed 0.35 m south of where it is, every point lands 0.35 m inside the hallway.
+  std::vector<Vec2> wall;
+  for (int k = 0; k < 10; ++k) wall.push_back(Vec2(0.5 + 0.1 * k, 1.175));
+  const Pose2 wrong{6.0, 8.25 - 0.35, 0.0};
+  for (int k = 0; k < 6; ++k) m.AddPoints(Vec2(0, 0), wall, wrong);
+  EXPECT_EQ(m.profiles_refused(), 6);
+  EXPECT_EQ(m.pending(), 0u);
+  EXPECT_TRUE(m.Take(db).features.empty());
+  // From the right pose the same points lie on the wall: nothing new, nothing refused.
+  const Pose2 right{6.0, 8.25, 0.0};
+  m.AddPoints(Vec2(0, 0), wall, right);
+  EXPECT_EQ(m.profiles_refused(), 6);
+  // An object in the middle of the hallway (1 m from any wall) is mapped from a right pose.
+  std::vector<Vec2> box;
+  for (int k = 0; k < 5; ++k) box.push_back(Vec2(1.5, -0.2 + 0.1 * k));
+  for (int k = 0; k < 3; ++k) m.AddPoints(Vec2(0, 0), box, right);
+  EXPECT_EQ(m.profiles_refused(), 6);
+  EXPECT_FALSE(m.Take(db).features.empty());
+}
+
 TEST(FuseIntoSegments, CollinearCellsMakeOneSegmentAndACornerTwo) {
   std::vector<Vec2> row;
   for (int i = 0; i < 5; ++i) row.emplace_back(0.1 * i, 0.0);

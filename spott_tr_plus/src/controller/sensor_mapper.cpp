@@ -14,11 +14,12 @@ namespace spott_tr_plus::controller {
 namespace {
 
 enum Flag : std::uint8_t {
-  kKnown = 1,      // within known_tolerance_m of a map feature or a closed door
-  kBlocked = 2,    // a map obstacle meets the cell
-  kDoor = 4,       // in a door opening's zone
-  kOutside = 8,    // outside every room
-  kConfirmed = 16  // confirmed (sent to Take once)
+  kKnown = 1,       // within known_tolerance_m of a map feature or a closed door
+  kBlocked = 2,     // a map obstacle meets the cell
+  kDoor = 4,        // in a door opening's zone
+  kOutside = 8,     // outside every room
+  kConfirmed = 16,  // confirmed (sent to Take once)
+  kNear = 32        // within near_miss_m of a map feature (kKnown's band and beyond it)
 };
 
 std::string Violation(const std::string& name, const std::string& rule, double value) {
@@ -50,6 +51,10 @@ std::vector<std::string> ValidateParameters(const MappingParameters& p) {
   if (p.max_score < p.confirm_score || p.max_score > 127)
     v.push_back(Violation("max_score", "in [confirm_score, 127]", p.max_score));
   non_negative("known_tolerance_m", p.known_tolerance_m);
+  if (!(std::isfinite(p.near_miss_m) && p.near_miss_m >= 0 && p.near_miss_m <= 5))
+    v.push_back(Violation("near_miss_m", "in [0, 5]", p.near_miss_m));
+  if (p.near_miss_points < 1)
+    v.push_back(Violation("near_miss_points", ">= 1", p.near_miss_points));
   positive("door_zone_m", p.door_zone_m);
   positive("segment_residual_m", p.segment_residual_m);
   positive("cluster_gap_m", p.cluster_gap_m);
@@ -136,13 +141,17 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db) {
   // blocked (an obstacle meets the cell).
   spott_map::OccupancyRaster known(origin_, width_, height_, p_.cell_m);
   spott_map::OccupancyRaster blocked(origin_, width_, height_, p_.cell_m);
+  spott_map::OccupancyRaster near(origin_, width_, height_, p_.cell_m);
   spott_map::RasterizeDatabase(db, p_.known_tolerance_m, 0.05, known);
   spott_map::RasterizeDatabase(db, 0.0, 0.05, blocked);
+  if (p_.near_miss_m > p_.known_tolerance_m)
+    spott_map::RasterizeDatabase(db, p_.near_miss_m, 0.05, near);
   for (int iy = 0; iy < height_; ++iy) {
     for (int ix = 0; ix < width_; ++ix) {
       std::uint8_t& f = flags_[Index(ix, iy)];
       f &= static_cast<std::uint8_t>(kConfirmed | kDoor | kOutside);
       if (known.at(ix, iy) != spott_map::Cell::kFree) f |= kKnown;
+      if (near.at(ix, iy) != spott_map::Cell::kFree) f |= kNear;
       if (blocked.at(ix, iy) == spott_map::Cell::kObstacle) f |= kBlocked;
     }
   }
@@ -292,6 +301,26 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
     return Vec2(robot.x + c * b.x() - s * b.y(), robot.y + s * b.x() + c * b.y());
   };
   const Vec2 from = to_map(origin);
+  // A profile whose points near the map's features mostly miss them (0.25-0.6 m off) was taken
+  // from a wrong pose: mapped, every wall it saw would come back as a new one beside it, and a
+  // hallway's walls so doubled cut it. Such a profile maps nothing and votes on no door.
+  if (p_.near_miss_m > p_.known_tolerance_m) {
+    int on = 0, off = 0;
+    for (const Vec2& p : points) {
+      int ix, iy;
+      if (!CellOf(to_map(p), &ix, &iy)) continue;
+      const std::uint8_t f = flags_[Index(ix, iy)];
+      if (f & kKnown) {
+        ++on;
+      } else if (f & kNear) {
+        ++off;
+      }
+    }
+    if (off >= p_.near_miss_points && off > on) {
+      ++profiles_refused_;
+      return;
+    }
+  }
   for (const Vec2& p : points) {
     const Vec2 q = to_map(p);
     const Vec2 d = q - from;

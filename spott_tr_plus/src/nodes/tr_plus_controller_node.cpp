@@ -119,6 +119,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("mapping/confirm_score", m.confirm_score);
   r.Get("mapping/max_score", m.max_score);
   r.Get("mapping/known_tolerance_m", m.known_tolerance_m, "m");
+  r.Get("mapping/near_miss_m", m.near_miss_m, "m");
+  r.Get("mapping/near_miss_points", m.near_miss_points);
   r.Get("mapping/door_zone_m", m.door_zone_m, "m");
   r.Get("mapping/segment_residual_m", m.segment_residual_m, "m");
   r.Get("mapping/cluster_gap_m", m.cluster_gap_m, "m");

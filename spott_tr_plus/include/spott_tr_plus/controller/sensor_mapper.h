@@ -50,11 +50,16 @@ struct MappingParameters {
   double sonar_min_margin_m = 0.03;  ///< Echoes this close to the minimum range are clamped (m).
   double range_finder_max_range_m = 3.5;  ///< QUADRIS points farther away are not mapped (m).
   int sonar_hit_score = 1;                ///< Gained by an echo's cell, >= 1.
-  int range_finder_hit_score = 2;    ///< Gained by a QUADRIS point's cell (a laser line), >= 1.
-  int miss_score = 1;                ///< Lost by each cell a beam crossed, >= 0.
-  int confirm_score = 4;             ///< A cell this sure is an obstacle, >= 1.
-  int max_score = 8;                 ///< Scores are clamped to [-max_score, max_score].
-  double known_tolerance_m = 0.25;   ///< Echoes this close to a map feature are that feature (m).
+  int range_finder_hit_score = 2;   ///< Gained by a QUADRIS point's cell (a laser line), >= 1.
+  int miss_score = 1;               ///< Lost by each cell a beam crossed, >= 0.
+  int confirm_score = 4;            ///< A cell this sure is an obstacle, >= 1.
+  int max_score = 8;                ///< Scores are clamped to [-max_score, max_score].
+  double known_tolerance_m = 0.25;  ///< Echoes this close to a map feature are that feature (m).
+  /// A range finder's profile is refused when more of its points lie between known_tolerance_m
+  /// and this (m) from the map's features than within known_tolerance_m, and at least
+  /// near_miss_points do: the pose it was taken from is off. <= known_tolerance_m: no check.
+  double near_miss_m = 0.6;
+  int near_miss_points = 3;
   double door_zone_m = 0.3;          ///< Half depth of a door opening's zone (m), > 0.
   double segment_residual_m = 0.07;  ///< Fusion: cells this close to an axis form a segment (m).
   double cluster_gap_m = 0.15;       ///< Confirmed cells this close form one cluster (m), > 0.
@@ -124,6 +129,8 @@ class SensorMapper {
   /// door states sensed that differ from `db`'s.
   SensedBatch Take(const spott_map::MapDatabase& db);
 
+  /// Range-finder profiles refused as taken from a wrong pose (MappingParameters::near_miss_m).
+  int profiles_refused() const { return profiles_refused_; }
   /// Confirmed cells waiting for Take (for tests and the live state).
   std::size_t pending() const { return pending_.size(); }
   /// Net door votes (> 0 closed, < 0 open) by door id.
@@ -160,6 +167,7 @@ class SensorMapper {
   std::vector<std::pair<int, int>> pending_;
   std::vector<DoorZone> doors_;
   std::map<std::string, int> door_votes_;
+  int profiles_refused_ = 0;
 };
 
 /// Fuses cell centres into line segments (recursive split at the principal axis) and points;
