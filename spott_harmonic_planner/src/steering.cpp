@@ -36,6 +36,8 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
   Check(p.goal_slowdown_m > 0.0, "goal_slowdown_m", p.goal_slowdown_m, "> 0 m", v);
   Check(p.escape_radius_m >= 0.0 && p.escape_radius_m <= 2.0, "escape_radius_m", p.escape_radius_m,
         "in [0, 2] m", v);
+  Check(p.escape_speed_fraction > 0.0 && p.escape_speed_fraction <= 1.0, "escape_speed_fraction",
+        p.escape_speed_fraction, "in (0, 1]", v);
   return v;
 }
 
@@ -105,8 +107,8 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
       const double error = WrapAngle(cmd.heading - pose.yaw);
       cmd.angular =
           std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);
-      cmd.linear =
-          0.1 * params.slowly_fraction * params.max_linear_mps * std::max(0.0, std::cos(error));
+      cmd.linear = params.escape_speed_fraction * params.slowly_fraction * params.max_linear_mps *
+                   std::max(0.0, std::cos(error));
       return cmd;
     } else {
       cmd.reason = "the goal cannot be reached from the robot's position";

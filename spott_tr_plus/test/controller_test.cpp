@@ -232,6 +232,35 @@ TEST_F(Controller, BeforeARetryTheSensedFeaturesNearTheRobotAreTakenBack) {
   EXPECT_EQ(io_.navigates.size(), 2u);
 }
 
+TEST_F(Controller, ARetryThatCannotFitTheGoalTakesBackEverySensedFeatureFirst) {
+  // Before d_103 (x 13.55-14.45, office_103's only door), facing it, the task is given.
+  At(14.0, 7.9, -M_PI / 2, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(office_103)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  // A contact ahead (14, 7.67), 0.6 m from the jambs: a new obstacle, which padded shuts the
+  // door. 12 s later (older than what an estimate jump retracts) the robot is 4 m west.
+  c_->Bumper({0.0}, 0.3);
+  c_->Bumper({}, 0.4);
+  double t = Run(0.4, 12.5, "reflex");
+  ASSERT_TRUE(Has(c_->added_features(), "contact_1"));
+  At(10.0, 8.25, 0.0, t);
+  t = Run(t, t + 4.0, "none");
+  ASSERT_TRUE(Has(c_->added_features(), "contact_1"));
+  // Navigate fails; the contact lies beyond tasks/clear_radius_m (1.5 m) of the robot. The
+  // retry cannot fit the goal in the free space: every sensed feature is taken back, the goal
+  // fits again and the robot drives on.
+  c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kUnreachable,
+                   "the goal cannot be reached from the robot's position", t);
+  Run(t, t + params_.tasks.retry_delay_s + 0.5, "planner");
+  EXPECT_TRUE(io_.results.empty()) << io_.results[0].message;
+  EXPECT_EQ(io_.navigates.size(), 2u);
+  EXPECT_FALSE(c_->map().FindFeature("contact_1"));
+  bool sent = false;
+  for (const MapChange& u : io_.updates)
+    sent = sent || std::find(u.removed.begin(), u.removed.end(), "contact_1") != u.removed.end();
+  EXPECT_TRUE(sent) << "the other copies of the map are told";
+}
+
 TEST_F(Controller, AContactAtADoorsJambWithTheEstimateOffIsNotANewObstacle) {
   // The robot touches the west jamb of d_201 (the wall y in [9.425, 9.575] ends at x = 3.55)
   // behind it on the left; the estimate (3.88, 9.34) is 0.1 m off in x and 0.05 m in y and the
@@ -454,7 +483,10 @@ TEST(SensorMapper, AProfilesPointsOnADoorsLeafSenseItClosedAndPointsBeyondItOpen
   // Facing north under d_201 (centre (4, 9.5), 0.9 m wide), the head at the robot's centre:
   // the opening is 0.75 m ahead. Three profiles with a point on it (the leaf): closed.
   const Pose2 robot{4.0, 8.75, M_PI / 2};
-  for (int k = 0; k < 2; ++k) m.AddPoints(Vec2(0, 0), {Vec2(0.75, 0.0)}, robot);
+  // A profile's samples vote once per door: five on the leaf are one vote.
+  const std::vector<Vec2> leaf{Vec2(0.75, -0.1), Vec2(0.75, -0.05), Vec2(0.75, 0.0),
+                               Vec2(0.75, 0.05), Vec2(0.75, 0.1)};
+  for (int k = 0; k < 2; ++k) m.AddPoints(Vec2(0, 0), leaf, robot);
   EXPECT_TRUE(m.Take(db).doors.empty()) << "2 votes are below doors/votes 3";
   m.AddPoints(Vec2(0, 0), {Vec2(0.75, 0.0)}, robot);
   SensedBatch b = m.Take(db);

@@ -32,6 +32,9 @@ struct SteeringParameters {
   /// jamb) heads for the free cell closest to the goal within this distance (m), >= 0; 0: it
   /// stops. Keep it below the padding's width: no free cell beyond a wall is that near.
   double escape_radius_m = 0.4;
+  /// Escaping, the speed as a share of SLOWLY's, (0, 1]. At 0.1 (1.5 cm/s for the Nomad 200)
+  /// a robot whose estimate lay a few cm in a door's padding crawled through it for 50 s.
+  double escape_speed_fraction = 0.5;
 };
 
 std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p);

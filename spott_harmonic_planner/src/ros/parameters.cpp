@@ -67,6 +67,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("steering/max_bias_deviation_rad", s.max_bias_deviation_rad, "rad");
   r.Get("steering/slow_clearance_m", s.slow_clearance_m, "m");
   r.Get("steering/escape_radius_m", s.escape_radius_m, "m");
+  r.Get("steering/escape_speed_fraction", s.escape_speed_fraction);
   r.Get("steering/goal_slowdown_m", s.goal_slowdown_m, "m");
 
   r.Require(p.heading_tolerance_rad > 0.0 && p.heading_tolerance_rad <= M_PI,

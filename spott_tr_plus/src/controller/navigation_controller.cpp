@@ -409,7 +409,19 @@ void NavigationController::Bind(Registry& r) {
         }
         if (t->failures > 0) {  // a retry: the map may have changed, fit the goal again
           std::string why;
-          if (!Interpret(*t, c.now, &why)) {
+          bool ok = Interpret(*t, c.now, &why);
+          // move_base's aggressive reset: what the controller sensed anywhere (a phantom point
+          // before a door 2 m away shut it in one Fig. 18 run) is taken back before the task
+          // gives up; what is really there is sensed again.
+          if (!ok && pose_ && params_.tasks.clear_radius_m > 0.0) {
+            const int cleared =
+                ClearSensedNear(pose_->Position(), std::numeric_limits<double>::infinity(), c.now);
+            if (cleared > 0) {
+              t->message += "; all " + std::to_string(cleared) + " sensed features taken back";
+              ok = Interpret(*t, c.now, &why);
+            }
+          }
+          if (!ok) {
             t->phase = Task::Phase::kFailed;
             t->message = "the goal cannot be reached any more: " + why;
             dirty_ = true;

@@ -229,7 +229,8 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
 }
 
 void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool echo,
-                             double max_range, double half_cone) {
+                             double max_range, double half_cone,
+                             std::map<std::string, int>* ballot) {
   if (!sense_doors_ || !have_map_) return;
   const Vec2 dir(std::cos(angle), std::sin(angle));
   for (const DoorZone& z : doors_) {
@@ -271,6 +272,10 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
       vote = -1;  // through the opening (a leaf this square on would have echoed)
     }
     if (vote == 0) continue;
+    if (ballot) {  // counted once per reading by the caller
+      (*ballot)[z.id] += vote;
+      continue;
+    }
     int& v = door_votes_[z.id];
     v = std::clamp(v + vote, -d_.max_votes, d_.max_votes);
   }
@@ -321,14 +326,22 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
       return;
     }
   }
+  // A profile's many samples may cross one opening: it is one vote per door (its samples'
+  // majority), as a sonar transducer's reading is; else a single profile decided a door.
+  std::map<std::string, int> ballot;
   for (const Vec2& p : points) {
     const Vec2 q = to_map(p);
     const Vec2 d = q - from;
     const double r = d.norm();
     if (!std::isfinite(r) || r < 1e-3) continue;
     const double angle = std::atan2(d.y(), d.x());
-    VoteDoors(from, angle, r, true, p_.range_finder_max_range_m, 0.0);
+    VoteDoors(from, angle, r, true, p_.range_finder_max_range_m, 0.0, &ballot);
     Beam(from, angle, r, true, p_.range_finder_max_range_m, p_.range_finder_hit_score, 0.0);
+  }
+  for (const auto& [id, sum] : ballot) {
+    if (sum == 0) continue;
+    int& v = door_votes_[id];
+    v = std::clamp(v + (sum > 0 ? 1 : -1), -d_.max_votes, d_.max_votes);
   }
 }
 

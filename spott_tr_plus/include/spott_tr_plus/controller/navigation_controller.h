@@ -124,7 +124,8 @@ struct TaskParameters {
   /// Before a retry, the features the controller sensed within this distance of the robot are
   /// taken back (m), >= 0; 0: none. move_base's clearing recovery: a contact at a jamb or echoes
   /// placed under a wrong estimate may be what cuts the robot off; what is really there the
-  /// sensors put back.
+  /// sensors put back. When the goal then still cannot be fitted in the free space, every
+  /// sensed feature is taken back (move_base's aggressive reset) before the task fails.
   double clear_radius_m = 1.5;
   double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
   double stop_timeout_s = 3.0;     ///< Longest wait for the robot to stop (s), > 0.

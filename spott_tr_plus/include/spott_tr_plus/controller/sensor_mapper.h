@@ -147,8 +147,10 @@ class SensorMapper {
             double half_cone);
   /// Whether a known obstacle meets the arc at `range` (+- half a cell) across the cone.
   bool ArcMeetsKnown(const Vec2& from, double angle, double range, double half_cone) const;
+  /// `ballot`: the votes are added there (one reading's, counted once by the caller), else to
+  /// the doors' votes at once.
   void VoteDoors(const Vec2& from, double angle, double range, bool echo, double max_range,
-                 double half_cone);
+                 double half_cone, std::map<std::string, int>* ballot = nullptr);
   /// The grid cell holding `p`; false when it lies outside the grid.
   bool CellOf(const Vec2& p, int* ix, int* iy) const;
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
