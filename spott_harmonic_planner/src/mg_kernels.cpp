@@ -445,19 +445,20 @@ inline double SumOf(const double* v) {
   return s;
 }
 
-// |r| / u, infinite where u <= 0 and r != 0 (infinitely wrong relative to the cell's value);
-// branch-free selects, so the loops around it vectorize.
-inline double Relative(double a, double u) {
+// |r| / max(u, floor), infinite where that is <= 0 and r != 0 (infinitely wrong relative to
+// the cell's value); branch-free selects, so the loops around it vectorize.
+inline double Relative(double a, double u, double floor) {
   constexpr double kInf = __builtin_inf();
-  const double safe = u > 0.0 ? u : 1.0;
+  const double w = u > floor ? u : floor;
+  const double safe = w > 0.0 ? w : 1.0;
   const double ratio = a / safe;
   const double big = a > 0.0 ? kInf : 0.0;
-  return u > 0.0 ? ratio : big;
+  return w > 0.0 ? ratio : big;
 }
 
 template <bool kNine>
 inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const Run* runs,
-                           std::size_t count) {
+                           std::size_t count, double floor) {
   double wa[kLanes] = {}, wr[kLanes] = {};
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
@@ -472,7 +473,7 @@ inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const 
       rr[k] = v;
       rf[k] = static_cast<float>(v);
       const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k]);
+      const double rel = Relative(a, row[k], floor);
       wa[j] = a > wa[j] ? a : wa[j];
       wr[j] = rel > wr[j] ? rel : wr[j];
     });
@@ -481,7 +482,8 @@ inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const 
 }
 
 template <bool kNine>
-inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_t count) {
+inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_t count,
+                            double floor) {
   double wa[kLanes] = {}, wr[kLanes] = {};
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
@@ -492,12 +494,37 @@ inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_
     ForLanes(run.x1 - run.x0, [&](int k, int j) {
       const double v = Mean<kNine>(row, up, down, k) - row[k];
       const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k]);
+      const double rel = Relative(a, row[k], floor);
       wa[j] = a > wa[j] ? a : wa[j];
       wr[j] = rel > wr[j] ? rel : wr[j];
     });
   }
   return {MaxOf(wa), MaxOf(wr)};
+}
+
+inline std::size_t AscentDeficitT(const double* u, int nx, const Run* runs, std::size_t count,
+                                  double floor) {
+  std::size_t deficit = 0;
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const double* __restrict row = u + base;
+    const double* __restrict up = row + nx;
+    const double* __restrict down = row - nx;
+    const int len = run.x1 - run.x0;
+    std::uint32_t bad = 0;
+    for (int k = 0; k < len; ++k) {
+      const double a = row[k - 1] > row[k + 1] ? row[k - 1] : row[k + 1];
+      const double b = down[k] > up[k] ? down[k] : up[k];
+      const double best = a > b ? a : b;
+      const double v = row[k];
+      const bool counted = floor <= 0.0 || v >= floor;  // below the focus: not needed
+      const bool stuck = !(best > v) || !(v > 0.0);
+      bad += (counted && stuck) ? 1u : 0u;
+    }
+    deficit += bad;
+  }
+  return deficit;
 }
 
 template <bool kNine>
@@ -544,7 +571,7 @@ inline double DirectionT(const float* z, double* d, double* q, double beta, int 
 }
 
 inline Norms UpdateT(double* u, const double* d, double* r, const double* q, float* rs,
-                     double alpha, int nx, const Run* runs, std::size_t count) {
+                     double alpha, int nx, const Run* runs, std::size_t count, double floor) {
   double wa[kLanes] = {}, wr[kLanes] = {};
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
@@ -561,7 +588,7 @@ inline Norms UpdateT(double* u, const double* d, double* r, const double* q, flo
       rr[k] = rn;
       rf[k] = static_cast<float>(rn);
       const double a = rn < 0 ? -rn : rn;
-      const double rel = Relative(a, un);
+      const double rel = Relative(a, un, floor);
       wa[j] = a > wa[j] ? a : wa[j];
       wr[j] = rel > wr[j] ? rel : wr[j];
     });
@@ -590,15 +617,20 @@ inline void DotsT(const double* r, const float* z, const float* z_old, int nx, c
 }  // namespace
 
 SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
-                                std::size_t count, bool nine) {
-  return nine ? TrueResidualT<true>(u, r, rs, nx, runs, count)
-              : TrueResidualT<false>(u, r, rs, nx, runs, count);
+                                std::size_t count, bool nine, double floor) {
+  return nine ? TrueResidualT<true>(u, r, rs, nx, runs, count, floor)
+              : TrueResidualT<false>(u, r, rs, nx, runs, count, floor);
 }
 
 SPOTT_CLONES Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count,
-                                 bool nine) {
-  return nine ? ResidualNormsT<true>(u, nx, runs, count)
-              : ResidualNormsT<false>(u, nx, runs, count);
+                                 bool nine, double floor) {
+  return nine ? ResidualNormsT<true>(u, nx, runs, count, floor)
+              : ResidualNormsT<false>(u, nx, runs, count, floor);
+}
+
+SPOTT_CLONES std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t count,
+                                       double floor) {
+  return AscentDeficitT(u, nx, runs, count, floor);
 }
 
 SPOTT_CLONES void Regular(const std::uint8_t* active, std::uint8_t* regular, int nx,
@@ -614,8 +646,8 @@ SPOTT_CLONES double Direction(const float* z, double* d, double* q, double beta,
 }
 
 SPOTT_CLONES Norms Update(double* u, const double* d, double* r, const double* q, float* rs,
-                          double alpha, int nx, const Run* runs, std::size_t count) {
-  return UpdateT(u, d, r, q, rs, alpha, nx, runs, count);
+                          double alpha, int nx, const Run* runs, std::size_t count, double floor) {
+  return UpdateT(u, d, r, q, rs, alpha, nx, runs, count, floor);
 }
 
 SPOTT_CLONES void Dots(const double* r, const float* z, const float* z_old, int nx, const Run* runs,

@@ -94,6 +94,7 @@ class MultigridSolver final : public IterativeSolver {
   }
 
   void Restart() override { cg_started_ = false; }
+  void SetRelativeFloor(double floor) override { floor_ = floor; }
 
   SolverKind kind() const override { return options_.kind; }
   Stencil stencil() const override { return options_.stencil; }
@@ -157,7 +158,8 @@ class MultigridSolver final : public IterativeSolver {
     const auto& rs = runs();
     const bool nine = options_.stencil == Stencil::kNinePoint;
     if (!cg_started_) {
-      norms_ = kernels::TrueResidual(u, r_.data(), r32_.data(), nx_, rs.data(), rs.size(), nine);
+      norms_ =
+          kernels::TrueResidual(u, r_.data(), r32_.data(), nx_, rs.data(), rs.size(), nine, floor_);
       single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
       double rz_old = 0.0;
       kernels::Dots(r_.data(), z32_.data(), z32_.data(), nx_, rs.data(), rs.size(), &rho_, &rz_old);
@@ -168,7 +170,7 @@ class MultigridSolver final : public IterativeSolver {
     if (!(rho_ > 0.0) || !(dq_ > 0.0)) return;  // solved to the last bit
     const double alpha = rho_ / dq_;
     norms_ = kernels::Update(u, d_.data(), r_.data(), q_.data(), r32_.data(), alpha, nx_, rs.data(),
-                             rs.size());
+                             rs.size(), floor_);
     std::swap(z32_, z32_old_);
     single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
     double rz = 0.0, rz_old = 0.0;
@@ -197,6 +199,7 @@ class MultigridSolver final : public IterativeSolver {
   double dq_ = 0.0;
   bool cg_started_ = false;
   double rho_ = 0.0;
+  double floor_ = 0.0;
   // The preconditioner's cycle: V(1,1), and V(1,1) on each level of the full-multigrid start
   // (V(2,2) halves the iterations but costs as much in the end: measured in bench/).
   static constexpr int fmg_pre_ = 1, fmg_post_ = 1, v_pre_ = 1, v_post_ = 1;

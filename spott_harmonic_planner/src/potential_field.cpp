@@ -41,6 +41,11 @@ std::vector<std::string> ValidateFieldOptions(const FieldOptions& o) {
     s << "tolerance must be in (0, 1) (got " << o.tolerance << ")";
     v.push_back(s.str());
   }
+  if (!(o.start_fraction >= 0.0 && o.start_fraction <= 1.0)) {
+    std::ostringstream s;
+    s << "start_fraction must be in [0, 1] (got " << o.start_fraction << ")";
+    v.push_back(s.str());
+  }
   if (!(o.heuristic_decay_per_cell > 0.0 && o.heuristic_decay_per_cell <= 10.0)) {
     std::ostringstream s;
     s << "heuristic_decay_per_cell must be in (0, 10] (got " << o.heuristic_decay_per_cell << ")";
@@ -73,6 +78,7 @@ void PotentialField::SetOccupancy(const spott_map::OccupancyRaster& raster) {
   const bool same_size =
       raster.width() == width_ && raster.height() == height_ && raster.resolution() == resolution_;
   const Vec2 old_origin = origin_;
+  if (!same_geometry) start_ = kNoCell;  // its cell index means another place now
   width_ = raster.width();
   height_ = raster.height();
   resolution_ = raster.resolution();
@@ -301,6 +307,42 @@ bool PotentialField::SetGoalSegment(const spott_map::Segment& s, double half_wid
   return true;
 }
 
+bool PotentialField::SetStart(const Vec2& p) {
+  const auto c = CellOf(p);
+  start_ = c && !blocked_[Index(c->first, c->second)] ? Index(c->first, c->second) : kNoCell;
+  // Converged for a start with a higher p is converged for this one only if its focus is not
+  // wider (a lower floor asks more).
+  if (report_.converged && Floor() < converged_floor_) report_.converged = false;
+  return start_ != kNoCell;
+}
+
+void PotentialField::ClearStart() {
+  start_ = kNoCell;
+  if (report_.converged && converged_floor_ > 0.0) report_.converged = false;
+}
+
+double PotentialField::Floor() const {
+  if (start_ == kNoCell || extended_) return 0.0;
+  const FieldCell k = kind_[start_];
+  if (k != FieldCell::kFree && k != FieldCell::kGoal) return 0.0;
+  return std::max(0.0, options_.start_fraction * p_[start_]);
+}
+
+void PotentialField::Judge(double residual) {
+  report_.residual = residual;
+  report_.converged = residual < options_.tolerance;
+  if (report_.converged && !extended_) {
+    // The residual says nothing about the order of neighbouring values where they are almost
+    // equal: check that descent cannot stop on the way (one pass over the unknowns).
+    const double floor = Floor();
+    report_.converged =
+        internal::kernels::AscentDeficit(p_.data(), width_,
+                                         reinterpret_cast<const internal::Run*>(free_runs_.data()),
+                                         free_runs_.size(), floor) == 0;
+    converged_floor_ = floor;
+  }
+}
+
 void PotentialField::EnsureSetup() {
   if (solver_ready_) return;
   // The default solver solves thin regions (corridors) exactly: relative accuracy down to any
@@ -345,16 +387,14 @@ void PotentialField::ColdStart() {
       DirectSolve();
       report_ = IterationReport{};
       report_.sweeps = 1;  // the exact solve counts as one iteration
-      report_.residual = Residual();
-      report_.converged = report_.residual < options_.tolerance;
+      Judge(Residual());
       return;
     }
     if (solver_->InitialGuess(p_.data())) {
       // Negative values are left to the iteration (clamping would restart conjugate gradients).
       solver_->Restart();
       report_ = IterationReport{};
-      report_.residual = Residual();
-      report_.converged = report_.residual < options_.tolerance;
+      Judge(Residual());
       return;
     }
   }
@@ -413,8 +453,7 @@ void PotentialField::ColdStart() {
   table.clear();
   solver_->Restart();
   report_ = IterationReport{};
-  report_.residual = Residual();
-  report_.converged = report_.residual < options_.tolerance;
+  Judge(Residual());
 }
 
 PotentialField::Norms PotentialField::ResidualNorms() const {
@@ -445,7 +484,7 @@ PotentialField::Norms PotentialField::ResidualNorms() const {
   static_assert(sizeof(FreeRun) == sizeof(internal::Run), "same run layout");
   const auto k = internal::kernels::ResidualNorms(
       p_.data(), width_, reinterpret_cast<const internal::Run*>(free_runs_.data()),
-      free_runs_.size(), !five);
+      free_runs_.size(), !five, Floor());
   norms.absolute = k.absolute;
   norms.relative = k.relative;
   return norms;
@@ -479,8 +518,7 @@ IterationReport PotentialField::Iterate(int sweeps) {
     const bool fresh = !direct_solved_;
     DirectSolve();
     if (fresh) report_.sweeps += 1;
-    report_.residual = Residual();
-    report_.converged = report_.residual < options_.tolerance;
+    Judge(Residual());
     return report_;
   }
   const bool relative = options_.norm == ResidualNorm::kRelative;
@@ -515,6 +553,7 @@ IterationReport PotentialField::Iterate(int sweeps) {
       }
       polish_->Iterate(p_.data());
     } else {
+      solver_->SetRelativeFloor(Floor());
       solver_->Iterate(p_.data());
     }
     if (relative && polishing_ && ClampNegatives())
@@ -536,13 +575,14 @@ IterationReport PotentialField::Iterate(int sweeps) {
     last_relative_ = norms.relative;
   }
   report_.sweeps += sweeps;
-  report_.residual = sweeps > 0 ? (relative ? norms.relative : norms.absolute) : Residual();
-  report_.converged = report_.residual < options_.tolerance;
-  if (report_.converged && tracked) {
+  const double residual = sweeps > 0 ? (relative ? norms.relative : norms.absolute) : Residual();
+  if (residual < options_.tolerance && tracked) {
     // The solver's residual is recursive (updated, not recomputed): confirm with the true one.
-    report_.residual = Residual();
-    report_.converged = report_.residual < options_.tolerance;
-    if (!report_.converged) solver_->Restart();
+    const double confirmed = Residual();
+    if (!(confirmed < options_.tolerance)) solver_->Restart();
+    Judge(confirmed);
+  } else {
+    Judge(residual);
   }
   return report_;
 }
@@ -609,12 +649,14 @@ bool PotentialField::StartTail(double resolved_absolute, double scale) {
 }
 
 PotentialField::Norms PotentialField::IterateTail() {
+  const double floor = Floor() / tail_scale_;  // the start's focus in the stage's units
+  tail_solver_->SetRelativeFloor(floor);
   tail_solver_->Iterate(tail_u_.data());
   Norms tail;
   if (!tail_solver_->LastResidual(&tail.absolute, &tail.relative)) {
     const auto k = internal::kernels::ResidualNorms(
         tail_u_.data(), width_, reinterpret_cast<const internal::Run*>(tail_runs_.data()),
-        tail_runs_.size(), options_.solver.stencil == Stencil::kNinePoint);
+        tail_runs_.size(), options_.solver.stencil == Stencil::kNinePoint, floor);
     tail.absolute = k.absolute;
     tail.relative = k.relative;
   }

@@ -84,6 +84,8 @@ class IterativeSolver {
     (void)u;
     return false;
   }
+  /// The relative norm of LastResidual() takes |r_i| against max(u_i, floor) (0: u_i alone).
+  virtual void SetRelativeFloor(double floor) { (void)floor; }
   /// Max-norms (absolute, and relative to each cell's value) of the residual after the last
   /// Iterate(), when the solver tracks them on the way (conjugate gradients); false otherwise.
   virtual bool LastResidual(double* absolute, double* relative) const {
