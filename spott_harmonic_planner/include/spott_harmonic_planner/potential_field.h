@@ -114,7 +114,8 @@ class PotentialField {
   /// of work), and with multigrid_cg a thin free region (a corridor) is solved exactly here. SOR
   /// and ADI: p = exp(-k d) with d the 8-connected wavefront distance (chamfer 5/7, in cells)
   /// from the goal through free cells; 0 where the goal cannot be reached (which is exact).
-  /// Resets the sweep count.
+  /// Resets the sweep count; the residual is judged from the first iteration on (report():
+  /// infinite, not converged; the exact solve of a thin region is judged at once).
   void ColdStart();
   /// `sweeps` more iterations (warm). Returns the state after them. With the relative norm,
   /// once the solver stalls at round-off the cells below the resolved scale are solved in
@@ -192,6 +193,8 @@ class PotentialField {
   // Marks the field converged when `residual` meets the tolerance and every cell above the
   // floor has a strictly higher neighbour (discrete descent from the start reaches the goal).
   void Judge(double residual);
+  // After a cold start: no iteration yet, residual infinite (not computed), not converged.
+  void NotJudged();
   bool ShiftWarm(const Vec2& old_origin);
   void ComputeClearance() const;
   void EnsureSetup();
