@@ -1,6 +1,8 @@
 #include "mg_kernels.h"
 
 #include <algorithm>
+#include <cstring>
+#include <type_traits>
 
 // Two builds of every kernel on x86-64 (AVX2 + FMA, and the baseline), chosen at load time.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(SPOTT_NO_CLONES)
@@ -445,21 +447,143 @@ inline double SumOf(const double* v) {
   return s;
 }
 
-// |r| / max(u, floor), infinite where that is <= 0 and r != 0 (infinitely wrong relative to
-// the cell's value); branch-free selects, so the loops around it vectorize.
-inline double Relative(double a, double u, double floor) {
-  constexpr double kInf = __builtin_inf();
-  const double w = u > floor ? u : floor;
-  const double safe = w > 0.0 ? w : 1.0;
-  const double ratio = a / safe;
-  const double big = a > 0.0 ? kInf : 0.0;
-  return w > 0.0 ? ratio : big;
+// The conjugate-gradient passes in double: written on GCC's vector type of four doubles
+// (an AVX2 register in the x86-64-v3 clone, two SSE2 registers in the baseline one), one
+// vector of cells per step and scalar steps for a run's last cells. (Auto-vectorization of the
+// 8-lane blocks above re-checked pointer aliasing in every block.)
+// Every function taking or returning them is inlined: no call passes a vector (-Wpsabi warns
+// about the ABI of such calls in the baseline build).
+#pragma GCC diagnostic ignored "-Wpsabi"
+typedef double V4 __attribute__((vector_size(32)));
+typedef float F4 __attribute__((vector_size(16)));
+
+template <typename V>
+__attribute__((always_inline)) inline V Load(const double* p) {
+  if constexpr (std::is_same_v<V, double>) {
+    return *p;
+  } else {
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V LoadF(const float* p) {
+  if constexpr (std::is_same_v<V, double>) {
+    return static_cast<double>(*p);
+  } else {
+    // (GCC 12 turns __builtin_convertvector of a loaded F4 into two half conversions; this form
+    // is one vcvtps2pd from memory.)
+    return V4{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]),
+              static_cast<double>(p[3])};
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline void Store(double* p, V v) {
+  if constexpr (std::is_same_v<V, double>) {
+    *p = v;
+  } else {
+    std::memcpy(p, &v, sizeof v);
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline void StoreF(float* p, V v) {
+  if constexpr (std::is_same_v<V, double>) {
+    *p = static_cast<float>(v);
+  } else {
+    const F4 f = __builtin_convertvector(v, F4);
+    std::memcpy(p, &f, sizeof f);
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V Splat(double x) {
+  if constexpr (std::is_same_v<V, double>) {
+    return x;
+  } else {
+    return V4{x, x, x, x};
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V Max(V a, V b) {
+  return a > b ? a : b;
 }
 
-template <bool kNine>
-inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const Run* runs,
-                           std::size_t count, double floor) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+// body(V(), k) for k in [0, len): vectors of four cells, then single cells.
+template <typename Body>
+__attribute__((always_inline)) inline void ForVectors(int len, Body&& body) {
+  int k = 0;
+  for (; k + 4 <= len; k += 4) body(V4{}, k);
+  for (; k < len; ++k) body(0.0, k);
+}
+
+// Reductions kept per lane (a vector and a scalar), combined at the end.
+struct MaxPair {
+  V4 v = {0.0, 0.0, 0.0, 0.0};
+  double s = 0.0;
+  template <typename V>
+  __attribute__((always_inline)) void Add(V x) {
+    if constexpr (std::is_same_v<V, double>) {
+      s = x > s ? x : s;
+    } else {
+      v = Max(v, x);
+    }
+  }
+  double Value() const {
+    const double a = v[0] > v[1] ? v[0] : v[1], b = v[2] > v[3] ? v[2] : v[3];
+    const double c = a > b ? a : b;
+    return c > s ? c : s;
+  }
+};
+struct SumPair {
+  V4 v = {0.0, 0.0, 0.0, 0.0};
+  double s = 0.0;
+  template <typename V>
+  __attribute__((always_inline)) void Add(V x) {
+    if constexpr (std::is_same_v<V, double>) {
+      s += x;
+    } else {
+      v += x;
+    }
+  }
+  double Value() const { return ((v[0] + v[1]) + (v[2] + v[3])) + s; }
+};
+
+// |r| / max(u, floor), infinite where that is <= 0 and r != 0 (infinitely wrong relative to
+// the cell's value); branch-free selects.
+template <typename V>
+__attribute__((always_inline)) inline V Relative(V a, V u, double floor) {
+  const V zero = Splat<V>(0.0), f = Splat<V>(floor);
+  const V w = u > f ? u : f;
+  const V safe = w > zero ? w : Splat<V>(1.0);
+  const V ratio = a / safe;
+  const V big = a > zero ? Splat<V>(__builtin_inf()) : zero;
+  return w > zero ? ratio : big;
+}
+
+template <bool kNine, typename V, typename T>
+__attribute__((always_inline)) inline V MeanV(const T* row, const T* up, const T* down, int k) {
+  const auto ld = [](const T* p) {
+    if constexpr (std::is_same_v<T, float>) {
+      return LoadF<V>(p);
+    } else {
+      return Load<V>(p);
+    }
+  };
+  if constexpr (kNine) {
+    return Splat<V>(0.2) * ((ld(row + k - 1) + ld(row + k + 1)) + (ld(down + k) + ld(up + k))) +
+           Splat<V>(0.05) *
+               ((ld(down + k - 1) + ld(down + k + 1)) + (ld(up + k - 1) + ld(up + k + 1)));
+  } else {
+    return Splat<V>(0.25) * ((ld(row + k - 1) + ld(row + k + 1)) + (ld(down + k) + ld(up + k)));
+  }
+}
+
+template <bool kNine, bool kMasked>
+__attribute__((always_inline)) inline Norms TrueResidualT(const double* u, double* r, float* rs,
+                                                          const float* mask, int nx,
+                                                          const Run* runs, std::size_t count,
+                                                          double floor) {
+  MaxPair wa, wr;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -468,38 +592,40 @@ inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const 
     const double* __restrict down = row - nx;
     double* __restrict rr = r + base;
     float* __restrict rf = rs + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double v = Mean<kNine>(row, up, down, k) - row[k];
-      rr[k] = v;
-      rf[k] = static_cast<float>(v);
-      const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k], floor);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    const float* __restrict m = kMasked ? mask + base : nullptr;
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      V v = MeanV<kNine, V>(row, up, down, k) - Load<V>(row + k);
+      if constexpr (kMasked) v *= LoadF<V>(m + k);
+      Store(rr + k, v);
+      StoreF(rf + k, v);
+      const V a = v < Splat<V>(0.0) ? -v : v;
+      wa.Add(a);
+      wr.Add(Relative(a, Load<V>(row + k), floor));
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  return {wa.Value(), wr.Value()};
 }
 
 template <bool kNine>
-inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_t count,
-                            double floor) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+__attribute__((always_inline)) inline Norms ResidualNormsT(const double* u, int nx, const Run* runs,
+                                                           std::size_t count, double floor) {
+  MaxPair wa, wr;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const double* __restrict row = u + base;
     const double* __restrict up = row + nx;
     const double* __restrict down = row - nx;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double v = Mean<kNine>(row, up, down, k) - row[k];
-      const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k], floor);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V v = MeanV<kNine, V>(row, up, down, k) - Load<V>(row + k);
+      const V a = v < Splat<V>(0.0) ? -v : v;
+      wa.Add(a);
+      wr.Add(Relative(a, Load<V>(row + k), floor));
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  return {wa.Value(), wr.Value()};
 }
 
 inline std::size_t AscentDeficitT(const double* u, int nx, const Run* runs, std::size_t count,
@@ -546,10 +672,11 @@ inline void RegularT(const std::uint8_t* active, std::uint8_t* regular, int nx, 
   }
 }
 
-template <bool kNine>
-inline double DirectionT(const float* z, double* d, double* q, double beta, int nx, const Run* runs,
-                         std::size_t count) {
-  double dq[kLanes] = {};
+template <bool kNine, bool kMasked>
+__attribute__((always_inline)) inline double DirectionT(const float* z, double* d, double* q,
+                                                        const float* mask, double beta, int nx,
+                                                        const Run* runs, std::size_t count) {
+  SumPair dq;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -558,21 +685,28 @@ inline double DirectionT(const float* z, double* d, double* q, double beta, int 
     const float* __restrict down = row - nx;
     double* __restrict dd = d + base;
     double* __restrict qq = q + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double az = static_cast<double>(row[k]) - Mean<kNine>(row, up, down, k);
-      const double dn = static_cast<double>(row[k]) + beta * dd[k];
-      const double qn = az + beta * qq[k];
-      dd[k] = dn;
-      qq[k] = qn;
-      dq[j] += dn * qn;
+    const float* __restrict m = kMasked ? mask + base : nullptr;
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V zk = LoadF<V>(row + k);
+      V az = zk - MeanV<kNine, V>(row, up, down, k);
+      if constexpr (kMasked) az *= LoadF<V>(m + k);
+      const V b = Splat<V>(beta);
+      const V dn = zk + b * Load<V>(dd + k);
+      const V qn = az + b * Load<V>(qq + k);
+      Store(dd + k, dn);
+      Store(qq + k, qn);
+      dq.Add(dn * qn);
     });
   }
-  return SumOf(dq);
+  return dq.Value();
 }
 
-inline Norms UpdateT(double* u, const double* d, double* r, const double* q, float* rs,
-                     double alpha, int nx, const Run* runs, std::size_t count, double floor) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+__attribute__((always_inline)) inline Norms UpdateT(double* u, const double* d, double* r,
+                                                    const double* q, float* rs, double alpha,
+                                                    int nx, const Run* runs, std::size_t count,
+                                                    double floor) {
+  MaxPair wa, wr;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -581,45 +715,53 @@ inline Norms UpdateT(double* u, const double* d, double* r, const double* q, flo
     double* __restrict rr = r + base;
     const double* __restrict qq = q + base;
     float* __restrict rf = rs + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double un = uu[k] + alpha * dd[k];
-      const double rn = rr[k] - alpha * qq[k];
-      uu[k] = un;
-      rr[k] = rn;
-      rf[k] = static_cast<float>(rn);
-      const double a = rn < 0 ? -rn : rn;
-      const double rel = Relative(a, un, floor);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V al = Splat<V>(alpha);
+      const V un = Load<V>(uu + k) + al * Load<V>(dd + k);
+      const V rn = Load<V>(rr + k) - al * Load<V>(qq + k);
+      Store(uu + k, un);
+      Store(rr + k, rn);
+      StoreF(rf + k, rn);
+      const V a = rn < Splat<V>(0.0) ? -rn : rn;
+      wa.Add(a);
+      wr.Add(Relative(a, un, floor));
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  return {wa.Value(), wr.Value()};
 }
 
-inline void DotsT(const double* r, const float* z, const float* z_old, int nx, const Run* runs,
-                  std::size_t count, double* rz, double* rz_old) {
-  double a[kLanes] = {}, b[kLanes] = {};
+__attribute__((always_inline)) inline void DotsT(const double* r, const float* z,
+                                                 const float* z_old, int nx, const Run* runs,
+                                                 std::size_t count, double* rz, double* rz_old) {
+  SumPair a, b;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const double* __restrict rr = r + base;
     const float* __restrict zz = z + base;
     const float* __restrict zo = z_old + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      a[j] += rr[k] * static_cast<double>(zz[k]);
-      b[j] += rr[k] * static_cast<double>(zo[k]);
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V rk = Load<V>(rr + k);
+      a.Add(rk * LoadF<V>(zz + k));
+      b.Add(rk * LoadF<V>(zo + k));
     });
   }
-  *rz = SumOf(a);
-  *rz_old = SumOf(b);
+  *rz = a.Value();
+  *rz_old = b.Value();
 }
 
 }  // namespace
 
-SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
-                                std::size_t count, bool nine, double floor) {
-  return nine ? TrueResidualT<true>(u, r, rs, nx, runs, count, floor)
-              : TrueResidualT<false>(u, r, rs, nx, runs, count, floor);
+SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, const float* mask, int nx,
+                                const Run* runs, std::size_t count, bool nine, double floor) {
+  if (mask) {
+    return nine ? TrueResidualT<true, true>(u, r, rs, mask, nx, runs, count, floor)
+                : TrueResidualT<false, true>(u, r, rs, mask, nx, runs, count, floor);
+  }
+  return nine ? TrueResidualT<true, false>(u, r, rs, mask, nx, runs, count, floor)
+              : TrueResidualT<false, false>(u, r, rs, mask, nx, runs, count, floor);
 }
 
 SPOTT_CLONES Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count,
@@ -639,10 +781,14 @@ SPOTT_CLONES void Regular(const std::uint8_t* active, std::uint8_t* regular, int
        : RegularT<false>(active, regular, nx, runs, count);
 }
 
-SPOTT_CLONES double Direction(const float* z, double* d, double* q, double beta, int nx,
-                              const Run* runs, std::size_t count, bool nine) {
-  return nine ? DirectionT<true>(z, d, q, beta, nx, runs, count)
-              : DirectionT<false>(z, d, q, beta, nx, runs, count);
+SPOTT_CLONES double Direction(const float* z, double* d, double* q, const float* mask, double beta,
+                              int nx, const Run* runs, std::size_t count, bool nine) {
+  if (mask) {
+    return nine ? DirectionT<true, true>(z, d, q, mask, beta, nx, runs, count)
+                : DirectionT<false, true>(z, d, q, mask, beta, nx, runs, count);
+  }
+  return nine ? DirectionT<true, false>(z, d, q, mask, beta, nx, runs, count)
+              : DirectionT<false, false>(z, d, q, mask, beta, nx, runs, count);
 }
 
 SPOTT_CLONES Norms Update(double* u, const double* d, double* r, const double* q, float* rs,

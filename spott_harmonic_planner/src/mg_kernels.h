@@ -120,9 +120,13 @@ struct Norms {
   /// value, or to `floor` where the value is smaller (the field's start focus; 0: none).
   double relative = 0.0;
 };
-/// r = M u - u (u holds the Dirichlet values on fixed cells); rs = (float) r; returns the norms.
-Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
-                   std::size_t count, bool nine, double floor);
+// The conjugate-gradient kernels may run over spans that hold fixed cells too (one span over
+// the whole interior of a mostly free window: no loop start per row): `mask` (1 on unknowns, 0
+// on fixed cells) then keeps r and q at 0 there, and d, q, r stay 0 on fixed cells.
+/// r = M u - u (u holds the Dirichlet values on fixed cells), times `mask` when given;
+/// rs = (float) r; returns the norms.
+Norms TrueResidual(const double* u, double* r, float* rs, const float* mask, int nx,
+                   const Run* runs, std::size_t count, bool nine, double floor);
 /// The norms of M u - u without storing it.
 Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count, bool nine,
                     double floor);
@@ -133,9 +137,9 @@ std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t 
 /// regular[i] = the unknown i has all its stencil neighbours unknowns too (level 0).
 void Regular(const std::uint8_t* active, std::uint8_t* regular, int nx, const Run* runs,
              std::size_t count, bool nine);
-/// d = z + beta d, q = A z + beta q; returns d . q.
-double Direction(const float* z, double* d, double* q, double beta, int nx, const Run* runs,
-                 std::size_t count, bool nine);
+/// d = z + beta d, q = A z + beta q (A z times `mask` when given); returns d . q.
+double Direction(const float* z, double* d, double* q, const float* mask, double beta, int nx,
+                 const Run* runs, std::size_t count, bool nine);
 /// u += alpha d, r -= alpha q, rs = (float) r; returns the norms of the new r.
 Norms Update(double* u, const double* d, double* r, const double* q, float* rs, double alpha,
              int nx, const Run* runs, std::size_t count, double floor);

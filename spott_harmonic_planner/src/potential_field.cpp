@@ -548,7 +548,13 @@ IterationReport PotentialField::Iterate(int sweeps) {
   if (width_ == 0 || goal_count_ == 0) {
     throw std::logic_error("PotentialField::Iterate: no window or no goal");
   }
+  const bool warm = !solver_ready_;  // the equations changed since the last iteration
   EnsureSetup();
+  if (warm && !direct_ && !tail_active_ && !polishing_ && solver_->CorrectionGuess(p_.data())) {
+    // The kept values plus a full-multigrid correction for the change: the iteration then starts
+    // with the change's own error reduced like a cold start's.
+    solver_->Restart();
+  }
   if (direct_) {
     const bool fresh = !direct_solved_;
     DirectSolve();
