@@ -1,6 +1,7 @@
 #include "mg_kernels.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 
@@ -18,45 +19,112 @@ namespace spott_harmonic_planner::internal::kernels {
 
 namespace {
 
+// The colour passes on GCC's 32-byte vector types (8 floats or 4 doubles): each step computes
+// a vector of cells and blends the colour's cells into the row in place. That is exact
+// Gauss-Seidel: a cell of the colour reads only cells of other colours, which the pass writes
+// back unchanged (the next step's loads may see this step's stores). Scalar steps end a run.
+// (The auto-vectorized form needed a second pass through a scratch row.)
+// Every function taking or returning a vector is inlined: no call passes one (-Wpsabi warns
+// about the ABI of such calls in the baseline build).
+#pragma GCC diagnostic ignored "-Wpsabi"
 template <typename T>
-inline void Colour5T(T* u, const T* f, const T* mask, int nx, const Run* runs, std::size_t count,
-                     int colour, T* __restrict tmp) {
+struct Vec;
+template <>
+struct Vec<float> {
+  typedef float type __attribute__((vector_size(32)));
+  typedef std::int32_t mask __attribute__((vector_size(32)));
+  static constexpr int kLanes = 8;
+};
+template <>
+struct Vec<double> {
+  typedef double type __attribute__((vector_size(32)));
+  typedef std::int64_t mask __attribute__((vector_size(32)));
+  static constexpr int kLanes = 4;
+};
+
+template <typename T>
+__attribute__((always_inline)) inline typename Vec<T>::type Ld(const T* p) {
+  typename Vec<T>::type v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <typename T>
+__attribute__((always_inline)) inline void St(T* p, typename Vec<T>::type v) {
+  std::memcpy(p, &v, sizeof v);
+}
+// Lanes whose index has parity `parity` (the steps start at even offsets).
+template <typename T>
+__attribute__((always_inline)) inline typename Vec<T>::mask Parity(int parity) {
+  typename Vec<T>::mask m;
+  for (int j = 0; j < Vec<T>::kLanes; ++j) m[j] = (j & 1) == parity ? -1 : 0;
+  return m;
+}
+
+template <typename T>
+__attribute__((always_inline)) inline void Colour5T(T* u, const T* f, const T* mask, int nx,
+                                                    const Run* runs, std::size_t count,
+                                                    int colour) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
     const int len = run.x1 - run.x0;
     T* row = u + base + run.x0;
-    const T* __restrict up = row + nx;
-    const T* __restrict down = row - nx;
-    const T* __restrict fr = f + base + run.x0;
-    if (mask) {
-      const T* __restrict m = mask + base + run.x0;
-      for (int k = 0; k < len; ++k) {
-        tmp[k] = m[k] * (T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k]);
-      }
-    } else {
-      for (int k = 0; k < len; ++k) {
-        tmp[k] = T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k];
-      }
-    }
+    const T* up = row + nx;
+    const T* down = row - nx;
+    const T* fr = f + base + run.x0;
+    const T* m = mask ? mask + base + run.x0 : nullptr;
     const int parity = ((run.x0 + run.y) & 1) == colour ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      V v = T(0.25) * ((Ld(row + k - 1) + Ld(row + k + 1)) + (Ld(down + k) + Ld(up + k))) +
+            Ld(fr + k);
+      if (m) v *= Ld(m + k);
+      St(row + k, sel ? v : Ld(row + k));
+    }
+    for (k += (k & 1) != parity ? 1 : 0; k < len; k += 2) {
+      const T v = T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k];
+      row[k] = m ? m[k] * v : v;
+    }
   }
 }
 
+// The first red-black sweep from u = 0, in one pass: colour 0 becomes f, colour 1 the mean of
+// those plus f (f is 0 on fixed cells, and so is u wherever this pass does not write).
 template <typename T>
-inline void FirstSweep5T(T* u, const T* f, const T* mask, int nx, const Run* runs,
-                         std::size_t count, T* __restrict tmp) {
+__attribute__((always_inline)) inline void FirstSweep5T(T* u, const T* f, const T* mask, int nx,
+                                                        const Run* runs, std::size_t count) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
-    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const int len = run.x1 - run.x0;
-    T* __restrict row = u + base + run.x0;
-    const T* __restrict fr = f + base + run.x0;  // zero on fixed cells
-    const int parity = ((run.x0 + run.y) & 1) == 0 ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? fr[k] : T(0);
+    T* __restrict row = u + base;
+    const T* __restrict fr = f + base;
+    const T* __restrict fu = fr + nx;
+    const T* __restrict fd = fr - nx;
+    const T* __restrict m = mask ? mask + base : nullptr;
+    const int parity = ((run.x0 + run.y) & 1) == 0 ? 0 : 1;  // the lanes of colour 0
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      const V fk = Ld(fr + k);
+      V v = T(0.25) * ((Ld(fr + k - 1) + Ld(fr + k + 1)) + (Ld(fd + k) + Ld(fu + k))) + fk;
+      if (m) v *= Ld(m + k);
+      St(row + k, sel ? fk : v);
+    }
+    for (; k < len; ++k) {
+      if ((k & 1) == parity) {
+        row[k] = fr[k];
+      } else {
+        const T v = T(0.25) * ((fr[k - 1] + fr[k + 1]) + (fd[k] + fu[k])) + fr[k];
+        row[k] = m ? m[k] * v : v;
+      }
+    }
   }
-  Colour5T(u, f, mask, nx, runs, count, 1, tmp);
 }
 
 template <typename T>
@@ -93,33 +161,44 @@ inline T Apply9(const T* row, const T* up, const T* down, const Stencil9<T>& a, 
 }
 
 template <typename T>
-inline void Colour9T(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, int py,
-                     const Stencil9<T>& a, T* __restrict tmp) {
+__attribute__((always_inline)) inline void Colour9T(T* u, const T* f, int nx, const Run* runs,
+                                                    std::size_t count, int px, int py,
+                                                    const Stencil9<T>& a) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     if ((run.y & 1) != py) continue;
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const int len = run.x1 - run.x0;
     T* row = u + base;
-    const T* __restrict up = row + nx;
-    const T* __restrict down = row - nx;
-    const T* __restrict fr = f + base;
-    const T* __restrict id = a.inv_diag + base;
-    const T* __restrict e = a.e + base;
-    const T* __restrict n = a.n + base;
-    const T* __restrict nd = a.n + base - nx;
-    const T* __restrict ne = a.ne + base;
-    const T* __restrict ned = a.ne + base - nx - 1;
-    const T* __restrict nw = a.nw + base;
-    const T* __restrict nwd = a.nw + base - nx + 1;
-    for (int k = 0; k < len; ++k) {
+    const T* up = row + nx;
+    const T* down = row - nx;
+    const T* fr = f + base;
+    const T* id = a.inv_diag + base;
+    const T* e = a.e + base;
+    const T* n = a.n + base;
+    const T* nd = a.n + base - nx;
+    const T* ne = a.ne + base;
+    const T* ned = a.ne + base - nx - 1;
+    const T* nw = a.nw + base;
+    const T* nwd = a.nw + base - nx + 1;
+    const int parity = (run.x0 & 1) == px ? 0 : 1;
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      const V s = Ld(e + k) * Ld(row + k + 1) + Ld(e + k - 1) * Ld(row + k - 1) +
+                  Ld(n + k) * Ld(up + k) + Ld(nd + k) * Ld(down + k) + Ld(ne + k) * Ld(up + k + 1) +
+                  Ld(ned + k) * Ld(down + k - 1) + Ld(nw + k) * Ld(up + k - 1) +
+                  Ld(nwd + k) * Ld(down + k + 1);
+      St(row + k, sel ? Ld(id + k) * (Ld(fr + k) - s) : Ld(row + k));
+    }
+    for (k += (k & 1) != parity ? 1 : 0; k < len; k += 2) {
       const T s = e[k] * row[k + 1] + e[k - 1] * row[k - 1] + n[k] * up[k] + nd[k] * down[k] +
                   ne[k] * up[k + 1] + ned[k] * down[k - 1] + nw[k] * up[k - 1] +
                   nwd[k] * down[k + 1];
-      tmp[k] = id[k] * (fr[k] - s);
+      row[k] = id[k] * (fr[k] - s);
     }
-    const int parity = (run.x0 & 1) == px ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
   }
 }
 
@@ -307,7 +386,8 @@ inline void GalerkinYT(const Rows& b, T* __restrict diag, T* __restrict inv_diag
 #define SPOTT_KERNELS(T)                                                                          \
   SPOTT_CLONES void Colour5(T* u, const T* f, const T* mask, int nx, const Run* runs,             \
                             std::size_t count, int colour, T* tmp) {                              \
-    Colour5T(u, f, mask, nx, runs, count, colour, tmp);                                           \
+    (void)tmp;                                                                                    \
+    Colour5T(u, f, mask, nx, runs, count, colour);                                                \
   }                                                                                               \
   SPOTT_CLONES void Residual5(const T* u, const T* f, const T* mask, T* r, int nx,                \
                               const Run* runs, std::size_t count) {                               \
@@ -315,7 +395,8 @@ inline void GalerkinYT(const Rows& b, T* __restrict diag, T* __restrict inv_diag
   }                                                                                               \
   SPOTT_CLONES void Colour9(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, \
                             int py, const Stencil9<T>& a, T* tmp) {                               \
-    Colour9T(u, f, nx, runs, count, px, py, a, tmp);                                              \
+    (void)tmp;                                                                                    \
+    Colour9T(u, f, nx, runs, count, px, py, a);                                                   \
   }                                                                                               \
   SPOTT_CLONES void Residual9(const T* u, const T* f, T* r, int nx, const Run* runs,              \
                               std::size_t count, const Stencil9<T>& a) {                          \
@@ -404,7 +485,8 @@ SPOTT_CLONES void GalerkinY(const GalerkinRowsD& b, double* diag, double* inv_di
 
 SPOTT_CLONES void FirstSweep5(float* u, const float* f, const float* mask, int nx, const Run* runs,
                               std::size_t count, float* tmp) {
-  FirstSweep5T(u, f, mask, nx, runs, count, tmp);
+  (void)tmp;
+  FirstSweep5T(u, f, mask, nx, runs, count);
 }
 
 namespace {
@@ -451,9 +533,6 @@ inline double SumOf(const double* v) {
 // (an AVX2 register in the x86-64-v3 clone, two SSE2 registers in the baseline one), one
 // vector of cells per step and scalar steps for a run's last cells. (Auto-vectorization of the
 // 8-lane blocks above re-checked pointer aliasing in every block.)
-// Every function taking or returning them is inlined: no call passes a vector (-Wpsabi warns
-// about the ABI of such calls in the baseline build).
-#pragma GCC diagnostic ignored "-Wpsabi"
 typedef double V4 __attribute__((vector_size(32)));
 typedef float F4 __attribute__((vector_size(16)));
 
