@@ -194,19 +194,26 @@ class MultigridSolver final : public IterativeSolver {
       dq_ = kernels::Direction(z32_.data(), d_.data(), q_.data(), cg_mask_, 0.0, nx_, rs.data(),
                                rs.size(), nine);
       cg_started_ = true;
+      direction_pending_ = false;
+    } else if (direction_pending_) {
+      // The next direction from the residual the last update left: computed only now, so the
+      // update that meets the tolerance is not followed by a cycle nobody uses.
+      std::swap(z32_, z32_old_);
+      single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
+      double rz = 0.0, rz_old = 0.0;
+      kernels::Dots(r_.data(), z32_.data(), z32_old_.data(), nx_, rs.data(), rs.size(), &rz,
+                    &rz_old);
+      const double beta = std::max(0.0, (rz - rz_old) / rho_);
+      rho_ = rz;
+      dq_ = kernels::Direction(z32_.data(), d_.data(), q_.data(), cg_mask_, beta, nx_, rs.data(),
+                               rs.size(), nine);
+      direction_pending_ = false;
     }
     if (!(rho_ > 0.0) || !(dq_ > 0.0)) return;  // solved to the last bit
     const double alpha = rho_ / dq_;
     norms_ = kernels::Update(u, d_.data(), r_.data(), q_.data(), r32_.data(), alpha, nx_, rs.data(),
                              rs.size(), floor_);
-    std::swap(z32_, z32_old_);
-    single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
-    double rz = 0.0, rz_old = 0.0;
-    kernels::Dots(r_.data(), z32_.data(), z32_old_.data(), nx_, rs.data(), rs.size(), &rz, &rz_old);
-    const double beta = std::max(0.0, (rz - rz_old) / rho_);
-    rho_ = rz;
-    dq_ = kernels::Direction(z32_.data(), d_.data(), q_.data(), cg_mask_, beta, nx_, rs.data(),
-                             rs.size(), nine);
+    direction_pending_ = true;
   }
 
   bool LastResidual(double* absolute, double* relative) const override {
@@ -228,6 +235,7 @@ class MultigridSolver final : public IterativeSolver {
   kernels::Norms norms_;
   double dq_ = 0.0;
   bool cg_started_ = false;
+  bool direction_pending_ = false;  // an update was made; the next direction is not computed
   double rho_ = 0.0;
   double floor_ = 0.0;
   // The preconditioner's cycle: V(1,1), and V(1,1) on each level of the full-multigrid start
