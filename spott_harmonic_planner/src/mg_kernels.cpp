@@ -297,9 +297,22 @@ inline void ProlongateT(const T* uc, int cnx, T* u, const T* mask, int fnx, cons
     }
     // Fine x = 2 X0 + j: j even -> cr[j / 2], j odd -> mean of cr[j / 2], cr[j / 2 + 1].
     T* __restrict ex = tmp + m + 1;
-    for (int k = 0; k + 1 < m; ++k) {
-      ex[2 * k] = cr[k];
-      ex[2 * k + 1] = T(0.5) * (cr[k] + cr[k + 1]);
+    int k = 0;
+    if constexpr (std::is_same_v<T, float>) {
+      // Eight coarse values and their midpoints interleaved by two shuffles (the steps may run
+      // past m - 1 in the scratch row: those entries are not read).
+      using V = Vec<float>::type;
+      using M = Vec<float>::mask;
+      for (; k + 1 < m; k += 8) {
+        const V a = Ld(cr + k), mid = T(0.5) * (a + Ld(cr + k + 1));
+        St(ex + 2 * k, __builtin_shuffle(a, mid, M{0, 8, 1, 9, 2, 10, 3, 11}));
+        St(ex + 2 * k + 8, __builtin_shuffle(a, mid, M{4, 12, 5, 13, 6, 14, 7, 15}));
+      }
+    } else {
+      for (; k + 1 < m; ++k) {
+        ex[2 * k] = cr[k];
+        ex[2 * k + 1] = T(0.5) * (cr[k] + cr[k + 1]);
+      }
     }
     ex[2 * (m - 1)] = cr[m - 1];
     const int off = run.x0 - 2 * X0;  // 0 or 1
