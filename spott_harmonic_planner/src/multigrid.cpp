@@ -32,7 +32,7 @@ class MultigridSolver final : public IterativeSolver {
     if (!same_size) {
       if (cg_) {
         for (auto* v : {&r32_, &z32_, &z32_old_}) v->assign(n, 0.0f);
-        for (auto* v : {&r_, &z_, &d_, &q_}) v->assign(n, 0.0);
+        for (auto* v : {&r_, &d_, &q_}) v->assign(n, 0.0);  // z_: the double cycle's only
       } else {
         for (auto* v : {&r_, &z_}) v->assign(n, 0.0);
       }
@@ -89,15 +89,15 @@ class MultigridSolver final : public IterativeSolver {
       const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
       std::fill(u + b + run.x0, u + b + run.x1, 0.0);
     }
-    Residual(u, r_.data());
     if (cg_) {
-      ToSingle(r_.data(), r32_.data());
+      ResidualSingle(u, r32_.data());
       single_.FullMultigrid(r32_.data(), z32_.data(), fmg_pre_, fmg_post_);
       for (const Run& run : runs) {
         const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
         for (int x = run.x0; x < run.x1; ++x) u[b + x] = z32_[b + x];
       }
     } else {
+      Residual(u, r_.data());
       double_.FullMultigrid(r_.data(), z_.data(), options_.pre_smoothing, options_.post_smoothing);
       for (const Run& run : runs) {
         const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
@@ -110,8 +110,7 @@ class MultigridSolver final : public IterativeSolver {
 
   bool CorrectionGuess(double* u) override {
     if (!cg_) return false;
-    Residual(u, r_.data());
-    ToSingle(r_.data(), r32_.data());
+    ResidualSingle(u, r32_.data());
     single_.FullMultigrid(r32_.data(), z32_.data(), fmg_pre_, fmg_post_);
     for (const Run& run : single_.runs()) {
       const std::size_t b = static_cast<std::size_t>(run.y) * nx_;
@@ -153,30 +152,36 @@ class MultigridSolver final : public IterativeSolver {
     }
   }
 
+  // rs = (float) (mean(u) - u) on the unknowns, in one pass (the full-multigrid start's
+  // right-hand side).
+  void ResidualSingle(const double* u, float* rs) const {
+    const bool five = options_.stencil == Stencil::kFivePoint;
+    for (const Run& run : runs()) {
+      const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx_;
+      const double* __restrict row = u + base;
+      const double* __restrict up = row + nx_;
+      const double* __restrict down = row - nx_;
+      float* __restrict out = rs + base;
+      if (five) {
+        for (int x = run.x0; x < run.x1; ++x) {
+          out[x] =
+              static_cast<float>(0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) - row[x]);
+        }
+      } else {
+        for (int x = run.x0; x < run.x1; ++x) {
+          out[x] = static_cast<float>(
+              0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
+              0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1])) - row[x]);
+        }
+      }
+    }
+  }
+
   void ToSingle(const double* a, float* b) const {
     for (const Run& run : runs()) {
       const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
       for (int x = run.x0; x < run.x1; ++x) b[base + x] = static_cast<float>(a[base + x]);
     }
-  }
-
-  // z = V-cycle(r) in single precision.
-  void Precondition() {
-    ToSingle(r_.data(), r32_.data());
-    single_.VCycle(r32_.data(), z32_.data(), v_pre_, v_post_);
-    for (const Run& run : runs()) {
-      const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
-      for (int x = run.x0; x < run.x1; ++x) z_[base + x] = z32_[base + x];
-    }
-  }
-
-  double Dot(const std::vector<double>& a, const std::vector<double>& b) const {
-    double s = 0.0;
-    for (const Run& run : runs()) {
-      const std::size_t base = static_cast<std::size_t>(run.y) * nx_;
-      for (int x = run.x0; x < run.x1; ++x) s += a[base + x] * b[base + x];
-    }
-    return s;
   }
 
   // Flexible conjugate gradients (Polak-Ribiere beta: the single-precision preconditioner is
