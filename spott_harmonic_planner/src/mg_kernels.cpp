@@ -699,10 +699,11 @@ __attribute__((always_inline)) inline Norms TrueResidualT(const double* u, doubl
   return {wa.Value(), wr.Value()};
 }
 
-template <bool kNine>
+template <bool kNine, bool kDeficit>
 __attribute__((always_inline)) inline Norms ResidualNormsT(const double* u, int nx, const Run* runs,
                                                            std::size_t count, double floor) {
   MaxPair wa, wr;
+  SumPair stuck;  // kDeficit: cells judged (>= floor) without a strictly higher 4-neighbour
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -711,13 +712,29 @@ __attribute__((always_inline)) inline Norms ResidualNormsT(const double* u, int 
     const double* __restrict down = row - nx;
     ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
       using V = decltype(tag);
-      const V v = MeanV<kNine, V>(row, up, down, k) - Load<V>(row + k);
+      const V c = Load<V>(row + k);
+      const V v = MeanV<kNine, V>(row, up, down, k) - c;
       const V a = v < Splat<V>(0.0) ? -v : v;
       wa.Add(a);
-      wr.Add(Relative(a, Load<V>(row + k), floor));
+      wr.Add(Relative(a, c, floor));
+      if constexpr (kDeficit) {
+        const V best = Max(Max(Load<V>(row + k - 1), Load<V>(row + k + 1)),
+                           Max(Load<V>(down + k), Load<V>(up + k)));
+        const V zero = Splat<V>(0.0), one = Splat<V>(1.0);
+        if constexpr (std::is_same_v<V, double>) {
+          const bool bad = (floor <= 0.0 || c >= floor) && (!(best > c) || !(c > 0.0));
+          stuck.Add(bad ? 1.0 : 0.0);
+        } else {
+          const auto judged = floor <= 0.0 ? (c == c) : (c >= Splat<V>(floor));
+          const auto bad = judged & ((best <= c) | (c <= zero));
+          stuck.Add(bad ? one : zero);
+        }
+      }
     });
   }
-  return {wa.Value(), wr.Value()};
+  Norms n{wa.Value(), wr.Value()};
+  if constexpr (kDeficit) n.deficit = static_cast<std::size_t>(stuck.Value());
+  return n;
 }
 
 inline std::size_t AscentDeficitT(const double* u, int nx, const Run* runs, std::size_t count,
@@ -857,9 +874,13 @@ SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, const flo
 }
 
 SPOTT_CLONES Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count,
-                                 bool nine, double floor) {
-  return nine ? ResidualNormsT<true>(u, nx, runs, count, floor)
-              : ResidualNormsT<false>(u, nx, runs, count, floor);
+                                 bool nine, double floor, bool with_deficit) {
+  if (with_deficit) {
+    return nine ? ResidualNormsT<true, true>(u, nx, runs, count, floor)
+                : ResidualNormsT<false, true>(u, nx, runs, count, floor);
+  }
+  return nine ? ResidualNormsT<true, false>(u, nx, runs, count, floor)
+              : ResidualNormsT<false, false>(u, nx, runs, count, floor);
 }
 
 SPOTT_CLONES std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t count,

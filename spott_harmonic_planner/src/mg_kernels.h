@@ -119,6 +119,8 @@ struct Norms {
   /// max |r| / max(u, floor) (infinite where that is <= 0 and r != 0): relative to each cell's
   /// value, or to `floor` where the value is smaller (the field's start focus; 0: none).
   double relative = 0.0;
+  /// ResidualNorms with `with_deficit`: the unknowns AscentDeficit counts.
+  std::size_t deficit = 0;
 };
 // The conjugate-gradient kernels may run over spans that hold fixed cells too (one span over
 // the whole interior of a mostly free window: no loop start per row): `mask` (1 on unknowns, 0
@@ -127,9 +129,9 @@ struct Norms {
 /// rs = (float) r; returns the norms.
 Norms TrueResidual(const double* u, double* r, float* rs, const float* mask, int nx,
                    const Run* runs, std::size_t count, bool nine, double floor);
-/// The norms of M u - u without storing it.
+/// The norms of M u - u without storing it (and the ascent deficit in the same pass).
 Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count, bool nine,
-                    double floor);
+                    double floor, bool with_deficit = false);
 /// Unknowns with u >= floor (all of them when floor is 0) that have u <= 0 or no strictly larger
 /// 4-neighbour: the cells where discrete ascent towards the goal could stop.
 std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t count,

@@ -358,17 +358,20 @@ double PotentialField::Floor() const {
   return std::max(0.0, options_.start_fraction * p_[start_]);
 }
 
-void PotentialField::Judge(double residual) {
+void PotentialField::Judge(double residual, const std::size_t* deficit) {
   report_.residual = residual;
   report_.converged = residual < options_.tolerance;
   if (report_.converged && !extended_) {
     // The residual says nothing about the order of neighbouring values where they are almost
-    // equal: check that descent cannot stop on the way (one pass over the unknowns).
+    // equal: check that descent cannot stop on the way (one pass over the unknowns, or counted
+    // in the pass that computed `residual`).
     const double floor = Floor();
-    report_.converged =
-        internal::kernels::AscentDeficit(p_.data(), width_,
-                                         reinterpret_cast<const internal::Run*>(free_runs_.data()),
-                                         free_runs_.size(), floor) == 0;
+    const std::size_t stuck =
+        deficit ? *deficit
+                : internal::kernels::AscentDeficit(
+                      p_.data(), width_, reinterpret_cast<const internal::Run*>(free_runs_.data()),
+                      free_runs_.size(), floor);
+    report_.converged = stuck == 0;
     converged_floor_ = floor;
   }
 }
@@ -491,7 +494,7 @@ void PotentialField::NotJudged() {
   report_.residual = std::numeric_limits<double>::infinity();
 }
 
-PotentialField::Norms PotentialField::ResidualNorms() const {
+PotentialField::Norms PotentialField::ResidualNorms(bool with_deficit) const {
   Norms norms;
   if (width_ == 0) return norms;
   const bool five = options_.solver.stencil == Stencil::kFivePoint;
@@ -519,9 +522,11 @@ PotentialField::Norms PotentialField::ResidualNorms() const {
   static_assert(sizeof(FreeRun) == sizeof(internal::Run), "same run layout");
   const auto k = internal::kernels::ResidualNorms(
       p_.data(), width_, reinterpret_cast<const internal::Run*>(free_runs_.data()),
-      free_runs_.size(), !five, Floor());
+      free_runs_.size(), !five, Floor(), with_deficit);
   norms.absolute = k.absolute;
   norms.relative = k.relative;
+  norms.deficit = k.deficit;
+  norms.has_deficit = with_deficit;
   return norms;
 }
 
@@ -619,9 +624,10 @@ IterationReport PotentialField::Iterate(int sweeps) {
   const double residual = sweeps > 0 ? (relative ? norms.relative : norms.absolute) : Residual();
   if (residual < options_.tolerance && tracked) {
     // The solver's residual is recursive (updated, not recomputed): confirm with the true one.
-    const double confirmed = Residual();
+    const Norms n = ResidualNorms(/*with_deficit=*/true);
+    const double confirmed = relative ? n.relative : n.absolute;
     if (!(confirmed < options_.tolerance)) solver_->Restart();
-    Judge(confirmed);
+    Judge(confirmed, n.has_deficit ? &n.deficit : nullptr);
   } else {
     Judge(residual);
   }

@@ -26,8 +26,15 @@ TEST(AscentDeficit, CountsJudgedCellsWithoutAHigherNeighbour) {
   u[nx + 3] = 0.1;
   u[nx + 4] = 1.0;  // goal
   const internal::Run run{1, 1, 4};
+  // The residual pass counts the same cells (ResidualNorms with the deficit).
+  const auto fused = [&](double floor) {
+    return internal::kernels::ResidualNorms(u.data(), nx, &run, 1, false, floor, true).deficit;
+  };
   // Every cell judged: cell 1 stops descent (0.3 > 0.2 and 0).
   EXPECT_EQ(internal::kernels::AscentDeficit(u.data(), nx, &run, 1, 0.0), 1u);
+  EXPECT_EQ(fused(0.0), 1u);
+  EXPECT_EQ(fused(0.25), 1u);
+  EXPECT_EQ(fused(0.35), 0u);
   // Focus at 0.25: cell 1 (0.3) is judged and stuck; cells 2, 3 are below the focus.
   EXPECT_EQ(internal::kernels::AscentDeficit(u.data(), nx, &run, 1, 0.25), 1u);
   // Focus at 0.35: cell 1 is below it, nothing judged is stuck.
@@ -38,9 +45,28 @@ TEST(AscentDeficit, CountsJudgedCellsWithoutAHigherNeighbour) {
   u[nx + 2] = 1.0 / 14;
   u[nx + 3] = 15.0 / 56;
   EXPECT_EQ(internal::kernels::AscentDeficit(u.data(), nx, &run, 1, 0.0), 0u);
+  EXPECT_EQ(fused(0.0), 0u);
   u[nx + 1] = -1e-9;
   EXPECT_EQ(internal::kernels::AscentDeficit(u.data(), nx, &run, 1, 0.0), 1u);
   EXPECT_EQ(internal::kernels::AscentDeficit(u.data(), nx, &run, 1, 0.01), 0u);
+  EXPECT_EQ(fused(0.0), 1u);
+  EXPECT_EQ(fused(0.01), 0u);
+  // A run of nine (vectors of four and single cells): the same counts.
+  const int wide = 11;
+  std::vector<double> w(static_cast<std::size_t>(wide) * 3, 0.0);
+  const double values[9] = {0.5, 0.4, 0.45, 0.3, 0.2, 0.25, 0.1, -0.1, 0.05};
+  for (int k = 0; k < 9; ++k) w[wide + 1 + k] = values[k];
+  w[wide + 10] = 1.0;
+  const internal::Run row{1, 1, 10};
+  // Stuck: 0.5 (0 and 0.4 around it), 0.45 (0.4, 0.3), 0.25 (0.2, 0.1) and -0.1 (<= 0); 3 of
+  // them are >= 0.15, 2 >= 0.42.
+  const std::pair<double, std::size_t> expected[] = {{0.0, 4}, {0.15, 3}, {0.42, 2}};
+  for (const auto& [floor, count] : expected) {
+    EXPECT_EQ(internal::kernels::AscentDeficit(w.data(), wide, &row, 1, floor), count) << floor;
+    EXPECT_EQ(internal::kernels::ResidualNorms(w.data(), wide, &row, 1, false, floor, true).deficit,
+              count)
+        << floor;
+  }
 }
 
 // A 64 x 64 window: the goal on the right, the robot on the left in the open, and a closed

@@ -192,7 +192,7 @@ class PotentialField {
   double Floor() const;
   // Marks the field converged when `residual` meets the tolerance and every cell above the
   // floor has a strictly higher neighbour (discrete descent from the start reaches the goal).
-  void Judge(double residual);
+  void Judge(double residual, const std::size_t* deficit = nullptr);
   // After a cold start: no iteration yet, residual infinite (not computed), not converged.
   void NotJudged();
   bool ShiftWarm(const Vec2& old_origin);
@@ -201,8 +201,10 @@ class PotentialField {
   struct Norms {
     double absolute = 0.0;
     double relative = 0.0;
+    std::size_t deficit = 0;  // cells where ascent stops (AscentDeficit), when has_deficit
+    bool has_deficit = false;
   };
-  Norms ResidualNorms() const;
+  Norms ResidualNorms(bool with_deficit = false) const;
   bool ClampNegatives();
   bool DirectSolve();
   // Extended range: p_i = ScaledGoalProbability(i, ref) * 2^ref.
