@@ -50,6 +50,7 @@ row corridor50 1024 cold 1
 row corridor100 512 cold 1
 row corridor100 1024 cold 1
 for n in 70 256; do
+  row rect $n cold 2
   row rect $n change 2
   row rect $n shift 2
 done

@@ -83,6 +83,7 @@ class Hierarchy {
   // Coarsest level: dense Cholesky factor (row-major lower triangle) of its unknowns.
   std::vector<int> coarse_index_;  // cell of each coarsest unknown
   std::vector<double> chol_;
+  std::vector<double> chol_t_;  // its transpose (row k: column k of the factor)
   mutable std::vector<double> chol_rhs_;
   mutable std::vector<T> tmp_;  // a row of scratch for the kernels
   // Fine-level buffers of the full-multigrid start.
