@@ -101,6 +101,7 @@ PlanResult ColdPlan(shp::PotentialField& field, const spott_map::OccupancyRaster
                     const Scenario& s) {
   field.SetOccupancy(raster);
   field.SetGoalPoint(s.Goal());
+  field.SetStart(s.Robot());  // as navfn's makePlan gets the start
   field.ColdStart();
   PlanResult r;
   r.report = field.Solve(100000);
@@ -198,6 +199,7 @@ void Warm(benchmark::State& state, const Scenario& s, bool shift) {
     const double a = CpuUs();
     field.SetOccupancy(changed.raster);
     if (shift) field.SetGoalPoint(changed.Goal());  // same point in the map, new cell
+    field.SetStart(changed.Robot());
     r.report = field.Solve(100000);
     r.reached = field.DescendPath(changed.Robot()).reached_goal;
     total += CpuUs() - a;

@@ -367,31 +367,34 @@ void Hierarchy<T>::FactorCoarsest() {
       chol_[i * m + k] = s / d;
     }
   }
+  // L^T for the forward substitution's columns.
+  chol_t_.assign(static_cast<std::size_t>(m) * m, 0.0);
+  for (int i = 0; i < m; ++i) {
+    for (int k = 0; k <= i; ++k) chol_t_[static_cast<std::size_t>(k) * m + i] = chol_[i * m + k];
+  }
 }
 
 template <typename T>
 void Hierarchy<T>::CoarsestSolve(T* u, const T* f) const {
+  // Column-oriented substitutions: after each pivot the remaining right-hand side is updated by
+  // one contiguous axpy (a column of L, stored as a row of L^T; then a row of L), so the work is
+  // independent multiply-adds rather than one dot product's chain of dependent additions.
   const int m = static_cast<int>(coarse_index_.size());
   double* y = chol_rhs_.data();
+  for (int a = 0; a < m; ++a) y[a] = f[coarse_index_[a]];
   for (int a = 0; a < m; ++a) {
     const double d = chol_[a * m + a];
-    if (d == 0.0) {  // a dependent unknown
-      y[a] = 0.0;
-      continue;
-    }
-    double s = f[coarse_index_[a]];
-    for (int p = 0; p < a; ++p) s -= chol_[a * m + p] * y[p];
-    y[a] = s / d;
+    const double ya = d == 0.0 ? 0.0 : y[a] / d;  // a dependent unknown: its correction is 0
+    y[a] = ya;
+    const double* __restrict col = chol_t_.data() + static_cast<std::size_t>(a) * m;
+    for (int p = a + 1; p < m; ++p) y[p] -= col[p] * ya;
   }
   for (int a = m - 1; a >= 0; --a) {
     const double d = chol_[a * m + a];
-    if (d == 0.0) {
-      y[a] = 0.0;
-      continue;
-    }
-    double s = y[a];
-    for (int p = a + 1; p < m; ++p) s -= chol_[p * m + a] * y[p];
-    y[a] = s / d;
+    const double xa = d == 0.0 ? 0.0 : y[a] / d;
+    y[a] = xa;
+    const double* __restrict row = chol_.data() + static_cast<std::size_t>(a) * m;
+    for (int p = 0; p < a; ++p) y[p] -= row[p] * xa;
   }
   for (int a = 0; a < m; ++a) u[coarse_index_[a]] = static_cast<T>(y[a]);
 }

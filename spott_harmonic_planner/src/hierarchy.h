@@ -36,6 +36,8 @@ class Hierarchy {
   int levels() const { return static_cast<int>(used_); }
   std::size_t unknowns(int level) const { return levels_[level].unknowns; }
   const std::vector<Run>& runs() const { return levels_[0].runs; }
+  /// Level 0: 1 on unknowns, 0 on fixed cells.
+  const T* mask() const { return levels_[0].mask.data(); }
 
   /// e = one V-cycle(pre, post) on A e = r from e = 0 (level 0 arrays, fixed cells of e stay 0).
   void VCycle(const T* r, T* e, int pre, int post);
@@ -81,6 +83,7 @@ class Hierarchy {
   // Coarsest level: dense Cholesky factor (row-major lower triangle) of its unknowns.
   std::vector<int> coarse_index_;  // cell of each coarsest unknown
   std::vector<double> chol_;
+  std::vector<double> chol_t_;  // its transpose (row k: column k of the factor)
   mutable std::vector<double> chol_rhs_;
   mutable std::vector<T> tmp_;  // a row of scratch for the kernels
   // Fine-level buffers of the full-multigrid start.

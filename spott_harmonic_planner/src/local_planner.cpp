@@ -207,7 +207,10 @@ PlannerStatus LocalPlanner::Cycle() {
     goal_dirty_ = false;
   }
   if (field_.HasGoal() && status_.has_goal) {  // (a)
-    status_.iteration = field_.Iterate(params_.sweeps_per_cycle);
+    // Resolved where descent from the robot goes; a converged field is not iterated again until
+    // the map, the goal or the robot's place asks for more.
+    field_.SetStart(pose_.Position());
+    status_.iteration = field_.Solve(params_.sweeps_per_cycle);
   }
   status_.goal_on_border = field_.goal_on_border();
   return status_;

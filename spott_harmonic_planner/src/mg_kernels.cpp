@@ -1,6 +1,9 @@
 #include "mg_kernels.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 // Two builds of every kernel on x86-64 (AVX2 + FMA, and the baseline), chosen at load time.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(SPOTT_NO_CLONES)
@@ -16,45 +19,112 @@ namespace spott_harmonic_planner::internal::kernels {
 
 namespace {
 
+// The colour passes on GCC's 32-byte vector types (8 floats or 4 doubles): each step computes
+// a vector of cells and blends the colour's cells into the row in place. That is exact
+// Gauss-Seidel: a cell of the colour reads only cells of other colours, which the pass writes
+// back unchanged (the next step's loads may see this step's stores). Scalar steps end a run.
+// (The auto-vectorized form needed a second pass through a scratch row.)
+// Every function taking or returning a vector is inlined: no call passes one (-Wpsabi warns
+// about the ABI of such calls in the baseline build).
+#pragma GCC diagnostic ignored "-Wpsabi"
 template <typename T>
-inline void Colour5T(T* u, const T* f, const T* mask, int nx, const Run* runs, std::size_t count,
-                     int colour, T* __restrict tmp) {
+struct Vec;
+template <>
+struct Vec<float> {
+  typedef float type __attribute__((vector_size(32)));
+  typedef std::int32_t mask __attribute__((vector_size(32)));
+  static constexpr int kLanes = 8;
+};
+template <>
+struct Vec<double> {
+  typedef double type __attribute__((vector_size(32)));
+  typedef std::int64_t mask __attribute__((vector_size(32)));
+  static constexpr int kLanes = 4;
+};
+
+template <typename T>
+__attribute__((always_inline)) inline typename Vec<T>::type Ld(const T* p) {
+  typename Vec<T>::type v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <typename T>
+__attribute__((always_inline)) inline void St(T* p, typename Vec<T>::type v) {
+  std::memcpy(p, &v, sizeof v);
+}
+// Lanes whose index has parity `parity` (the steps start at even offsets).
+template <typename T>
+__attribute__((always_inline)) inline typename Vec<T>::mask Parity(int parity) {
+  typename Vec<T>::mask m;
+  for (int j = 0; j < Vec<T>::kLanes; ++j) m[j] = (j & 1) == parity ? -1 : 0;
+  return m;
+}
+
+template <typename T>
+__attribute__((always_inline)) inline void Colour5T(T* u, const T* f, const T* mask, int nx,
+                                                    const Run* runs, std::size_t count,
+                                                    int colour) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
     const int len = run.x1 - run.x0;
     T* row = u + base + run.x0;
-    const T* __restrict up = row + nx;
-    const T* __restrict down = row - nx;
-    const T* __restrict fr = f + base + run.x0;
-    if (mask) {
-      const T* __restrict m = mask + base + run.x0;
-      for (int k = 0; k < len; ++k) {
-        tmp[k] = m[k] * (T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k]);
-      }
-    } else {
-      for (int k = 0; k < len; ++k) {
-        tmp[k] = T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k];
-      }
-    }
+    const T* up = row + nx;
+    const T* down = row - nx;
+    const T* fr = f + base + run.x0;
+    const T* m = mask ? mask + base + run.x0 : nullptr;
     const int parity = ((run.x0 + run.y) & 1) == colour ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      V v = T(0.25) * ((Ld(row + k - 1) + Ld(row + k + 1)) + (Ld(down + k) + Ld(up + k))) +
+            Ld(fr + k);
+      if (m) v *= Ld(m + k);
+      St(row + k, sel ? v : Ld(row + k));
+    }
+    for (k += (k & 1) != parity ? 1 : 0; k < len; k += 2) {
+      const T v = T(0.25) * ((row[k - 1] + row[k + 1]) + (down[k] + up[k])) + fr[k];
+      row[k] = m ? m[k] * v : v;
+    }
   }
 }
 
+// The first red-black sweep from u = 0, in one pass: colour 0 becomes f, colour 1 the mean of
+// those plus f (f is 0 on fixed cells, and so is u wherever this pass does not write).
 template <typename T>
-inline void FirstSweep5T(T* u, const T* f, const T* mask, int nx, const Run* runs,
-                         std::size_t count, T* __restrict tmp) {
+__attribute__((always_inline)) inline void FirstSweep5T(T* u, const T* f, const T* mask, int nx,
+                                                        const Run* runs, std::size_t count) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
-    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx;
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const int len = run.x1 - run.x0;
-    T* __restrict row = u + base + run.x0;
-    const T* __restrict fr = f + base + run.x0;  // zero on fixed cells
-    const int parity = ((run.x0 + run.y) & 1) == 0 ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? fr[k] : T(0);
+    T* __restrict row = u + base;
+    const T* __restrict fr = f + base;
+    const T* __restrict fu = fr + nx;
+    const T* __restrict fd = fr - nx;
+    const T* __restrict m = mask ? mask + base : nullptr;
+    const int parity = ((run.x0 + run.y) & 1) == 0 ? 0 : 1;  // the lanes of colour 0
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      const V fk = Ld(fr + k);
+      V v = T(0.25) * ((Ld(fr + k - 1) + Ld(fr + k + 1)) + (Ld(fd + k) + Ld(fu + k))) + fk;
+      if (m) v *= Ld(m + k);
+      St(row + k, sel ? fk : v);
+    }
+    for (; k < len; ++k) {
+      if ((k & 1) == parity) {
+        row[k] = fr[k];
+      } else {
+        const T v = T(0.25) * ((fr[k - 1] + fr[k + 1]) + (fd[k] + fu[k])) + fr[k];
+        row[k] = m ? m[k] * v : v;
+      }
+    }
   }
-  Colour5T(u, f, mask, nx, runs, count, 1, tmp);
 }
 
 template <typename T>
@@ -91,33 +161,44 @@ inline T Apply9(const T* row, const T* up, const T* down, const Stencil9<T>& a, 
 }
 
 template <typename T>
-inline void Colour9T(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, int py,
-                     const Stencil9<T>& a, T* __restrict tmp) {
+__attribute__((always_inline)) inline void Colour9T(T* u, const T* f, int nx, const Run* runs,
+                                                    std::size_t count, int px, int py,
+                                                    const Stencil9<T>& a) {
+  using V = typename Vec<T>::type;
+  constexpr int L = Vec<T>::kLanes;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     if ((run.y & 1) != py) continue;
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const int len = run.x1 - run.x0;
     T* row = u + base;
-    const T* __restrict up = row + nx;
-    const T* __restrict down = row - nx;
-    const T* __restrict fr = f + base;
-    const T* __restrict id = a.inv_diag + base;
-    const T* __restrict e = a.e + base;
-    const T* __restrict n = a.n + base;
-    const T* __restrict nd = a.n + base - nx;
-    const T* __restrict ne = a.ne + base;
-    const T* __restrict ned = a.ne + base - nx - 1;
-    const T* __restrict nw = a.nw + base;
-    const T* __restrict nwd = a.nw + base - nx + 1;
-    for (int k = 0; k < len; ++k) {
+    const T* up = row + nx;
+    const T* down = row - nx;
+    const T* fr = f + base;
+    const T* id = a.inv_diag + base;
+    const T* e = a.e + base;
+    const T* n = a.n + base;
+    const T* nd = a.n + base - nx;
+    const T* ne = a.ne + base;
+    const T* ned = a.ne + base - nx - 1;
+    const T* nw = a.nw + base;
+    const T* nwd = a.nw + base - nx + 1;
+    const int parity = (run.x0 & 1) == px ? 0 : 1;
+    const auto sel = Parity<T>(parity);
+    int k = 0;
+    for (; k + L <= len; k += L) {
+      const V s = Ld(e + k) * Ld(row + k + 1) + Ld(e + k - 1) * Ld(row + k - 1) +
+                  Ld(n + k) * Ld(up + k) + Ld(nd + k) * Ld(down + k) + Ld(ne + k) * Ld(up + k + 1) +
+                  Ld(ned + k) * Ld(down + k - 1) + Ld(nw + k) * Ld(up + k - 1) +
+                  Ld(nwd + k) * Ld(down + k + 1);
+      St(row + k, sel ? Ld(id + k) * (Ld(fr + k) - s) : Ld(row + k));
+    }
+    for (k += (k & 1) != parity ? 1 : 0; k < len; k += 2) {
       const T s = e[k] * row[k + 1] + e[k - 1] * row[k - 1] + n[k] * up[k] + nd[k] * down[k] +
                   ne[k] * up[k + 1] + ned[k] * down[k - 1] + nw[k] * up[k - 1] +
                   nwd[k] * down[k + 1];
-      tmp[k] = id[k] * (fr[k] - s);
+      row[k] = id[k] * (fr[k] - s);
     }
-    const int parity = (run.x0 & 1) == px ? 0 : 1;
-    for (int k = 0; k < len; ++k) row[k] = (k & 1) == parity ? tmp[k] : row[k];
   }
 }
 
@@ -216,9 +297,22 @@ inline void ProlongateT(const T* uc, int cnx, T* u, const T* mask, int fnx, cons
     }
     // Fine x = 2 X0 + j: j even -> cr[j / 2], j odd -> mean of cr[j / 2], cr[j / 2 + 1].
     T* __restrict ex = tmp + m + 1;
-    for (int k = 0; k + 1 < m; ++k) {
-      ex[2 * k] = cr[k];
-      ex[2 * k + 1] = T(0.5) * (cr[k] + cr[k + 1]);
+    int k = 0;
+    if constexpr (std::is_same_v<T, float>) {
+      // Eight coarse values and their midpoints interleaved by two shuffles (the steps may run
+      // past m - 1 in the scratch row: those entries are not read).
+      using V = Vec<float>::type;
+      using M = Vec<float>::mask;
+      for (; k + 1 < m; k += 8) {
+        const V a = Ld(cr + k), mid = T(0.5) * (a + Ld(cr + k + 1));
+        St(ex + 2 * k, __builtin_shuffle(a, mid, M{0, 8, 1, 9, 2, 10, 3, 11}));
+        St(ex + 2 * k + 8, __builtin_shuffle(a, mid, M{4, 12, 5, 13, 6, 14, 7, 15}));
+      }
+    } else {
+      for (; k + 1 < m; ++k) {
+        ex[2 * k] = cr[k];
+        ex[2 * k + 1] = T(0.5) * (cr[k] + cr[k + 1]);
+      }
     }
     ex[2 * (m - 1)] = cr[m - 1];
     const int off = run.x0 - 2 * X0;  // 0 or 1
@@ -305,7 +399,8 @@ inline void GalerkinYT(const Rows& b, T* __restrict diag, T* __restrict inv_diag
 #define SPOTT_KERNELS(T)                                                                          \
   SPOTT_CLONES void Colour5(T* u, const T* f, const T* mask, int nx, const Run* runs,             \
                             std::size_t count, int colour, T* tmp) {                              \
-    Colour5T(u, f, mask, nx, runs, count, colour, tmp);                                           \
+    (void)tmp;                                                                                    \
+    Colour5T(u, f, mask, nx, runs, count, colour);                                                \
   }                                                                                               \
   SPOTT_CLONES void Residual5(const T* u, const T* f, const T* mask, T* r, int nx,                \
                               const Run* runs, std::size_t count) {                               \
@@ -313,7 +408,8 @@ inline void GalerkinYT(const Rows& b, T* __restrict diag, T* __restrict inv_diag
   }                                                                                               \
   SPOTT_CLONES void Colour9(T* u, const T* f, int nx, const Run* runs, std::size_t count, int px, \
                             int py, const Stencil9<T>& a, T* tmp) {                               \
-    Colour9T(u, f, nx, runs, count, px, py, a, tmp);                                              \
+    (void)tmp;                                                                                    \
+    Colour9T(u, f, nx, runs, count, px, py, a);                                                   \
   }                                                                                               \
   SPOTT_CLONES void Residual9(const T* u, const T* f, T* r, int nx, const Run* runs,              \
                               std::size_t count, const Stencil9<T>& a) {                          \
@@ -402,7 +498,8 @@ SPOTT_CLONES void GalerkinY(const GalerkinRowsD& b, double* diag, double* inv_di
 
 SPOTT_CLONES void FirstSweep5(float* u, const float* f, const float* mask, int nx, const Run* runs,
                               std::size_t count, float* tmp) {
-  FirstSweep5T(u, f, mask, nx, runs, count, tmp);
+  (void)tmp;
+  FirstSweep5T(u, f, mask, nx, runs, count);
 }
 
 namespace {
@@ -445,20 +542,140 @@ inline double SumOf(const double* v) {
   return s;
 }
 
-// |r| / u, infinite where u <= 0 and r != 0 (infinitely wrong relative to the cell's value);
-// branch-free selects, so the loops around it vectorize.
-inline double Relative(double a, double u) {
-  constexpr double kInf = __builtin_inf();
-  const double safe = u > 0.0 ? u : 1.0;
-  const double ratio = a / safe;
-  const double big = a > 0.0 ? kInf : 0.0;
-  return u > 0.0 ? ratio : big;
+// The conjugate-gradient passes in double: written on GCC's vector type of four doubles
+// (an AVX2 register in the x86-64-v3 clone, two SSE2 registers in the baseline one), one
+// vector of cells per step and scalar steps for a run's last cells. (Auto-vectorization of the
+// 8-lane blocks above re-checked pointer aliasing in every block.)
+typedef double V4 __attribute__((vector_size(32)));
+typedef float F4 __attribute__((vector_size(16)));
+
+template <typename V>
+__attribute__((always_inline)) inline V Load(const double* p) {
+  if constexpr (std::is_same_v<V, double>) {
+    return *p;
+  } else {
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V LoadF(const float* p) {
+  if constexpr (std::is_same_v<V, double>) {
+    return static_cast<double>(*p);
+  } else {
+    // (GCC 12 turns __builtin_convertvector of a loaded F4 into two half conversions; this form
+    // is one vcvtps2pd from memory.)
+    return V4{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]),
+              static_cast<double>(p[3])};
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline void Store(double* p, V v) {
+  if constexpr (std::is_same_v<V, double>) {
+    *p = v;
+  } else {
+    std::memcpy(p, &v, sizeof v);
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline void StoreF(float* p, V v) {
+  if constexpr (std::is_same_v<V, double>) {
+    *p = static_cast<float>(v);
+  } else {
+    const F4 f = __builtin_convertvector(v, F4);
+    std::memcpy(p, &f, sizeof f);
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V Splat(double x) {
+  if constexpr (std::is_same_v<V, double>) {
+    return x;
+  } else {
+    return V4{x, x, x, x};
+  }
+}
+template <typename V>
+__attribute__((always_inline)) inline V Max(V a, V b) {
+  return a > b ? a : b;
 }
 
-template <bool kNine>
-inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const Run* runs,
-                           std::size_t count) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+// body(V(), k) for k in [0, len): vectors of four cells, then single cells.
+template <typename Body>
+__attribute__((always_inline)) inline void ForVectors(int len, Body&& body) {
+  int k = 0;
+  for (; k + 4 <= len; k += 4) body(V4{}, k);
+  for (; k < len; ++k) body(0.0, k);
+}
+
+// Reductions kept per lane (a vector and a scalar), combined at the end.
+struct MaxPair {
+  V4 v = {0.0, 0.0, 0.0, 0.0};
+  double s = 0.0;
+  template <typename V>
+  __attribute__((always_inline)) void Add(V x) {
+    if constexpr (std::is_same_v<V, double>) {
+      s = x > s ? x : s;
+    } else {
+      v = Max(v, x);
+    }
+  }
+  double Value() const {
+    const double a = v[0] > v[1] ? v[0] : v[1], b = v[2] > v[3] ? v[2] : v[3];
+    const double c = a > b ? a : b;
+    return c > s ? c : s;
+  }
+};
+struct SumPair {
+  V4 v = {0.0, 0.0, 0.0, 0.0};
+  double s = 0.0;
+  template <typename V>
+  __attribute__((always_inline)) void Add(V x) {
+    if constexpr (std::is_same_v<V, double>) {
+      s += x;
+    } else {
+      v += x;
+    }
+  }
+  double Value() const { return ((v[0] + v[1]) + (v[2] + v[3])) + s; }
+};
+
+// |r| / max(u, floor), infinite where that is <= 0 and r != 0 (infinitely wrong relative to
+// the cell's value); branch-free selects.
+template <typename V>
+__attribute__((always_inline)) inline V Relative(V a, V u, double floor) {
+  const V zero = Splat<V>(0.0), f = Splat<V>(floor);
+  const V w = u > f ? u : f;
+  const V safe = w > zero ? w : Splat<V>(1.0);
+  const V ratio = a / safe;
+  const V big = a > zero ? Splat<V>(__builtin_inf()) : zero;
+  return w > zero ? ratio : big;
+}
+
+template <bool kNine, typename V, typename T>
+__attribute__((always_inline)) inline V MeanV(const T* row, const T* up, const T* down, int k) {
+  const auto ld = [](const T* p) {
+    if constexpr (std::is_same_v<T, float>) {
+      return LoadF<V>(p);
+    } else {
+      return Load<V>(p);
+    }
+  };
+  if constexpr (kNine) {
+    return Splat<V>(0.2) * ((ld(row + k - 1) + ld(row + k + 1)) + (ld(down + k) + ld(up + k))) +
+           Splat<V>(0.05) *
+               ((ld(down + k - 1) + ld(down + k + 1)) + (ld(up + k - 1) + ld(up + k + 1)));
+  } else {
+    return Splat<V>(0.25) * ((ld(row + k - 1) + ld(row + k + 1)) + (ld(down + k) + ld(up + k)));
+  }
+}
+
+template <bool kNine, bool kMasked>
+__attribute__((always_inline)) inline Norms TrueResidualT(const double* u, double* r, float* rs,
+                                                          const float* mask, int nx,
+                                                          const Run* runs, std::size_t count,
+                                                          double floor) {
+  MaxPair wa, wr;
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -467,37 +684,82 @@ inline Norms TrueResidualT(const double* u, double* r, float* rs, int nx, const 
     const double* __restrict down = row - nx;
     double* __restrict rr = r + base;
     float* __restrict rf = rs + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double v = Mean<kNine>(row, up, down, k) - row[k];
-      rr[k] = v;
-      rf[k] = static_cast<float>(v);
-      const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k]);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    const float* __restrict m = kMasked ? mask + base : nullptr;
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      V v = MeanV<kNine, V>(row, up, down, k) - Load<V>(row + k);
+      if constexpr (kMasked) v *= LoadF<V>(m + k);
+      Store(rr + k, v);
+      StoreF(rf + k, v);
+      const V a = v < Splat<V>(0.0) ? -v : v;
+      wa.Add(a);
+      wr.Add(Relative(a, Load<V>(row + k), floor));
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  return {wa.Value(), wr.Value()};
 }
 
-template <bool kNine>
-inline Norms ResidualNormsT(const double* u, int nx, const Run* runs, std::size_t count) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+template <bool kNine, bool kDeficit>
+__attribute__((always_inline)) inline Norms ResidualNormsT(const double* u, int nx, const Run* runs,
+                                                           std::size_t count, double floor) {
+  MaxPair wa, wr;
+  SumPair stuck;  // kDeficit: cells judged (>= floor) without a strictly higher 4-neighbour
   for (std::size_t q = 0; q < count; ++q) {
     const Run& run = runs[q];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const double* __restrict row = u + base;
     const double* __restrict up = row + nx;
     const double* __restrict down = row - nx;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double v = Mean<kNine>(row, up, down, k) - row[k];
-      const double a = v < 0 ? -v : v;
-      const double rel = Relative(a, row[k]);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V c = Load<V>(row + k);
+      const V v = MeanV<kNine, V>(row, up, down, k) - c;
+      const V a = v < Splat<V>(0.0) ? -v : v;
+      wa.Add(a);
+      wr.Add(Relative(a, c, floor));
+      if constexpr (kDeficit) {
+        const V best = Max(Max(Load<V>(row + k - 1), Load<V>(row + k + 1)),
+                           Max(Load<V>(down + k), Load<V>(up + k)));
+        const V zero = Splat<V>(0.0), one = Splat<V>(1.0);
+        if constexpr (std::is_same_v<V, double>) {
+          const bool bad = (floor <= 0.0 || c >= floor) && (!(best > c) || !(c > 0.0));
+          stuck.Add(bad ? 1.0 : 0.0);
+        } else {
+          const auto judged = floor <= 0.0 ? (c == c) : (c >= Splat<V>(floor));
+          const auto bad = judged & ((best <= c) | (c <= zero));
+          stuck.Add(bad ? one : zero);
+        }
+      }
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  Norms n{wa.Value(), wr.Value()};
+  if constexpr (kDeficit) n.deficit = static_cast<std::size_t>(stuck.Value());
+  return n;
+}
+
+inline std::size_t AscentDeficitT(const double* u, int nx, const Run* runs, std::size_t count,
+                                  double floor) {
+  std::size_t deficit = 0;
+  for (std::size_t q = 0; q < count; ++q) {
+    const Run& run = runs[q];
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
+    const double* __restrict row = u + base;
+    const double* __restrict up = row + nx;
+    const double* __restrict down = row - nx;
+    const int len = run.x1 - run.x0;
+    std::uint32_t bad = 0;
+    for (int k = 0; k < len; ++k) {
+      const double a = row[k - 1] > row[k + 1] ? row[k - 1] : row[k + 1];
+      const double b = down[k] > up[k] ? down[k] : up[k];
+      const double best = a > b ? a : b;
+      const double v = row[k];
+      const bool counted = floor <= 0.0 || v >= floor;  // below the focus: not needed
+      const bool stuck = !(best > v) || !(v > 0.0);
+      bad += (counted && stuck) ? 1u : 0u;
+    }
+    deficit += bad;
+  }
+  return deficit;
 }
 
 template <bool kNine>
@@ -519,10 +781,11 @@ inline void RegularT(const std::uint8_t* active, std::uint8_t* regular, int nx, 
   }
 }
 
-template <bool kNine>
-inline double DirectionT(const float* z, double* d, double* q, double beta, int nx, const Run* runs,
-                         std::size_t count) {
-  double dq[kLanes] = {};
+template <bool kNine, bool kMasked>
+__attribute__((always_inline)) inline double DirectionT(const float* z, double* d, double* q,
+                                                        const float* mask, double beta, int nx,
+                                                        const Run* runs, std::size_t count) {
+  SumPair dq;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -531,21 +794,28 @@ inline double DirectionT(const float* z, double* d, double* q, double beta, int 
     const float* __restrict down = row - nx;
     double* __restrict dd = d + base;
     double* __restrict qq = q + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double az = static_cast<double>(row[k]) - Mean<kNine>(row, up, down, k);
-      const double dn = static_cast<double>(row[k]) + beta * dd[k];
-      const double qn = az + beta * qq[k];
-      dd[k] = dn;
-      qq[k] = qn;
-      dq[j] += dn * qn;
+    const float* __restrict m = kMasked ? mask + base : nullptr;
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V zk = LoadF<V>(row + k);
+      V az = zk - MeanV<kNine, V>(row, up, down, k);
+      if constexpr (kMasked) az *= LoadF<V>(m + k);
+      const V b = Splat<V>(beta);
+      const V dn = zk + b * Load<V>(dd + k);
+      const V qn = az + b * Load<V>(qq + k);
+      Store(dd + k, dn);
+      Store(qq + k, qn);
+      dq.Add(dn * qn);
     });
   }
-  return SumOf(dq);
+  return dq.Value();
 }
 
-inline Norms UpdateT(double* u, const double* d, double* r, const double* q, float* rs,
-                     double alpha, int nx, const Run* runs, std::size_t count) {
-  double wa[kLanes] = {}, wr[kLanes] = {};
+__attribute__((always_inline)) inline Norms UpdateT(double* u, const double* d, double* r,
+                                                    const double* q, float* rs, double alpha,
+                                                    int nx, const Run* runs, std::size_t count,
+                                                    double floor) {
+  MaxPair wa, wr;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
@@ -554,51 +824,68 @@ inline Norms UpdateT(double* u, const double* d, double* r, const double* q, flo
     double* __restrict rr = r + base;
     const double* __restrict qq = q + base;
     float* __restrict rf = rs + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      const double un = uu[k] + alpha * dd[k];
-      const double rn = rr[k] - alpha * qq[k];
-      uu[k] = un;
-      rr[k] = rn;
-      rf[k] = static_cast<float>(rn);
-      const double a = rn < 0 ? -rn : rn;
-      const double rel = Relative(a, un);
-      wa[j] = a > wa[j] ? a : wa[j];
-      wr[j] = rel > wr[j] ? rel : wr[j];
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V al = Splat<V>(alpha);
+      const V un = Load<V>(uu + k) + al * Load<V>(dd + k);
+      const V rn = Load<V>(rr + k) - al * Load<V>(qq + k);
+      Store(uu + k, un);
+      Store(rr + k, rn);
+      StoreF(rf + k, rn);
+      const V a = rn < Splat<V>(0.0) ? -rn : rn;
+      wa.Add(a);
+      wr.Add(Relative(a, un, floor));
     });
   }
-  return {MaxOf(wa), MaxOf(wr)};
+  return {wa.Value(), wr.Value()};
 }
 
-inline void DotsT(const double* r, const float* z, const float* z_old, int nx, const Run* runs,
-                  std::size_t count, double* rz, double* rz_old) {
-  double a[kLanes] = {}, b[kLanes] = {};
+__attribute__((always_inline)) inline void DotsT(const double* r, const float* z,
+                                                 const float* z_old, int nx, const Run* runs,
+                                                 std::size_t count, double* rz, double* rz_old) {
+  SumPair a, b;
   for (std::size_t c = 0; c < count; ++c) {
     const Run& run = runs[c];
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx + run.x0;
     const double* __restrict rr = r + base;
     const float* __restrict zz = z + base;
     const float* __restrict zo = z_old + base;
-    ForLanes(run.x1 - run.x0, [&](int k, int j) {
-      a[j] += rr[k] * static_cast<double>(zz[k]);
-      b[j] += rr[k] * static_cast<double>(zo[k]);
+    ForVectors(run.x1 - run.x0, [&](auto tag, int k) {
+      using V = decltype(tag);
+      const V rk = Load<V>(rr + k);
+      a.Add(rk * LoadF<V>(zz + k));
+      b.Add(rk * LoadF<V>(zo + k));
     });
   }
-  *rz = SumOf(a);
-  *rz_old = SumOf(b);
+  *rz = a.Value();
+  *rz_old = b.Value();
 }
 
 }  // namespace
 
-SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
-                                std::size_t count, bool nine) {
-  return nine ? TrueResidualT<true>(u, r, rs, nx, runs, count)
-              : TrueResidualT<false>(u, r, rs, nx, runs, count);
+SPOTT_CLONES Norms TrueResidual(const double* u, double* r, float* rs, const float* mask, int nx,
+                                const Run* runs, std::size_t count, bool nine, double floor) {
+  if (mask) {
+    return nine ? TrueResidualT<true, true>(u, r, rs, mask, nx, runs, count, floor)
+                : TrueResidualT<false, true>(u, r, rs, mask, nx, runs, count, floor);
+  }
+  return nine ? TrueResidualT<true, false>(u, r, rs, mask, nx, runs, count, floor)
+              : TrueResidualT<false, false>(u, r, rs, mask, nx, runs, count, floor);
 }
 
 SPOTT_CLONES Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count,
-                                 bool nine) {
-  return nine ? ResidualNormsT<true>(u, nx, runs, count)
-              : ResidualNormsT<false>(u, nx, runs, count);
+                                 bool nine, double floor, bool with_deficit) {
+  if (with_deficit) {
+    return nine ? ResidualNormsT<true, true>(u, nx, runs, count, floor)
+                : ResidualNormsT<false, true>(u, nx, runs, count, floor);
+  }
+  return nine ? ResidualNormsT<true, false>(u, nx, runs, count, floor)
+              : ResidualNormsT<false, false>(u, nx, runs, count, floor);
+}
+
+SPOTT_CLONES std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t count,
+                                       double floor) {
+  return AscentDeficitT(u, nx, runs, count, floor);
 }
 
 SPOTT_CLONES void Regular(const std::uint8_t* active, std::uint8_t* regular, int nx,
@@ -607,15 +894,19 @@ SPOTT_CLONES void Regular(const std::uint8_t* active, std::uint8_t* regular, int
        : RegularT<false>(active, regular, nx, runs, count);
 }
 
-SPOTT_CLONES double Direction(const float* z, double* d, double* q, double beta, int nx,
-                              const Run* runs, std::size_t count, bool nine) {
-  return nine ? DirectionT<true>(z, d, q, beta, nx, runs, count)
-              : DirectionT<false>(z, d, q, beta, nx, runs, count);
+SPOTT_CLONES double Direction(const float* z, double* d, double* q, const float* mask, double beta,
+                              int nx, const Run* runs, std::size_t count, bool nine) {
+  if (mask) {
+    return nine ? DirectionT<true, true>(z, d, q, mask, beta, nx, runs, count)
+                : DirectionT<false, true>(z, d, q, mask, beta, nx, runs, count);
+  }
+  return nine ? DirectionT<true, false>(z, d, q, mask, beta, nx, runs, count)
+              : DirectionT<false, false>(z, d, q, mask, beta, nx, runs, count);
 }
 
 SPOTT_CLONES Norms Update(double* u, const double* d, double* r, const double* q, float* rs,
-                          double alpha, int nx, const Run* runs, std::size_t count) {
-  return UpdateT(u, d, r, q, rs, alpha, nx, runs, count);
+                          double alpha, int nx, const Run* runs, std::size_t count, double floor) {
+  return UpdateT(u, d, r, q, rs, alpha, nx, runs, count, floor);
 }
 
 SPOTT_CLONES void Dots(const double* r, const float* z, const float* z_old, int nx, const Run* runs,

@@ -116,22 +116,35 @@ void SetBlocked(const std::uint8_t* cells, std::uint8_t* blocked, std::uint8_t* 
 // the normalized 5-point (nine = false) or 9-point stencil; fixed cells of every vector are 0.
 struct Norms {
   double absolute = 0.0;  ///< max |r|
-  double relative = 0.0;  ///< max |r| / u (infinite where u <= 0 and r != 0)
+  /// max |r| / max(u, floor) (infinite where that is <= 0 and r != 0): relative to each cell's
+  /// value, or to `floor` where the value is smaller (the field's start focus; 0: none).
+  double relative = 0.0;
+  /// ResidualNorms with `with_deficit`: the unknowns AscentDeficit counts.
+  std::size_t deficit = 0;
 };
-/// r = M u - u (u holds the Dirichlet values on fixed cells); rs = (float) r; returns the norms.
-Norms TrueResidual(const double* u, double* r, float* rs, int nx, const Run* runs,
-                   std::size_t count, bool nine);
-/// The norms of M u - u without storing it.
-Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count, bool nine);
+// The conjugate-gradient kernels may run over spans that hold fixed cells too (one span over
+// the whole interior of a mostly free window: no loop start per row): `mask` (1 on unknowns, 0
+// on fixed cells) then keeps r and q at 0 there, and d, q, r stay 0 on fixed cells.
+/// r = M u - u (u holds the Dirichlet values on fixed cells), times `mask` when given;
+/// rs = (float) r; returns the norms.
+Norms TrueResidual(const double* u, double* r, float* rs, const float* mask, int nx,
+                   const Run* runs, std::size_t count, bool nine, double floor);
+/// The norms of M u - u without storing it (and the ascent deficit in the same pass).
+Norms ResidualNorms(const double* u, int nx, const Run* runs, std::size_t count, bool nine,
+                    double floor, bool with_deficit = false);
+/// Unknowns with u >= floor (all of them when floor is 0) that have u <= 0 or no strictly larger
+/// 4-neighbour: the cells where discrete ascent towards the goal could stop.
+std::size_t AscentDeficit(const double* u, int nx, const Run* runs, std::size_t count,
+                          double floor);
 /// regular[i] = the unknown i has all its stencil neighbours unknowns too (level 0).
 void Regular(const std::uint8_t* active, std::uint8_t* regular, int nx, const Run* runs,
              std::size_t count, bool nine);
-/// d = z + beta d, q = A z + beta q; returns d . q.
-double Direction(const float* z, double* d, double* q, double beta, int nx, const Run* runs,
-                 std::size_t count, bool nine);
+/// d = z + beta d, q = A z + beta q (A z times `mask` when given); returns d . q.
+double Direction(const float* z, double* d, double* q, const float* mask, double beta, int nx,
+                 const Run* runs, std::size_t count, bool nine);
 /// u += alpha d, r -= alpha q, rs = (float) r; returns the norms of the new r.
 Norms Update(double* u, const double* d, double* r, const double* q, float* rs, double alpha,
-             int nx, const Run* runs, std::size_t count);
+             int nx, const Run* runs, std::size_t count, double floor);
 /// Sum r z and sum r z_old.
 void Dots(const double* r, const float* z, const float* z_old, int nx, const Run* runs,
           std::size_t count, double* rz, double* rz_old);

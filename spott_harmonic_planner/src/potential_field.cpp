@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <queue>
 #include <sstream>
@@ -41,6 +42,11 @@ std::vector<std::string> ValidateFieldOptions(const FieldOptions& o) {
     s << "tolerance must be in (0, 1) (got " << o.tolerance << ")";
     v.push_back(s.str());
   }
+  if (!(o.start_fraction >= 0.0 && o.start_fraction <= 1.0)) {
+    std::ostringstream s;
+    s << "start_fraction must be in [0, 1] (got " << o.start_fraction << ")";
+    v.push_back(s.str());
+  }
   if (!(o.heuristic_decay_per_cell > 0.0 && o.heuristic_decay_per_cell <= 10.0)) {
     std::ostringstream s;
     s << "heuristic_decay_per_cell must be in (0, 10] (got " << o.heuristic_decay_per_cell << ")";
@@ -73,6 +79,7 @@ void PotentialField::SetOccupancy(const spott_map::OccupancyRaster& raster) {
   const bool same_size =
       raster.width() == width_ && raster.height() == height_ && raster.resolution() == resolution_;
   const Vec2 old_origin = origin_;
+  if (!same_geometry) start_ = kNoCell;  // its cell index means another place now
   width_ = raster.width();
   height_ = raster.height();
   resolution_ = raster.resolution();
@@ -219,24 +226,46 @@ void PotentialField::RebuildMask(bool kinds_fresh) {
       if (unreached(Index(nx, ny))) fill_stack_.push_back({ny, nx, nx + 1});
     }
   }
+  // Eight kind bytes at a time (the scans below dominate a map update in open space).
+  constexpr std::uint64_t kOnes = 0x0101010101010101ull;
+  constexpr std::uint64_t kAllUnreached = 3 * kOnes;
+  const auto word = [kind](std::size_t i) {
+    std::uint64_t w;
+    std::memcpy(&w, kind + i, 8);
+    return w;
+  };
+  // First x in [x, to) that is not unreached / that is unreached.
+  const auto skip_unreached = [&](std::size_t b, int x, int to) {
+    while (x + 8 <= to && word(b + x) == kAllUnreached) x += 8;
+    while (x < to && unreached(b + x)) ++x;
+    return x;
+  };
+  const auto find_unreached = [&](std::size_t b, int x, int to) {
+    while (x + 8 <= to) {
+      const std::uint64_t v = word(b + x) ^ kAllUnreached;  // a zero byte where unreached
+      if ((v - kOnes) & ~v & (kOnes << 7)) break;
+      x += 8;
+    }
+    while (x < to && !unreached(b + x)) ++x;
+    return x;
+  };
   while (!fill_stack_.empty()) {
     const FreeRun seed = fill_stack_.back();
     fill_stack_.pop_back();
     const std::size_t base = Index(0, seed.y);
     if (!unreached(base + seed.x0)) continue;
-    int l = seed.x0, r = seed.x0 + 1;
+    int l = seed.x0;
     while (unreached(base + l - 1)) --l;  // the ring is blocked: no bounds checks needed
-    while (unreached(base + r)) ++r;
+    const int r = skip_unreached(base, seed.x0 + 1, width_ - 1);
     std::fill(kind + base + l, kind + base + r, FieldCell::kFree);
     free_runs_.push_back({seed.y, l, r});
     const int from = eight ? l - 1 : l, to = eight ? r + 1 : r;  // neighbours in rows y -+ 1
     for (int dy : {-1, 1}) {
       const int y = seed.y + dy;
       const std::size_t b = Index(0, y);
-      for (int x = from; x < to; ++x) {
-        if (!unreached(b + x)) continue;
+      for (int x = find_unreached(b, from, to); x < to; x = find_unreached(b, x, to)) {
         fill_stack_.push_back({y, x, x + 1});
-        while (x < to && unreached(b + x)) ++x;
+        x = skip_unreached(b, x, to);
       }
     }
   }
@@ -251,11 +280,14 @@ void PotentialField::RebuildMask(bool kinds_fresh) {
   }
   // p = 0 where the previous mask had an unknown that is now fixed (kept where it stays free:
   // the warm start).
+  static_assert(static_cast<int>(FieldCell::kFree) == 0 && static_cast<int>(FieldCell::kGoal) == 2,
+                "free and goal: the kinds with bit 0 clear");
+  const auto* kind_bytes = reinterpret_cast<const std::uint8_t*>(kind);
   for (const FreeRun& run : previous_runs_) {
     const std::size_t b = Index(0, run.y);
-    for (int x = run.x0; x < run.x1; ++x) {
-      if (kind[b + x] != FieldCell::kFree && kind[b + x] != FieldCell::kGoal) p_[b + x] = 0.0;
-    }
+    double* __restrict pr = p_.data() + b;
+    const std::uint8_t* __restrict kr = kind_bytes + b;
+    for (int x = run.x0; x < run.x1; ++x) pr[x] = (kr[x] & 1) ? 0.0 : pr[x];
   }
   solver_ready_ = false;
   polish_ready_ = false;
@@ -271,8 +303,11 @@ void PotentialField::RebuildMask(bool kinds_fresh) {
 bool PotentialField::SetGoalPoint(const Vec2& p) {
   const auto c = CellOf(p);
   if (!c || blocked_[Index(c->first, c->second)]) return false;
+  const std::size_t cell = Index(c->first, c->second);
+  // The same goal again (a re-placed goal after a map update): the mask is already its own.
+  if (!goal_on_border_ && goal_cells_.size() == 1 && goal_cells_[0] == cell) return true;
   for (std::size_t i : goal_cells_) p_[i] = 0.0;
-  goal_cells_ = {Index(c->first, c->second)};
+  goal_cells_ = {cell};
   goal_on_border_ = false;
   RebuildMask(false);
   return true;
@@ -294,11 +329,51 @@ bool PotentialField::SetGoalSegment(const spott_map::Segment& s, double half_wid
     }
   }
   if (cells.empty()) return false;
+  if (goal_on_border_ && cells == goal_cells_) return true;  // the same goal again
   for (std::size_t i : goal_cells_) p_[i] = 0.0;
   goal_cells_ = cells;
   goal_on_border_ = true;
   RebuildMask(false);
   return true;
+}
+
+bool PotentialField::SetStart(const Vec2& p) {
+  const auto c = CellOf(p);
+  start_ = c && !blocked_[Index(c->first, c->second)] ? Index(c->first, c->second) : kNoCell;
+  // Converged for a start with a higher p is converged for this one only if its focus is not
+  // wider (a lower floor asks more).
+  if (report_.converged && Floor() < converged_floor_) report_.converged = false;
+  return start_ != kNoCell;
+}
+
+void PotentialField::ClearStart() {
+  start_ = kNoCell;
+  if (report_.converged && converged_floor_ > 0.0) report_.converged = false;
+}
+
+double PotentialField::Floor() const {
+  if (start_ == kNoCell || extended_) return 0.0;
+  const FieldCell k = kind_[start_];
+  if (k != FieldCell::kFree && k != FieldCell::kGoal) return 0.0;
+  return std::max(0.0, options_.start_fraction * p_[start_]);
+}
+
+void PotentialField::Judge(double residual, const std::size_t* deficit) {
+  report_.residual = residual;
+  report_.converged = residual < options_.tolerance;
+  if (report_.converged && !extended_) {
+    // The residual says nothing about the order of neighbouring values where they are almost
+    // equal: check that descent cannot stop on the way (one pass over the unknowns, or counted
+    // in the pass that computed `residual`).
+    const double floor = Floor();
+    const std::size_t stuck =
+        deficit ? *deficit
+                : internal::kernels::AscentDeficit(
+                      p_.data(), width_, reinterpret_cast<const internal::Run*>(free_runs_.data()),
+                      free_runs_.size(), floor);
+    report_.converged = stuck == 0;
+    converged_floor_ = floor;
+  }
 }
 
 void PotentialField::EnsureSetup() {
@@ -345,16 +420,13 @@ void PotentialField::ColdStart() {
       DirectSolve();
       report_ = IterationReport{};
       report_.sweeps = 1;  // the exact solve counts as one iteration
-      report_.residual = Residual();
-      report_.converged = report_.residual < options_.tolerance;
+      Judge(Residual());
       return;
     }
     if (solver_->InitialGuess(p_.data())) {
       // Negative values are left to the iteration (clamping would restart conjugate gradients).
       solver_->Restart();
-      report_ = IterationReport{};
-      report_.residual = Residual();
-      report_.converged = report_.residual < options_.tolerance;
+      NotJudged();
       return;
     }
   }
@@ -412,12 +484,17 @@ void PotentialField::ColdStart() {
   }
   table.clear();
   solver_->Restart();
-  report_ = IterationReport{};
-  report_.residual = Residual();
-  report_.converged = report_.residual < options_.tolerance;
+  NotJudged();
 }
 
-PotentialField::Norms PotentialField::ResidualNorms() const {
+void PotentialField::NotJudged() {
+  // The first iteration computes the residual anyway (a pass of its own here would cost as much
+  // as a smoothing sweep).
+  report_ = IterationReport{};
+  report_.residual = std::numeric_limits<double>::infinity();
+}
+
+PotentialField::Norms PotentialField::ResidualNorms(bool with_deficit) const {
   Norms norms;
   if (width_ == 0) return norms;
   const bool five = options_.solver.stencil == Stencil::kFivePoint;
@@ -445,9 +522,11 @@ PotentialField::Norms PotentialField::ResidualNorms() const {
   static_assert(sizeof(FreeRun) == sizeof(internal::Run), "same run layout");
   const auto k = internal::kernels::ResidualNorms(
       p_.data(), width_, reinterpret_cast<const internal::Run*>(free_runs_.data()),
-      free_runs_.size(), !five);
+      free_runs_.size(), !five, Floor(), with_deficit);
   norms.absolute = k.absolute;
   norms.relative = k.relative;
+  norms.deficit = k.deficit;
+  norms.has_deficit = with_deficit;
   return norms;
 }
 
@@ -474,13 +553,18 @@ IterationReport PotentialField::Iterate(int sweeps) {
   if (width_ == 0 || goal_count_ == 0) {
     throw std::logic_error("PotentialField::Iterate: no window or no goal");
   }
+  const bool warm = !solver_ready_;  // the equations changed since the last iteration
   EnsureSetup();
+  if (warm && !direct_ && !tail_active_ && !polishing_ && solver_->CorrectionGuess(p_.data())) {
+    // The kept values plus a full-multigrid correction for the change: the iteration then starts
+    // with the change's own error reduced like a cold start's.
+    solver_->Restart();
+  }
   if (direct_) {
     const bool fresh = !direct_solved_;
     DirectSolve();
     if (fresh) report_.sweeps += 1;
-    report_.residual = Residual();
-    report_.converged = report_.residual < options_.tolerance;
+    Judge(Residual());
     return report_;
   }
   const bool relative = options_.norm == ResidualNorm::kRelative;
@@ -515,6 +599,7 @@ IterationReport PotentialField::Iterate(int sweeps) {
       }
       polish_->Iterate(p_.data());
     } else {
+      solver_->SetRelativeFloor(Floor());
       solver_->Iterate(p_.data());
     }
     if (relative && polishing_ && ClampNegatives())
@@ -536,13 +621,15 @@ IterationReport PotentialField::Iterate(int sweeps) {
     last_relative_ = norms.relative;
   }
   report_.sweeps += sweeps;
-  report_.residual = sweeps > 0 ? (relative ? norms.relative : norms.absolute) : Residual();
-  report_.converged = report_.residual < options_.tolerance;
-  if (report_.converged && tracked) {
+  const double residual = sweeps > 0 ? (relative ? norms.relative : norms.absolute) : Residual();
+  if (residual < options_.tolerance && tracked) {
     // The solver's residual is recursive (updated, not recomputed): confirm with the true one.
-    report_.residual = Residual();
-    report_.converged = report_.residual < options_.tolerance;
-    if (!report_.converged) solver_->Restart();
+    const Norms n = ResidualNorms(/*with_deficit=*/true);
+    const double confirmed = relative ? n.relative : n.absolute;
+    if (!(confirmed < options_.tolerance)) solver_->Restart();
+    Judge(confirmed, n.has_deficit ? &n.deficit : nullptr);
+  } else {
+    Judge(residual);
   }
   return report_;
 }
@@ -609,12 +696,14 @@ bool PotentialField::StartTail(double resolved_absolute, double scale) {
 }
 
 PotentialField::Norms PotentialField::IterateTail() {
+  const double floor = Floor() / tail_scale_;  // the start's focus in the stage's units
+  tail_solver_->SetRelativeFloor(floor);
   tail_solver_->Iterate(tail_u_.data());
   Norms tail;
   if (!tail_solver_->LastResidual(&tail.absolute, &tail.relative)) {
     const auto k = internal::kernels::ResidualNorms(
         tail_u_.data(), width_, reinterpret_cast<const internal::Run*>(tail_runs_.data()),
-        tail_runs_.size(), options_.solver.stencil == Stencil::kNinePoint);
+        tail_runs_.size(), options_.solver.stencil == Stencil::kNinePoint, floor);
     tail.absolute = k.absolute;
     tail.relative = k.relative;
   }

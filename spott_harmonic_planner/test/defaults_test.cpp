@@ -32,11 +32,13 @@ TEST(Defaults, LibraryDefaultsAreTheNodeDefaults) {
   const FieldOptions o;
   EXPECT_EQ(o.solver.kind, SolverKind::kMultigridCg);
   EXPECT_EQ(o.norm, ResidualNorm::kRelative);
-  EXPECT_DOUBLE_EQ(o.tolerance, 1e-6);
+  EXPECT_DOUBLE_EQ(o.tolerance, 1e-4);
+  EXPECT_DOUBLE_EQ(o.start_fraction, 0.1);
   // config/harmonic_planner.yaml, which the node loads, says the same.
   EXPECT_EQ(ConfigValue("kind"), ToString(o.solver.kind));
   EXPECT_EQ(ConfigValue("residual_norm"), "relative");
   EXPECT_EQ(std::stod(ConfigValue("tolerance")), o.tolerance);
+  EXPECT_EQ(std::stod(ConfigValue("start_fraction")), o.start_fraction);
   EXPECT_EQ(ConfigValue("stencil"), ToString(o.solver.stencil));
   const PlannerParameters p;
   EXPECT_EQ(p.field.solver.kind, SolverKind::kMultigridCg);

@@ -28,7 +28,8 @@ struct PlannerParameters {
   spott_map::LocalMapParameters window;  ///< window size, resolution, padding, re-centre margin
   FieldOptions field;                    ///< solver, stencil, omega, tolerance, norm
   SteeringParameters steering;
-  int sweeps_per_cycle = 4;               ///< Iterations per Cycle(), [1, 10000].
+  /// Most iterations per Cycle(), [1, 10000]; none once the field is converged for the robot.
+  int sweeps_per_cycle = 4;
   double goal_tolerance_m = 0.2;          ///< Success radius (m), > 0.
   double border_goal_half_width_m = 0.6;  ///< Half length of a projected border goal (m), > 0.
 };

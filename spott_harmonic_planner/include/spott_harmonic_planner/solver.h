@@ -84,6 +84,15 @@ class IterativeSolver {
     (void)u;
     return false;
   }
+  /// Adds the solver's own estimate of the correction for the residual of `u` (the multigrid
+  /// solvers: full multigrid on the residual equation): a warm start after the equations
+  /// changed. False (u unchanged) when the solver has none. After Setup().
+  virtual bool CorrectionGuess(double* u) {
+    (void)u;
+    return false;
+  }
+  /// The relative norm of LastResidual() takes |r_i| against max(u_i, floor) (0: u_i alone).
+  virtual void SetRelativeFloor(double floor) { (void)floor; }
   /// Max-norms (absolute, and relative to each cell's value) of the residual after the last
   /// Iterate(), when the solver tracks them on the way (conjugate gradients); false otherwise.
   virtual bool LastResidual(double* absolute, double* relative) const {

@@ -25,6 +25,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("solver/residual_norm", norm);
   r.Get("solver/omega", f.solver.omega);
   r.Get("solver/tolerance", f.tolerance);
+  r.Get("solver/start_fraction", f.start_fraction);
   r.Get("solver/sweeps_per_cycle", p.planner.sweeps_per_cycle);
   if (const auto k = ParseSolverKind(solver)) {
     f.solver.kind = *k;
