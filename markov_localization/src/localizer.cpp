@@ -15,6 +15,7 @@ std::vector<std::string> ValidateParameters(const MotionGateParameters& p) {
     errors.push_back("update_min_a_rad must be in [0, 2 pi] rad");
   if (!(p.standing_interval_s >= 0.0 && p.standing_interval_s <= 3600.0))
     errors.push_back("standing_interval_s must be in [0, 3600] s");
+  if (!(p.join_s >= 0.0 && p.join_s <= 5.0)) errors.push_back("join_s must be in [0, 5] s");
   return errors;
 }
 
@@ -54,12 +55,12 @@ Localizer::Localizer(std::shared_ptr<const LocalizationModels> models,
     throw std::invalid_argument("Localizer: models without a sensor");
   grid_ = std::make_unique<MarkovGrid>(*models_->map, *models_->sensors[0], params.grid);
   pending_.resize(models_->sensors.size());
-  event_.assign(models_->sensors.size(), 0);
-  for (int s : params.event_sensors) {
-    if (s < 0 || s >= static_cast<int>(event_.size()))
-      throw std::invalid_argument("Localizer: event sensor " + std::to_string(s) + " of " +
-                                  std::to_string(event_.size()) + " sensors");
-    event_[s] = 1;
+  judged_.assign(models_->sensors.size(), 1);
+  for (int s : params.unjudged_sensors) {
+    if (s < 0 || s >= static_cast<int>(judged_.size()))
+      throw std::invalid_argument("Localizer: unjudged sensor " + std::to_string(s) + " of " +
+                                  std::to_string(judged_.size()) + " sensors");
+    judged_[s] = 0;
   }
 }
 
@@ -96,6 +97,7 @@ void Localizer::ReplaceModels(std::shared_ptr<const LocalizationModels> models) 
   grid_ = std::move(grid);
   pending_.assign(models_->sensors.size(), Pending{});
   opener_ = -1;
+  gate_opened_s_ = -1.0;
   force_ = true;
 }
 
@@ -122,43 +124,30 @@ bool Localizer::GateOpen(const Pose2& odom, double now_s) const {
   return interval > 0.0 && now_s - update_time_s_ >= interval;
 }
 
-void Localizer::CheckReading(int sensor, const std::vector<double>& ranges_m,
-                             const char* caller) const {
-  if (sensor < 0 || sensor >= static_cast<int>(pending_.size()))
-    throw std::invalid_argument(std::string(caller) + ": no sensor " + std::to_string(sensor));
-  if (static_cast<int>(ranges_m.size()) != models_->sensors[sensor]->num_beams())
-    throw std::invalid_argument(std::string(caller) + ": " + std::to_string(ranges_m.size()) +
-                                " readings for sensor " + std::to_string(sensor) + " of " +
-                                std::to_string(models_->sensors[sensor]->num_beams()) + " beams");
-}
-
-LocalizerStep Localizer::OnEventReading(int sensor, const std::vector<double>& ranges_m,
-                                        const Pose2& odom, double now_s) {
-  CheckReading(sensor, ranges_m, "Localizer::OnEventReading");
-  if (!event_[sensor])
-    throw std::invalid_argument("Localizer::OnEventReading: sensor " + std::to_string(sensor) +
-                                " is gated (OnReading)");
-  Pending& p = pending_[sensor];
-  p.ranges = ranges_m;
-  p.odom = odom;
-  p.fresh = true;
-  return Update(odom, now_s, sensor);
-}
-
 LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges_m,
                                    const Pose2& odom, double now_s) {
-  CheckReading(sensor, ranges_m, "Localizer::OnReading");
-  if (event_[sensor])
-    throw std::invalid_argument("Localizer::OnReading: sensor " + std::to_string(sensor) +
-                                " is read through OnEventReading");
+  if (sensor < 0 || sensor >= static_cast<int>(pending_.size()))
+    throw std::invalid_argument("Localizer::OnReading: no sensor " + std::to_string(sensor));
+  if (static_cast<int>(ranges_m.size()) != models_->sensors[sensor]->num_beams())
+    throw std::invalid_argument("Localizer::OnReading: " + std::to_string(ranges_m.size()) +
+                                " readings for sensor " + std::to_string(sensor) + " of " +
+                                std::to_string(models_->sensors[sensor]->num_beams()) + " beams");
   Pending& p = pending_[sensor];
   const bool twice = p.fresh && opener_ == sensor;
   p.ranges = ranges_m;
   p.odom = odom;
   p.fresh = true;
+  p.time_s = now_s;
   if (!GateOpen(odom, now_s)) return LocalizerStep{};
-  bool all = true;  // every gated sensor's reading of this moment is here
-  for (std::size_t s = 0; s < pending_.size(); ++s) all = all && (event_[s] || pending_[s].fresh);
+  if (params_.gate.join_s > 0.0) {
+    if (gate_opened_s_ < 0.0) gate_opened_s_ = now_s;
+    bool all = true;  // every sensor's reading since the gate opened is here
+    for (std::size_t s = 0; s < pending_.size(); ++s) all = all && Joins(s);
+    if (!all && now_s - gate_opened_s_ < params_.gate.join_s) return LocalizerStep{};
+    return Update(odom, now_s);
+  }
+  bool all = true;
+  for (const auto& q : pending_) all = all && q.fresh;
   if (!all && !twice) {
     if (opener_ < 0) opener_ = sensor;  // wait for the other sensors' readings of this moment
     return LocalizerStep{};
@@ -166,7 +155,12 @@ LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges
   return Update(odom, now_s);
 }
 
-LocalizerStep Localizer::Update(const Pose2& odom, double now_s, int only) {
+bool Localizer::Joins(std::size_t s) const {
+  const Pending& p = pending_[s];
+  return p.fresh && (params_.gate.join_s <= 0.0 || p.time_s >= gate_opened_s_);
+}
+
+LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
   LocalizerStep step;
   step.updated = true;
   const int resets_before = grid_->forced_resets();
@@ -176,22 +170,17 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s, int only) {
   }
   std::vector<SensorReading> readings;
   for (std::size_t s = 0; s < pending_.size(); ++s) {
-    const bool use = only >= 0 ? static_cast<int>(s) == only : !event_[s];
-    if (!use || !pending_[s].fresh) continue;
-    readings.push_back(SensorReading{models_->sensors[s].get(), &pending_[s].ranges});
+    if (!Joins(s)) continue;
+    readings.push_back(
+        SensorReading{models_->sensors[s].get(), &pending_[s].ranges, judged_[s] != 0});
   }
   step.sensors_used = static_cast<int>(readings.size());
   const bool motion_reset = grid_->forced_resets() != resets_before;
   const std::string motion_reason = motion_reset ? grid_->lost_reason() : std::string();
-  // An event sensor's narrow view (a profile) does not judge whether the robot is lost.
-  step.stats = grid_->SensorUpdateWith(readings, /*detect_lost=*/only < 0);
-  if (only >= 0) {
-    pending_[only].fresh = false;  // the gated readings wait for their own update
-  } else {
-    for (std::size_t s = 0; s < pending_.size(); ++s)
-      if (!event_[s]) pending_[s].fresh = false;
-    opener_ = -1;
-  }
+  step.stats = grid_->SensorUpdateWith(readings);
+  for (auto& p : pending_) p.fresh = false;
+  opener_ = -1;
+  gate_opened_s_ = -1.0;
   force_ = false;
   has_update_odom_ = true;
   update_odom_ = odom;
@@ -204,7 +193,7 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s, int only) {
   }
   summary_ = Summarize(*grid_, params_.certainty, params_.modes, /*with_entropy=*/false);
   const auto& c = summary_.certainty;
-  if (only < 0 && !step.stats.lost_detected &&
+  if (!step.stats.lost_detected &&
       grid_->ReportCertainty(c.certainty, params_.certainty.threshold)) {
     step.lost = true;
     step.lost_reason = grid_->lost_reason();

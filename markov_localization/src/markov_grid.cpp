@@ -454,14 +454,14 @@ namespace {
 constexpr double kMinGroupProduct = 1e-30;
 }  // namespace
 
-SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>& readings,
-                                               bool detect_lost) {
+SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>& readings) {
   // Every beam of every reading: its model, row offset and the reading's range bin.
   struct Beam {
     const SensorModel* model;
     int b;
     int z;
     bool dropped;  // NaN: the sensor dropped out; the beam says nothing
+    bool judged;   // counted in the lost detector's surprise
   };
   std::vector<Beam> beams;
   for (const SensorReading& r : readings) {
@@ -477,7 +477,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
                                   " beams");
     for (int b = 0; b < nb; ++b) {
       const double range = (*r.ranges_m)[b];
-      beams.push_back(Beam{&s, b, s.BeamBin(b, range), std::isnan(range)});
+      beams.push_back(Beam{&s, b, s.BeamBin(b, range), std::isnan(range), r.judged});
     }
   }
   SensorUpdateStats stats;
@@ -530,12 +530,16 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
             const int k = ((k0 + dk) % nt_ + nt_) % nt_;
             const std::size_t c = map_.Index(x, y);
             double sum = 0.0;
+            int judged = 0;
             for (const Beam& b : beams) {
+              if (!b.judged) continue;
               const SensorModel& s = *b.model;
               const int e = s.BeamRow(b.b, (k + s.beam_offset(b.b)) % nt_)[c];
               sum += std::log(s.Likelihood(e, b.z)) - s.ExpectedLogLikelihood(e);
+              ++judged;
             }
-            const double mean = sum / static_cast<double>(beams.size());
+            if (judged == 0) continue;  // no judged beam: the detector waits (NaN)
+            const double mean = sum / static_cast<double>(judged);
             if (!(surprise >= mean)) surprise = mean;
           }
     }
@@ -621,7 +625,6 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   }
   // The detector's input: the surprise when asked for (NaN while it cannot be computed: the
   // detector then waits), else the predictive fit.
-  if (!detect_lost) return stats;
   lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam);
   if (lost_) {
     lost_reason_ = detector_.reason();

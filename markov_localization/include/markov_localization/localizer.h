@@ -36,6 +36,14 @@ struct MotionGateParameters {
   /// >= 0. Between near-mirror places a standing robot's repeated scans make the belief
   /// overconfident, so this is slow.
   double standing_interval_s = 0.5;
+  /// Once the gate is open, how long (s) the update waits for a reading of every sensor taken
+  /// since it opened, [0, 5]; only such readings join it (one taken before was taken elsewhere).
+  /// 0: the update waits until the sensor that found the gate open delivers again (two 10 Hz
+  /// sensors, a ring and a scan). A slow sensor needs its period: the QUADRIS profiles (about
+  /// 2 Hz from both heads) 0.6 s. Giving it updates of its own instead (each profile at once)
+  /// brought the corridor lock back: at 0.3 m/s the belief was updated every 0.1-0.15 m and the
+  /// estimate fell 5 m behind twice along cim_office's hallway.
+  double join_s = 0.0;
 };
 
 std::vector<std::string> ValidateParameters(const MotionGateParameters& params);
@@ -47,9 +55,10 @@ struct LocalizerParameters {
   ModeParameters modes;
   StickyEstimateParameters sticky;
   PoseRefinementParameters refine;  ///< The published pose below the cell size.
-  /// Indices of the sensors read through OnEventReading (too slow for the gate: a QUADRIS
-  /// profile); the others through OnReading.
-  std::vector<int> event_sensors;
+  /// Indices of sensors with a narrow view (a QUADRIS profile's 40 degrees): used in the
+  /// updates, not by the lost detector (a profile across an unmapped desk collapsed its fit in
+  /// the lab and the robot was relocalized elsewhere).
+  std::vector<int> unjudged_sensors;
 };
 
 /// Every violation by parameter name (core names: "gate.update_min_d_m ...").
@@ -106,16 +115,6 @@ class Localizer {
   /// std::invalid_argument for a bad sensor index or a reading of the wrong size.
   LocalizerStep OnReading(int sensor, const std::vector<double>& ranges_m, const Pose2& odom,
                           double now_s);
-  /// A reading of a sensor too slow for the gate (a QUADRIS profile at about 1 Hz): one motion
-  /// update to `odom` (the odometry when it was taken) and one sensor update with this reading
-  /// alone, at once, whatever the gate says; the lost detector is left to the gated sensors (a
-  /// 40-degree profile of an unmapped desk collapsed its fit in the lab and the robot was
-  /// relocalized elsewhere). Gated readings never wait for such a sensor. For
-  /// the sensors of LocalizerParameters::event_sensors only (std::invalid_argument otherwise). Why
-  /// not gated: the update applies every reading at the odometry of the newest one, and a profile
-  /// waiting up to a gate's interval (0.2 m) would be placed that far off.
-  LocalizerStep OnEventReading(int sensor, const std::vector<double>& ranges_m, const Pose2& odom,
-                               double now_s);
 
   /// Whether an update has happened since the belief was set (map_to_odom is valid).
   bool has_estimate() const { return has_estimate_; }
@@ -141,18 +140,21 @@ class Localizer {
     std::vector<double> ranges;
     Pose2 odom;
     bool fresh = false;  // received after the last update
+    double time_s = 0.0;
   };
   bool GateOpen(const Pose2& odom, double now_s) const;
-  /// Checks `sensor` and the reading's size (std::invalid_argument).
-  void CheckReading(int sensor, const std::vector<double>& ranges_m, const char* caller) const;
-  /// With the fresh readings of every gated sensor, or of `only` (an event sensor) when >= 0.
-  LocalizerStep Update(const Pose2& odom, double now_s, int only = -1);
+  /// With the fresh readings (taken since the gate opened when join_s > 0).
+  LocalizerStep Update(const Pose2& odom, double now_s);
+  /// Whether pending reading `s` joins the update the open gate waits for.
+  bool Joins(std::size_t s) const;
 
   std::shared_ptr<const LocalizationModels> models_;
   LocalizerParameters params_;
   std::unique_ptr<MarkovGrid> grid_;
   std::vector<Pending> pending_;
-  std::vector<char> event_;  // per sensor: read through OnEventReading (event_sensors)
+  std::vector<char> judged_;  // per sensor: the lost detector sees its readings
+  double gate_opened_s_ =
+      -1.0;          // when a reading first found the gate open (join_s > 0); < 0: not yet
   int opener_ = -1;  // the sensor whose reading found the gate open while others were missing
   bool force_ = true;
   bool has_update_odom_ = false;

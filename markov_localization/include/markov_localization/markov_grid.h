@@ -107,6 +107,9 @@ struct SensorUpdateStats {
 struct SensorReading {
   const SensorModel* sensor = nullptr;
   const std::vector<double>* ranges_m = nullptr;
+  /// Whether the lost detector's surprise counts this reading's beams (a narrow view, a
+  /// profile of 40 degrees across an unmapped desk, says little about a kidnap).
+  bool judged = true;
 };
 
 class MarkovGrid {
@@ -165,11 +168,8 @@ class MarkovGrid {
   /// eq. (2) / (4) with its own normalization); the belief never becomes non-finite. When no
   /// state fits at all the belief is reset to uniform, lost() is set and lost_reason() and the
   /// stats say why. Throws std::invalid_argument for a reading of the wrong size or a model
-  /// built for another map or heading count. `detect_lost` false: the lost detector neither
-  /// sees this update's fit nor judges it (a narrow view, a profile across an unmapped desk,
-  /// says little about a kidnap and would collapse the fit).
-  SensorUpdateStats SensorUpdateWith(const std::vector<SensorReading>& readings,
-                                     bool detect_lost = true);
+  /// built for another map or heading count.
+  SensorUpdateStats SensorUpdateWith(const std::vector<SensorReading>& readings);
 
   /// P(l) of state (ix, iy, heading bin k), normalized over all states.
   double Probability(int ix, int iy, int k) const;

@@ -370,7 +370,7 @@ class LocalizationNode {
     lp.modes = params_.modes;
     lp.sticky = params_.sticky;
     lp.refine = params_.refine;
-    if (profile_index_ >= 0) lp.event_sensors = {profile_index_};
+    if (profile_index_ >= 0) lp.unjudged_sensors = {profile_index_};
     try {
       const auto start = std::chrono::steady_clock::now();
       models_ = ml::LocalizationModels::Build(map_, sensor_params_, nt);
@@ -463,9 +463,9 @@ class LocalizationNode {
               laser_model_->max_range_m);
   }
 
-  // A horizontal QUADRIS profile: one update at once with its samples binned by direction
-  // (ProfileParameters). The active-localization server and the wanderer are still given the
-  // last ring (they steer on it).
+  // A horizontal QUADRIS profile: its samples binned by direction (ProfileParameters), a reading
+  // like the ring's (gate/join_s lets the update wait for it). The active-localization server
+  // and the wanderer are still given the last ring (they steer on it).
   void OnProfile(const spott_msgs::RangeProfile& msg) {
     if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
     if (!odom_ || !localizer_ || profile_index_ < 0) return;
@@ -494,18 +494,18 @@ class LocalizationNode {
     }
     const auto& reactive = sonar_model_ ? sonar_model_->beam_angles_rad : no_beams_;
     OnReading(profile_index_, profile_ranges_, msg.header.stamp, reactive,
-              sonar_model_ ? last_ring_max_range_ : 0.0, /*event=*/true);
+              sonar_model_ ? last_ring_max_range_ : 0.0, /*reactive_is_ring=*/true);
   }
 
   void OnReading(int sensor, const std::vector<double>& ranges, const ros::Time& stamp,
-                 const std::vector<double>& beam_angles, double max_range, bool event = false) {
+                 const std::vector<double>& beam_angles, double max_range,
+                 bool reactive_is_ring = false) {
     PollRebuild();
     // The odometry when the reading was taken (odometry_buffer.h), not the newest.
     reading_odom_ = odometry_.At(stamp.toSec()).value_or(*odom_);
     const auto start = std::chrono::steady_clock::now();
     const ml::LocalizerStep step =
-        event ? localizer_->OnEventReading(sensor, ranges, reading_odom_, stamp.toSec())
-              : localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
+        localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
     if (step.lost)
       ROS_WARN("markov_localization: lost: %s; relocalizing", step.lost_reason.c_str());
     if (step.switched) {
@@ -524,7 +524,7 @@ class LocalizationNode {
       last_compute_s_ =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    Publish(stamp, step, beam_angles, event ? ranges_ : ranges, max_range);
+    Publish(stamp, step, beam_angles, reactive_is_ring ? ranges_ : ranges, max_range);
   }
 
   void Publish(const ros::Time& stamp, const ml::LocalizerStep& step,

@@ -50,6 +50,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("gate/update_min_d_m", g.update_min_d_m);
   r.GetDegrees("gate/update_min_a_deg", g.update_min_a_rad);
   r.Get("gate/standing_interval_s", g.standing_interval_s);
+  r.Get("gate/join_s", g.join_s, "s");
   auto& l = p.laser;
   l.model.max_range_m = 25.0;
   l.model.critical_angle_rad = M_PI / 2;  // a laser scatters off every surface

@@ -38,9 +38,9 @@ struct LaserParameters {
 
 /// A pan-tilt range profiler (the Nomad 200's QUADRIS heads, spott_msgs/RangeProfile on
 /// `topic`, about 1 Hz per head): an addition to the paper's sensors. Each horizontal profile is
-/// one update at once (Localizer::OnEventReading), as readings of a beam at every heading bin
-/// from the robot's centre (ros_conversions::ProfileReadings): a profile too slow for the gate
-/// would otherwise be applied up to a gate's interval away from where it was taken.
+/// a reading of a beam at every heading bin from the robot's centre
+/// (ros_conversions::ProfileReadings); gate/join_s lets an update wait for it; the lost
+/// detector does not judge it (LocalizerParameters::unjudged_sensors).
 struct ProfileParameters {
   bool enabled = false;
   std::string topic = "range_profile";
