@@ -234,11 +234,11 @@ TEST_F(Controller, BeforeARetryTheSensedFeaturesNearTheRobotAreTakenBack) {
 
 TEST_F(Controller, ARetryThatCannotFitTheGoalTakesBackEverySensedFeatureFirst) {
   // Before d_103 (x 13.55-14.45, office_103's only door), facing it, the task is given.
-  At(14.0, 7.9, -M_PI / 2, 0.1);
+  At(14.0, 7.53, -M_PI / 2, 0.1);
   ASSERT_TRUE(c_->StartTask(1, "go in room(office_103)", 0.2).accepted);
   ASSERT_EQ(io_.navigates.size(), 1u);
-  // A contact ahead (14, 7.67), 0.6 m from the jambs: a new obstacle, which padded shuts the
-  // door. 12 s later (older than what an estimate jump retracts) the robot is 4 m west.
+  // A contact ahead (14, 7.30), 0.5 m from the jambs' corners: a new obstacle, which padded
+  // shuts the door. 12 s later (older than what an estimate jump retracts) the robot is 4 m west.
   c_->Bumper({0.0}, 0.3);
   c_->Bumper({}, 0.4);
   double t = Run(0.4, 12.5, "reflex");

@@ -315,6 +315,7 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
       int ix, iy;
       if (!CellOf(to_map(p), &ix, &iy)) continue;
       const std::uint8_t f = flags_[Index(ix, iy)];
+      if (f & kDoor) continue;  // a leaf the map does not know of is no pose error
       if (f & kKnown) {
         ++on;
       } else if (f & kNear) {
