@@ -118,13 +118,22 @@ TEST(Localizer, TheMotionGateEndsTheCorridorLock) {
   EXPECT_GT(every_scan.max_stuck_m, 2 * gated.max_stuck_m);
 }
 
-TEST(Localizer, TwoSensorsJoinOneUpdateAndTheEstimateFollowsTheOdometryBetween) {
-  const spott_map::World world = testing::LoadWorld("bonn_department");
+// bonn_department at 25 cm, and the B21's 24 sonars.
+std::shared_ptr<const MapModel> Bonn25() {
   MapModelParameters mp;
   mp.resolution_m = 0.25;
-  auto map = std::make_shared<const MapModel>(MapModel::FromWorld(world, mp));
+  return std::make_shared<const MapModel>(
+      MapModel::FromWorld(testing::LoadWorld("bonn_department"), mp));
+}
+SensorModelParameters Sonar24() {
   SensorModelParameters sonar;
   sonar.beam_angles_rad = SonarRingAngles(24);
+  return sonar;
+}
+
+TEST(Localizer, TwoSensorsJoinOneUpdateAndTheEstimateFollowsTheOdometryBetween) {
+  const auto map = Bonn25();
+  const SensorModelParameters sonar = Sonar24();
   const SensorModelParameters laser = Laser();
   auto models = LocalizationModels::Build(map, {sonar, laser}, 72);
   LocalizerParameters lp;
@@ -178,12 +187,8 @@ std::vector<double> Profile(const MapModel& map, int bins, const Pose2& pose, do
 }
 
 TEST(Localizer, AnOpenGateWaitsJoinSForASlowSensorAndJoinsOnlyReadingsTakenSinceItOpened) {
-  const spott_map::World world = testing::LoadWorld("bonn_department");
-  MapModelParameters mp;
-  mp.resolution_m = 0.25;
-  auto map = std::make_shared<const MapModel>(MapModel::FromWorld(world, mp));
-  SensorModelParameters sonar;
-  sonar.beam_angles_rad = SonarRingAngles(24);
+  const auto map = Bonn25();
+  const SensorModelParameters sonar = Sonar24();
   SensorModelParameters profiler;
   for (int b = 0; b < 72; ++b) profiler.beam_angles_rad.push_back(2 * M_PI * b / 72);
   profiler.max_range_m = 4.0;

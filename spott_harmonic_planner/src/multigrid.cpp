@@ -131,47 +131,31 @@ class MultigridSolver final : public IterativeSolver {
   const std::vector<Run>& runs() const { return cg_ ? single_.runs() : double_.runs(); }
 
   // r = mean(u) - u on the unknowns (the fixed cells of u hold the Dirichlet values).
-  void Residual(const double* u, double* r) const {
-    const bool five = options_.stencil == Stencil::kFivePoint;
-    for (const Run& run : runs()) {
-      const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx_;
-      const double* __restrict row = u + base;
-      const double* __restrict up = row + nx_;
-      const double* __restrict down = row - nx_;
-      double* __restrict rr = r + base;
-      if (five) {
-        for (int x = run.x0; x < run.x1; ++x) {
-          rr[x] = 0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) - row[x];
-        }
-      } else {
-        for (int x = run.x0; x < run.x1; ++x) {
-          rr[x] = 0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
-                  0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1])) - row[x];
-        }
-      }
-    }
-  }
+  void Residual(const double* u, double* r) const { ResidualInto(u, r); }
 
   // rs = (float) (mean(u) - u) on the unknowns, in one pass (the full-multigrid start's
   // right-hand side).
-  void ResidualSingle(const double* u, float* rs) const {
+  void ResidualSingle(const double* u, float* rs) const { ResidualInto(u, rs); }
+
+  template <typename Out>
+  void ResidualInto(const double* u, Out* r) const {
     const bool five = options_.stencil == Stencil::kFivePoint;
     for (const Run& run : runs()) {
       const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(run.y) * nx_;
       const double* __restrict row = u + base;
       const double* __restrict up = row + nx_;
       const double* __restrict down = row - nx_;
-      float* __restrict out = rs + base;
+      Out* __restrict out = r + base;
       if (five) {
         for (int x = run.x0; x < run.x1; ++x) {
           out[x] =
-              static_cast<float>(0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) - row[x]);
+              static_cast<Out>(0.25 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) - row[x]);
         }
       } else {
         for (int x = run.x0; x < run.x1; ++x) {
-          out[x] = static_cast<float>(
-              0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
-              0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1])) - row[x]);
+          out[x] = static_cast<Out>(0.2 * ((row[x - 1] + row[x + 1]) + (down[x] + up[x])) +
+                                    0.05 * ((down[x - 1] + down[x + 1]) + (up[x - 1] + up[x + 1])) -
+                                    row[x]);
         }
       }
     }

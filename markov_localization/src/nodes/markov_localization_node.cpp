@@ -210,8 +210,14 @@ class LocalizationNode {
     }
   }
 
-  void OnMapUpdate(const spott_msgs::MapUpdate& update) {
+  void OnMapUpdate(const spott_msgs::MapUpdate& msg) {
     const auto before = db_->revision();
+    spott_msgs::MapUpdate update = msg;
+    if (!params_.map_update_features) {  // door states only (NodeParameters::map_update_features)
+      update.added.clear();
+      update.removed.clear();
+      update.relabelled.clear();
+    }
     for (const std::string& problem : spott_map::ros_conversions::ApplyMapUpdate(update, 0.1, *db_))
       refusals_.Refuse(params_.map_updates_topic, "update", problem);
     if (db_->revision() == before) return;

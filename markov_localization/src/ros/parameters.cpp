@@ -43,6 +43,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("use_map_topic", p.use_map_topic);
   r.Get("map_topic", p.map_topic);
   r.Get("map_updates_topic", p.map_updates_topic);
+  r.Get("map_update_features", p.map_update_features);
   r.Get("sonar_enabled", p.sonar_enabled);
   r.Get("ring_topic", p.ring_topic);
   r.Get("sonar_off_max_s", p.sonar_off_max_s);
@@ -51,6 +52,17 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.GetDegrees("gate/update_min_a_deg", g.update_min_a_rad);
   r.Get("gate/standing_interval_s", g.standing_interval_s);
   r.Get("gate/join_s", g.join_s, "s");
+  // A single-ray model's keys below `section` (the laser's, the profiles').
+  const auto get_ray_model = [&](const std::string& section, SensorModelParameters& m) {
+    r.Get(section + "/max_range_m", m.max_range_m, "m");
+    r.Get(section + "/range_bin_m", m.range_bin_m, "m");
+    r.Get(section + "/sigma_hit_m", m.sigma_hit_m, "m");
+    r.Get(section + "/lambda_short_per_m", m.lambda_short_per_m, "1/m");
+    r.Get(section + "/z_hit", m.z_hit);
+    r.Get(section + "/z_short", m.z_short);
+    r.Get(section + "/z_max", m.z_max);
+    r.Get(section + "/z_rand", m.z_rand);
+  };
   auto& l = p.laser;
   l.model.max_range_m = 25.0;
   l.model.critical_angle_rad = M_PI / 2;  // a laser scatters off every surface
@@ -58,14 +70,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("laser/topic", l.topic);
   r.Get("laser/max_beams", l.max_beams);
   r.Get("laser/base_frame", l.base_frame);
-  r.Get("laser/max_range_m", l.model.max_range_m);
-  r.Get("laser/range_bin_m", l.model.range_bin_m);
-  r.Get("laser/sigma_hit_m", l.model.sigma_hit_m);
-  r.Get("laser/lambda_short_per_m", l.model.lambda_short_per_m);
-  r.Get("laser/z_hit", l.model.z_hit);
-  r.Get("laser/z_short", l.model.z_short);
-  r.Get("laser/z_max", l.model.z_max);
-  r.Get("laser/z_rand", l.model.z_rand);
+  get_ray_model("laser", l.model);
   auto& f = p.profile;
   f.model.max_range_m = 4.0;
   f.model.critical_angle_rad = M_PI / 2;  // a light stripe scatters off every surface
@@ -74,14 +79,7 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   r.Get("profile/base_frame", f.base_frame);
   r.Get("profile/min_height_m", f.min_height_m, "m");
   r.Get("profile/max_height_m", f.max_height_m, "m");
-  r.Get("profile/max_range_m", f.model.max_range_m, "m");
-  r.Get("profile/range_bin_m", f.model.range_bin_m, "m");
-  r.Get("profile/sigma_hit_m", f.model.sigma_hit_m, "m");
-  r.Get("profile/lambda_short_per_m", f.model.lambda_short_per_m, "1/m");
-  r.Get("profile/z_hit", f.model.z_hit);
-  r.Get("profile/z_short", f.model.z_short);
-  r.Get("profile/z_max", f.model.z_max);
-  r.Get("profile/z_rand", f.model.z_rand);
+  get_ray_model("profile", f.model);
   r.Get("estimate/refine", p.refine.enabled);
   r.Get("estimate/refine_sigma_scale", p.refine.sigma_scale);
   r.Get("estimate/refine_max_offset_cells", p.refine.max_offset_cells);

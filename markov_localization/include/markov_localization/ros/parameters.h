@@ -62,6 +62,12 @@ struct NodeParameters {
   bool use_map_topic = false;
   std::string map_topic = "map";
   std::string map_updates_topic = "map_updates";  ///< spott_msgs/MapUpdate ("" = none).
+  /// Whether a MapUpdate's added, removed and relabelled features change the map, besides its
+  /// door states. false in the stack: the TR+ controller places what it senses with this
+  /// node's own estimate, so a feature mapped while the estimate was off sits beside the real
+  /// object; in the map it made the true place fit worse than its twin (office_201 and 202 are
+  /// alike 5 m apart), and the estimate moved there.
+  bool map_update_features = false;
   bool sonar_enabled = true;                      ///< Localize on the RangeRing of ring_topic.
   /// enable_sonar false lasts at most this long (s): readings are used again after it, in case
   /// the caller that switched them off (a doorway's travel mode) is gone. (0, 600].
