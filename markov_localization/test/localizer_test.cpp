@@ -186,6 +186,41 @@ std::vector<double> Profile(const MapModel& map, int bins, const Pose2& pose, do
   return z;
 }
 
+TEST(Localizer, ASlowlyDrivingRobotUpdatesByTheGateAndOnlyAStandingOneByTheInterval) {
+  const auto map = Bonn25();
+  const SensorModelParameters sonar = Sonar24();
+  LocalizerParameters lp;
+  lp.grid.angular_resolution_rad = 2 * M_PI / 72;
+  lp.gate.standing_interval_s = 0.5;
+  Localizer loc(LocalizationModels::Build(map, {sonar}, 72), lp);
+  Pose2 truth{17.0, 4.0, M_PI / 2};
+  loc.SetGaussian(truth, 0.2, 0.1);
+  std::mt19937 rng(1);
+  Pose2 odom{0.0, 0.0, 0.0};
+  EXPECT_TRUE(
+      loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, 0.0).updated);
+  // 0.12 m/s, a ring every 0.5 s (6 cm): an update every 0.2 m, not at every interval (which
+  // brought the corridor lock back: sub-cell steps re-peaked at cell centres).
+  int updates = 0;
+  double t = 0.0;
+  for (int k = 1; k <= 8; ++k) {
+    truth.y += 0.06;
+    odom.x += 0.06;
+    updates +=
+        loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, t += 0.5)
+            .updated;
+  }
+  EXPECT_EQ(updates, 2);
+  // Standing, it updates every 0.5 s (the first reading still sees the last step's motion).
+  updates = 0;
+  loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, t += 0.5);
+  for (int k = 0; k < 4; ++k)
+    updates +=
+        loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, t += 0.5)
+            .updated;
+  EXPECT_EQ(updates, 4);
+}
+
 TEST(Localizer, AnOpenGateWaitsJoinSForASlowSensorAndJoinsOnlyReadingsTakenSinceItOpened) {
   const auto map = Bonn25();
   const SensorModelParameters sonar = Sonar24();

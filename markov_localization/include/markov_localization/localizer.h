@@ -31,10 +31,10 @@ struct MotionGateParameters {
   double update_min_d_m = 0.2;
   /// AMCL's update_min_a: odometry rotation (rad) since the last update, >= 0.
   double update_min_a_rad = M_PI / 6.0;
-  /// A robot that stands still updates again after this long (s), so that a kidnap of a
-  /// standing robot is noticed and a standing robot localizes globally; 0 = never (AMCL).
-  /// >= 0. Between near-mirror places a standing robot's repeated scans make the belief
-  /// overconfident, so this is slow.
+  /// A robot that stands still (slower than 2 cm/s and 3 deg/s between two readings) updates
+  /// again after this long (s), so that a kidnap of a standing robot is noticed and a standing
+  /// robot localizes globally; 0 = never (AMCL). >= 0. Between near-mirror places a standing
+  /// robot's repeated scans make the belief overconfident, so this is slow.
   double standing_interval_s = 0.5;
   /// Once the gate is open, how long (s) the update waits for a reading of every sensor taken
   /// since it opened, [0, 5]; only such readings join it (one taken before was taken elsewhere).
@@ -153,8 +153,12 @@ class Localizer {
   std::unique_ptr<MarkovGrid> grid_;
   std::vector<Pending> pending_;
   std::vector<char> judged_;  // per sensor: the lost detector sees its readings
-  double gate_opened_s_ =
-      -1.0;          // when a reading first found the gate open (join_s > 0); < 0: not yet
+  // When a reading first found the gate open (join_s > 0); < 0: not yet.
+  double gate_opened_s_ = -1.0;
+  // The previous reading (any sensor), to tell a standing robot.
+  bool has_last_reading_ = false, standing_ = true;
+  double last_reading_s_ = 0.0;
+  Pose2 last_reading_odom_;
   int opener_ = -1;  // the sensor whose reading found the gate open while others were missing
   bool force_ = true;
   bool has_update_odom_ = false;
