@@ -108,11 +108,15 @@ void Localizer::SetUniform() {
   force_ = true;
 }
 
-void Localizer::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad) {
+void Localizer::SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad,
+                            const std::optional<Pose2>& at_odom) {
   grid_->SetGaussian(pose, sigma_xy_m, sigma_theta_rad);
   sticky_.Reset();
   has_estimate_ = false;
   force_ = true;
+  // The motion since the last update belongs to the old belief, not to this one.
+  has_update_odom_ = at_odom.has_value();
+  if (at_odom) update_odom_ = *at_odom;
 }
 
 bool Localizer::GateOpen(const Pose2& odom, double now_s) const {

@@ -221,6 +221,30 @@ TEST(Localizer, ASlowlyDrivingRobotUpdatesByTheGateAndOnlyAStandingOneByTheInter
   EXPECT_EQ(updates, 4);
 }
 
+// A respawned node sets its belief at the odometry of its start, then builds its models for
+// seconds while the robot drives on: the first update moves the belief by that odometry.
+TEST(Localizer, ABeliefSetAtAnOdometryMovesWithTheOdometrySinceThen) {
+  const auto map = Bonn25();
+  const SensorModelParameters sonar = Sonar24();
+  LocalizerParameters lp;
+  lp.grid.angular_resolution_rad = 2 * M_PI / 72;
+  Localizer loc(LocalizationModels::Build(map, {sonar}, 72), lp);
+  std::mt19937 rng(1);
+  loc.SetGaussian(Pose2{17.0, 4.0, M_PI / 2}, 0.2, 0.1, Pose2{1.0, 0.0, 0.0});
+  Pose2 truth{17.0, 5.5, M_PI / 2}, odom{2.5, 0.0, 0.0};  // 1.5 m on at the first reading
+  ASSERT_TRUE(
+      loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, 1.0).updated);
+  EXPECT_LT((loc.Estimate(odom).Position() - truth.Position()).norm(), 0.3);
+  // Without an odometry the belief holds at the next reading's: the metre driven since the
+  // last update belongs to the old belief.
+  truth.y += 1.0;
+  odom.x += 1.0;
+  loc.SetGaussian(truth, 0.2, 0.1);
+  ASSERT_TRUE(
+      loc.OnReading(0, testing::SimulateScan(*map, sonar, truth, 0.03, rng), odom, 2.0).updated);
+  EXPECT_LT((loc.Estimate(odom).Position() - truth.Position()).norm(), 0.3);
+}
+
 TEST(Localizer, AnOpenGateWaitsJoinSForASlowSensorAndJoinsOnlyReadingsTakenSinceItOpened) {
   const auto map = Bonn25();
   const SensorModelParameters sonar = Sonar24();

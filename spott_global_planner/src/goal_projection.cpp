@@ -78,9 +78,10 @@ struct Portion {
 
 // The portion of a window side holding `p` that lies in `polygon`; at a corner the side with
 // the longer such portion (ties: the side facing `direction` more squarely, then side order).
-// Falls back to the nearest portion of `polygon` on any side, then to the point itself.
+// Falls back to the nearest portion of `polygon` on any side at least `min_length` long (any
+// length when none is), then to the point itself.
 Portion PortionThrough(const Box& window, const Vec2& p, const Polygon& polygon,
-                       const Vec2& direction, std::string& rule) {
+                       const Vec2& direction, double min_length, std::string& rule) {
   const auto sides = WindowSides(window);
   const double tol = Tolerance(window) * 1e3;
   const Vec2 outward[4] = {Vec2(0, -1), Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0)};
@@ -108,12 +109,15 @@ Portion PortionThrough(const Box& window, const Vec2& p, const Polygon& polygon,
   }
   if (best.found) return best;
   double best_d = std::numeric_limits<double>::infinity();
+  bool best_fits = false;
   for (int i = 0; i < 4; ++i) {
     for (const Interval& iv : ClipSegmentToPolygon(sides[i], polygon)) {
       const Segment part = SubSegment(sides[i], iv);
       const double d = spott_map::DistancePointSegment(p, part);
-      if (d < best_d - tol) {
+      const bool fits = part.Length() >= min_length;
+      if ((fits && !best_fits) || (fits == best_fits && d < best_d - tol)) {
         best_d = d;
+        best_fits = fits;
         best = Portion{part, static_cast<WindowSide>(i), true};
       }
     }
@@ -149,7 +153,8 @@ bool EdgeWithinWindow(const spott_map::Door& door, const Box& window) {
 }
 
 ProjectedGoal ProjectGoalOntoWindow(const PlanningGraph& graph, const GlobalPath& path,
-                                    const Vec2& robot, const Vec2& goal, const Box& window) {
+                                    const Vec2& robot, const Vec2& goal, const Box& window,
+                                    double min_portion_m) {
   if (path.room_indices.empty() || path.room_indices.size() != path.door_indices.size() + 1) {
     throw std::invalid_argument("ProjectGoalOntoWindow: malformed path");
   }
@@ -166,8 +171,8 @@ ProjectedGoal ProjectGoalOntoWindow(const PlanningGraph& graph, const GlobalPath
     out.projected_point = c.point;
     out.node = node;
     out.node_id = graph.room(node).id;
-    const Portion p =
-        PortionThrough(window, c.point, graph.room(node).polygon, to - from, out.rule);
+    const Portion p = PortionThrough(window, c.point, graph.room(node).polygon, to - from,
+                                     min_portion_m, out.rule);
     out.on_border = true;
     out.border = p.segment;
     out.side = p.side;

@@ -122,7 +122,9 @@ SessionUpdate PlanningSession::Update(const Vec2& robot, const spott_map::Box* w
       // yet): the modelled one is used until it catches up.
       const bool usable = window && window->Contains(robot);
       const spott_map::Box& b = usable ? *window : tracker_.window();
-      out.projection = ProjectGoalOntoWindow(planner_.graph(), *result.path, robot, *goal_, b);
+      // A border strip narrower than the padded robot is all padding for the local planner.
+      out.projection = ProjectGoalOntoWindow(planner_.graph(), *result.path, robot, *goal_, b,
+                                             2.0 * params_.passage.padding_m);
       out.path = std::move(result.path);
     } else {
       out.state = SessionState::kFailed;

@@ -206,5 +206,32 @@ TEST(GeneratedBuilding, RandomProjectionsKeepFig14sRules) {
   for (int c = 1; c <= 4; ++c) EXPECT_GT(cases[c], 0) << "case " << c;
 }
 
+// Fig. 18's seed 6 on cim_office: the robot in office_201 at (1.77, 12.43), bound for the lab
+// through d_201 (4, 9.5), hall_w and d_lab_w (12.5, 9.5); its 7 m window [-1.7, 5.3] x [9, 16]
+// holds only hall_w's strip y in [9, 9.5]. The line from hall_w's centre to d_lab_w misses the
+// window and the line from the robot crosses the east side at y = 11.46, outside hall_w: hall_w's
+// portions of the border are its 0.5 m of the east side (1.96 m away, but all padding for a
+// Nomad: 2 x 0.325 m) and its 5.3 m of the bottom side (2.46 m away). The bottom side is taken.
+TEST(ShippedWorlds, AStripOfTheNodeNarrowerThanTheRobotIsNoBorderGoal) {
+  const spott_map::World world = Load("cim_office");
+  GlobalPlanner planner{spott_map::RoomDoorGraph(world)};
+  const Vec2 robot(1.77, 12.43), goal(12.44, 12.91);
+  const PlanResult r = planner.Plan(robot, goal);
+  ASSERT_TRUE(r.ok()) << r.message;
+  const ProjectedGoal p = ProjectGoalOntoWindow(planner.graph(), *r.path, robot, goal,
+                                                Box{Vec2(-1.7, 9.0), Vec2(5.3, 16.0)}, 0.65);
+  EXPECT_EQ(p.edge_id, "d_lab_w");
+  EXPECT_EQ(p.node_id, "hall_w");
+  ASSERT_TRUE(p.on_border);
+  EXPECT_NEAR(p.border.a.y(), 9.0, 1e-9);
+  EXPECT_NEAR(p.border.b.y(), 9.0, 1e-9);
+  EXPECT_NEAR(std::abs(p.border.b.x() - p.border.a.x()), 5.3, 1e-9);
+  // Of any length, the nearest: the strip.
+  const ProjectedGoal q = ProjectGoalOntoWindow(planner.graph(), *r.path, robot, goal,
+                                                Box{Vec2(-1.7, 9.0), Vec2(5.3, 16.0)});
+  EXPECT_NEAR(q.border.a.x(), 5.3, 1e-9);
+  EXPECT_NEAR(std::abs(q.border.b.y() - q.border.a.y()), 0.5, 1e-9);
+}
+
 }  // namespace
 }  // namespace spott_global_planner

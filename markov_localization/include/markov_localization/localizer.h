@@ -15,6 +15,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -104,7 +105,11 @@ class Localizer {
   /// Global localization; the next reading updates whatever the gate says.
   void SetUniform();
   /// A Gaussian belief (initial pose); the next reading updates whatever the gate says.
-  void SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad);
+  /// `at_odom`: the odometry when the robot was at `pose`; the next update moves the belief by
+  /// the odometry since then (a respawned node builds its models for seconds while the robot
+  /// drives on). Without it the belief holds at the next reading's odometry.
+  void SetGaussian(const Pose2& pose, double sigma_xy_m, double sigma_theta_rad,
+                   const std::optional<Pose2>& at_odom = std::nullopt);
 
   /// A reading of sensor `sensor` (index into models().sensors) taken when odometry read `odom`
   /// at time `now_s` (any epoch, non-decreasing). When the robot moved update_min_d /

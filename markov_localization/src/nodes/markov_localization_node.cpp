@@ -163,7 +163,8 @@ class LocalizationNode {
       pending_initial_ = pose;
       return;
     }
-    localizer_->SetGaussian(*pose, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad);
+    localizer_->SetGaussian(*pose, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad,
+                            odom_);
     ROS_INFO("markov_localization: initial pose set");
   }
 
@@ -392,7 +393,8 @@ class LocalizationNode {
     }
     if (params_.last_map_to_odom && !resumed_) {  // respawned: the odometry went on meanwhile
       const ml::Pose2 at = ml::Compose(*params_.last_map_to_odom, *odom_);
-      localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad);
+      localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad,
+                              odom_);
       ROS_WARN("markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom",
                at.x, at.y, at.yaw * 180.0 / M_PI);
       resumed_ = true;

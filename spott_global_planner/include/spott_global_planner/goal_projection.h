@@ -61,9 +61,13 @@ struct ProjectedGoal {
 };
 
 /// Projects `goal` for the local planner's `window` along `path` (which must start in the
-/// robot's node and end in the goal's). `robot` is p_r (m).
+/// robot's node and end in the goal's). `robot` is p_r (m). When no portion of the node on the
+/// border holds the crossing, the nearest portion at least `min_portion_m` long is taken (the
+/// robot's padded diameter: a shorter strip at a window corner is all padding), the nearest of
+/// any length only when none is that long.
 ProjectedGoal ProjectGoalOntoWindow(const PlanningGraph& graph, const GlobalPath& path,
-                                    const Vec2& robot, const Vec2& goal, const Box& window);
+                                    const Vec2& robot, const Vec2& goal, const Box& window,
+                                    double min_portion_m = 0.0);
 
 /// True when both ends of the door's opening lie within the window (border included).
 bool EdgeWithinWindow(const spott_map::Door& door, const Box& window);
