@@ -15,10 +15,11 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("update_rate_hz", p.update_rate_hz, "Hz");
   r.Get("status_rate_hz", p.status_rate_hz, "Hz");
   for (const std::string& e : ValidateParameters(p.arbiter)) r.Fail(e);
-  r.Require(p.update_rate_hz > 0 && p.update_rate_hz <= 1000, "update_rate_hz", "in (0, 1000]",
-            p.update_rate_hz);
-  r.Require(p.status_rate_hz >= 0 && p.status_rate_hz <= 100, "status_rate_hz", "in [0, 100]",
-            p.status_rate_hz);
+  // The timers' periods 1 / rate must make a ros::Duration (at most 2^31 s).
+  r.Require(p.update_rate_hz >= 0.01 && p.update_rate_hz <= 1000, "update_rate_hz",
+            "in [0.01, 1000]", p.update_rate_hz);
+  r.Require(p.status_rate_hz == 0 || (p.status_rate_hz >= 0.01 && p.status_rate_hz <= 100),
+            "status_rate_hz", "0 (on change only) or in [0.01, 100]", p.status_rate_hz);
 }
 
 }  // namespace cmd_vel_arbiter

@@ -10,7 +10,8 @@ namespace spott_move_base {
 
 struct NodeParameters {
   std::string navigate_action = "harmonic_planner/navigate";
-  double server_timeout_s = 30.0;  ///< Wait this long for the Navigate server per goal (s), > 0.
+  /// Wait this long for the Navigate server per goal (s), (0, 3600].
+  double server_timeout_s = 30.0;
 };
 
 /// Fills `p` (missing keys keep their defaults) and records every violation in `r` by its key.

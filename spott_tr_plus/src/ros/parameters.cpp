@@ -132,7 +132,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("task/free_space_resolution_m", i.free_space_resolution_m, "m");
   if (p.program_file.empty()) r.Fail("program_file is required (a .tr file)");
   if (p.frame_id.empty() || p.base_frame.empty()) r.Fail("frame_id and base_frame must be set");
-  r.Require(p.tick_rate_hz > 0 && p.tick_rate_hz <= 200, "tick_rate_hz", "in (0, 200]",
+  // The tick timer's period 1 / tick_rate_hz must make a ros::Duration (at most 2^31 s).
+  r.Require(p.tick_rate_hz >= 0.01 && p.tick_rate_hz <= 200, "tick_rate_hz", "in [0.01, 200]",
             p.tick_rate_hz);
   r.Require(p.ptu_sweep_period_s > 0, "ptu/sweep_period_s", "> 0", p.ptu_sweep_period_s);
   if (p.pan_joints.size() != p.tilt_joints.size())

@@ -9,8 +9,9 @@ namespace cmd_vel_arbiter {
 
 struct NodeParameters {
   ArbiterParameters arbiter;
-  double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), (0, 1000].
-  double status_rate_hz = 2.0;   ///< Status also at this rate besides every change (Hz), [0, 100].
+  double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), [0.01, 1000].
+  /// Status also at this rate besides every change (Hz): 0 (on change only) or [0.01, 100].
+  double status_rate_hz = 2.0;
 };
 
 /// Fills `p` (missing keys keep their defaults; one source per key under `sources`) and records

@@ -36,7 +36,7 @@ struct NodeParameters {
   std::string robot_description = "robot_description";
   std::string navigate_action = "harmonic_planner/navigate";
   std::string arbiter = "cmd_vel_arbiter";
-  double tick_rate_hz = 20.0;  ///< Motions, waits, feedback (Hz), (0, 200].
+  double tick_rate_hz = 20.0;  ///< Motions, waits, feedback (Hz), [0.01, 200].
   /// No localization status (localization:=truth): the pose is taken as certain.
   bool assume_localized = false;
   std::vector<std::string> pan_joints{"quadris_1_pan_joint", "quadris_2_pan_joint"};
