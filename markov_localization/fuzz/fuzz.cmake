@@ -3,3 +3,9 @@ spott_fuzz_core(spott_map LIBS yaml-cpp)
 spott_fuzz_core(markov_localization DEPENDS spott_map LIBS yaml-cpp pthread)
 spott_add_fuzzer(map_file_fuzz ${CMAKE_CURRENT_LIST_DIR}/map_file_fuzz.cpp
                  CORES markov_localization)
+# The node's parameters (ROS-side: spott_ros's reader over XmlRpc; no workspace needed).
+spott_add_parameter_fuzzer(markov_localization_parameters_fuzz
+  "${CMAKE_CURRENT_LIST_DIR}/markov_localization_parameters_fuzz.cpp"
+  CONFIG "${SPOTT_ROOT}/markov_localization/config/markov_localization.yaml"
+  SOURCES "${SPOTT_ROOT}/markov_localization/src/ros/parameters.cpp"
+  CORES markov_localization)

@@ -15,8 +15,10 @@ namespace markov_localization {
 
 std::vector<std::string> ValidateParameters(const MapModelParameters& p) {
   std::vector<std::string> errors;
-  if (!(p.resolution_m > 0.0 && p.resolution_m <= 2.0))
-    errors.push_back("resolution_m must be in (0, 2] m");
+  // Below 1 cm a building's cells overflow the int that counts them (static_cast<int>(ceil(size /
+  // resolution)) is undefined beyond it) or the memory that holds them.
+  if (!(p.resolution_m >= 0.01 && p.resolution_m <= 2.0))
+    errors.push_back("resolution_m must be in [0.01, 2] m");
   if (!(p.state_clearance_m >= 0.0 && p.state_clearance_m <= 2.0))
     errors.push_back("state_clearance_m must be in [0, 2] m");
   if (!(p.door_thickness_m > 0.0 && p.door_thickness_m <= 1.0))

@@ -12,9 +12,11 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
   if (!(p.physics_rate_hz >= 10 && p.physics_rate_hz <= 10000)) {
     e.push_back("physics_rate_hz must be in [10, 10000]");
   }
+  // A rate below 0.01 Hz would be published every lround(physics_rate_hz / rate) steps, beyond
+  // what a long holds for a tiny rate (then on every step).
   auto rate = [&](double r, const char* name) {
-    if (!(r > 0 && r <= p.physics_rate_hz)) {
-      e.push_back(std::string(name) + " must be in (0, physics_rate_hz]");
+    if (!(r >= 0.01 && r <= p.physics_rate_hz)) {
+      e.push_back(std::string(name) + " must be in [0.01, physics_rate_hz]");
     }
   };
   rate(p.sensor_rate_hz, "sensor_rate_hz");
@@ -22,8 +24,10 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
   rate(p.odom_rate_hz, "odom_rate_hz");
   rate(p.profile_rate_hz, "profile_rate_hz");
   rate(p.battery_rate_hz, "battery_rate_hz");
-  if (!(p.real_time_factor >= 0 && p.real_time_factor <= 1e4)) {
-    e.push_back("real_time_factor must be in [0, 10000] (0 = as fast as possible)");
+  // The loop sleeps until step * dt / real_time_factor of wall time (a ros::WallDuration, at most
+  // 2^31 s): below 0.01 a simulated day or less would not fit.
+  if (!(p.real_time_factor == 0 || (p.real_time_factor >= 0.01 && p.real_time_factor <= 1e4))) {
+    e.push_back("real_time_factor must be 0 (as fast as possible) or in [0.01, 10000]");
   }
   if (!(p.cmd_vel_timeout_s >= 0 && p.cmd_vel_timeout_s < 1e6)) {
     e.push_back("cmd_vel_timeout_s must be in [0, 1e6)");

@@ -176,14 +176,17 @@ struct FootprintQuery : btBroadphaseAabbCallback {
 
 std::vector<std::string> ValidateParameters(const SimWorldParameters& p) {
   std::vector<std::string> errors;
-  if (!(p.wall_height_m > 0) || !Finite(p.wall_height_m)) {
-    errors.push_back("wall_height_m must be positive and finite");
+  if (!(p.wall_height_m > 0 && p.wall_height_m <= 10)) {
+    errors.push_back("wall_height_m must be in (0, 10] m");
   }
   if (!(p.door_leaf_thickness_m > 0) || !(p.door_leaf_thickness_m < 1)) {
     errors.push_back("door_leaf_thickness_m must be in (0, 1) m");
   }
-  if (!(p.octomap_resolution_m > 0) || !(p.octomap_resolution_m <= 1)) {
-    errors.push_back("octomap_resolution_m must be in (0, 1] m");
+  // OctoMap's tree has 16 levels: it reaches 32768 voxels from the origin (327 m at 0.01 m), and
+  // Voxelize steps through every voxel of a solid: a finer tree drops a building's far parts and
+  // its loops barely advance (not at all below 1e-13 m).
+  if (!(p.octomap_resolution_m >= 0.01 && p.octomap_resolution_m <= 1)) {
+    errors.push_back("octomap_resolution_m must be in [0.01, 1] m");
   }
   return errors;
 }

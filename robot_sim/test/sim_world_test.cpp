@@ -202,5 +202,21 @@ TEST(SimWorldParametersTest, EveryViolationIsNamed) {
   EXPECT_NE(errors[1].find("octomap_resolution_m"), std::string::npos);
 }
 
+// Found by robot_sim_parameters_fuzz: a voxel of 1e-300 m was accepted, and Voxelize's loops do
+// not advance by it (x += res leaves x as it is); 16 levels of 1 mm reach 33 m from the origin.
+TEST(SimWorldParametersTest, AnOctreeThatCannotHoldABuildingIsRefused) {
+  SimWorldParameters p;
+  for (double res : {1e-300, 1e-6, 0.001, 0.0099}) {
+    p.octomap_resolution_m = res;
+    EXPECT_EQ(ValidateParameters(p).size(), 1u) << res;
+  }
+  p.octomap_resolution_m = 0.01;  // 327 m from the origin
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.wall_height_m = 1e300;  // a wall taller than the tree: the voxel loop runs on and on
+  EXPECT_EQ(ValidateParameters(p).size(), 1u);
+  p.wall_height_m = 10.0;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+}
+
 }  // namespace
 }  // namespace robot_sim

@@ -195,6 +195,31 @@ TEST(NodeParametersTest, EveryViolationIsNamed) {
   EXPECT_NE(e[3].find("odometry/linear_scale"), std::string::npos);
 }
 
+// Found by robot_sim_parameters_fuzz: a real_time_factor of 5e-324 was accepted, and the loop's
+// ros::WallDuration(step * dt / real_time_factor) throws beyond 2^31 s; a rate of 1e-300 Hz made
+// lround(physics_rate_hz / rate) overflow (published on every step instead of never).
+TEST(NodeParametersTest, PacesAndRatesTheLoopCannotKeepAreRefused) {
+  SimNodeParameters p;
+  p.world_file = "w.yaml";
+  p.real_time_factor = 5e-324;
+  EXPECT_EQ(ValidateParameters(p).size(), 1u);
+  p.real_time_factor = 0.009;
+  EXPECT_EQ(ValidateParameters(p).size(), 1u);
+  p.real_time_factor = 0.01;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.real_time_factor = 0.0;  // as fast as possible
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  for (double* rate : {&p.sensor_rate_hz, &p.laser_rate_hz, &p.odom_rate_hz, &p.profile_rate_hz,
+                       &p.battery_rate_hz}) {
+    const double kept = *rate;
+    *rate = 1e-300;
+    EXPECT_EQ(ValidateParameters(p).size(), 1u);
+    *rate = 0.01;
+    EXPECT_TRUE(ValidateParameters(p).empty());
+    *rate = kept;
+  }
+}
+
 TEST_F(SimulatorTest, TurretSlewsAtItsRateAndCarriesTheSonarRing) {
   // SPOTT's dense scan turns the turret in 2.5 degree steps; the turret turns at 0.79 rad/s.
   Start("nomad200", {5.0, 3.0, 0.0});

@@ -3,3 +3,9 @@ spott_fuzz_core(rpl_executive DEPENDS spott_text SUBDIRS rpl noreils_chatila)
 spott_add_fuzzer(rpl_plan_fuzz ${CMAKE_CURRENT_LIST_DIR}/rpl_plan_fuzz.cpp CORES rpl_executive)
 spott_add_fuzzer(rpl_run_fuzz ${CMAKE_CURRENT_LIST_DIR}/rpl_run_fuzz.cpp CORES rpl_executive)
 spott_add_fuzzer(nc_mission_fuzz ${CMAKE_CURRENT_LIST_DIR}/nc_mission_fuzz.cpp CORES rpl_executive)
+# The node's parameters (ROS-side: spott_ros's reader over XmlRpc; no workspace needed).
+spott_add_parameter_fuzzer(rpl_executive_parameters_fuzz
+  "${CMAKE_CURRENT_LIST_DIR}/rpl_executive_parameters_fuzz.cpp"
+  CONFIG "${SPOTT_ROOT}/rpl_executive/config/rpl_executive.yaml"
+  SOURCES "${SPOTT_ROOT}/rpl_executive/src/ros/parameters.cpp"
+  CORES rpl_executive)

@@ -41,13 +41,16 @@ PassageAnalysis AnalysePassages(const spott_map::Room& room,
   }
   const double res = params.resolution_m;
   const spott_map::Box box = spott_map::BoundingBox(room.polygon).Inflated(res);
-  const int w = static_cast<int>(std::ceil((box.max.x() - box.min.x()) / res));
-  const int h = static_cast<int>(std::ceil((box.max.y() - box.min.y()) / res));
-  if (static_cast<double>(w) * h > params.max_cells) {
+  // Counted in doubles first: a fine raster's sides need not fit an int.
+  const double wd = std::ceil((box.max.x() - box.min.x()) / res);
+  const double hd = std::ceil((box.max.y() - box.min.y()) / res);
+  if (!(wd * hd <= params.max_cells)) {
     out.analysed = false;
     out.door_reachable.assign(doors.size(), true);
     return out;
   }
+  const int w = static_cast<int>(wd);
+  const int h = static_cast<int>(hd);
   spott_map::OccupancyRaster raster(box.min, w, h, res);
   // Outside the node is not a way through it.
   for (int y = 0; y < h; ++y) {

@@ -41,6 +41,12 @@ std::vector<std::string> ValidateParameters(const WindowParameters& p) {
     if (p.max_window_size_m < p.window_size_m) {
       v.push_back(Violation("max_window_size_m", ">= window_size_m", p.max_window_size_m));
     }
+    // WindowAround counts the cells in an int; the local planner takes at most 8192 across
+    // (spott_map::LocalMapParameters).
+    if (p.max_window_size_m / p.resolution_m > 8192.5) {
+      v.push_back(Violation("max_window_size_m", "at most 8192 cells of resolution_m across",
+                            p.max_window_size_m));
+    }
   }
   return v;
 }

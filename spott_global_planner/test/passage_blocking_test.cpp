@@ -61,6 +61,16 @@ class Passages : public ::testing::Test {
   PassageParameters params_;  // 5 cm cells, 0.325 m padding
 };
 
+// Found by global_planner_parameters_fuzz: passage/resolution_m 1e-300 m was accepted and
+// AnalysePassages cast the raster's infinite width into an int (undefined).
+TEST_F(Passages, ARasterTooFineToCountIsNotAnalysed) {
+  params_.resolution_m = 1e-300;
+  const PassageAnalysis a = Analyse({});
+  EXPECT_FALSE(a.analysed);
+  EXPECT_TRUE(a.blocked.empty());
+  EXPECT_EQ(a.door_reachable, std::vector<bool>(3, true));
+}
+
 TEST_F(Passages, EmptyHallwayJoinsEveryPairOfDoors) {
   const PassageAnalysis a = Analyse({});
   EXPECT_TRUE(a.analysed);

@@ -20,3 +20,10 @@ if(EXISTS "${spott_devel_include}/spott_msgs/MapUpdate.h")
 else()
   message(STATUS "map_messages_fuzz left out: no ${spott_devel_include} (run ./spott build)")
 endif()
+
+# world_server's parameters (ROS-side: spott_ros's reader over XmlRpc; no workspace needed).
+spott_add_parameter_fuzzer(world_server_parameters_fuzz
+  "${CMAKE_CURRENT_LIST_DIR}/world_server_parameters_fuzz.cpp"
+  CONFIG "${SPOTT_ROOT}/spott_map/config/world_server.yaml"
+  SOURCES "${SPOTT_ROOT}/spott_map/src/ros/world_server_parameters.cpp"
+  CORES spott_map)

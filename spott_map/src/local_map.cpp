@@ -37,7 +37,7 @@ std::vector<std::string> ValidateParameters(const LocalMapParameters& p) {
   if (v.empty()) {
     if (p.resolution_m > p.window_size_m) {
       v.push_back(Violation("resolution_m", "<= window_size_m", p.resolution_m));
-    } else if (p.cells() > 8192) {
+    } else if (p.window_size_m / p.resolution_m > 8192.5) {  // before cells() rounds it to an int
       v.push_back(
           Violation("window_size_m", "at most 8192 cells of resolution_m across", p.window_size_m));
     }

@@ -206,5 +206,20 @@ TEST(LocalMap, InvalidParametersAreRefusedByName) {
             (std::vector<std::string>{"recentre_margin_m must be < window_size_m / 2 (got 5)"}));
 }
 
+// Found by harmonic_planner_parameters_fuzz: a resolution of 2e-322 m passed the 8192-cell limit,
+// because cells() rounded 7 m / 2e-322 m into an int first (wrapped around).
+TEST(LocalMap, ACellCountBeyondAnIntIsRefusedNotWrappedAround) {
+  LocalMapParameters p;
+  for (double res : {2e-322, 1e-300, 1e-9, 7.0 / 8193}) {
+    p.resolution_m = res;
+    const auto v = ValidateParameters(p);
+    ASSERT_EQ(v.size(), 1u) << res;
+    EXPECT_EQ(v[0].rfind("window_size_m must be at most 8192 cells", 0), 0u) << v[0];
+  }
+  p.resolution_m = 7.0 / 8192;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  EXPECT_EQ(p.cells(), 8192);
+}
+
 }  // namespace
 }  // namespace spott_map

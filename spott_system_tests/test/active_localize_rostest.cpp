@@ -226,7 +226,7 @@ TEST(MarkovLocalizationNode, BadParametersAreNamedAndTheNodeExits) {
       "_gate/update_min_d:=0.3 _no_such_key:=1");
   EXPECT_EQ(run.exit_code, 1) << run.output;
   for (const char* expected :
-       {"~map/resolution_m must be in (0, 2] m", "~grid/threshold_fraction must be in (0, 1)",
+       {"~map/resolution_m must be in [0.01, 2] m", "~grid/threshold_fraction must be in (0, 1)",
         "~sensor/beams must be an integer", "~laser/max_range_m must be a number",
         "~gate/update_min_d is not a parameter of this node",
         "~no_such_key is not a parameter of this node"})

@@ -1,5 +1,15 @@
 # libFuzzer targets of spott_tr_plus's parsers (included by tools/fuzz/CMakeLists.txt).
-spott_fuzz_core(spott_tr_plus DEPENDS spott_map LIBS yaml-cpp)
+spott_fuzz_core(spott_tr_plus DEPENDS spott_map LIBS yaml-cpp SUBDIRS controller)
 spott_add_fuzzer(tr_program_fuzz ${CMAKE_CURRENT_LIST_DIR}/tr_program_fuzz.cpp CORES spott_tr_plus)
 spott_add_fuzzer(task_command_fuzz ${CMAKE_CURRENT_LIST_DIR}/task_command_fuzz.cpp CORES spott_tr_plus)
 spott_add_fuzzer(tr_interpreter_fuzz ${CMAKE_CURRENT_LIST_DIR}/tr_interpreter_fuzz.cpp CORES spott_tr_plus)
+# The parameters of tr_plus_node and tr_plus_controller (ROS-side: spott_ros's reader over
+# XmlRpc; no workspace needed). CONFIG names one file; the fuzzer reads both.
+spott_add_parameter_fuzzer(tr_plus_parameters_fuzz
+  "${CMAKE_CURRENT_LIST_DIR}/tr_plus_parameters_fuzz.cpp"
+  CONFIG "${SPOTT_ROOT}/spott_tr_plus/config/tr_plus_controller.yaml"
+  SOURCES "${SPOTT_ROOT}/spott_tr_plus/src/ros/parameters.cpp"
+  CORES spott_tr_plus)
+target_compile_definitions(tr_plus_parameters_fuzz PRIVATE
+  NODE_CONFIG_FILE="${SPOTT_ROOT}/spott_tr_plus/config/tr_plus_node.yaml"
+  CONTROLLER_CONFIG_FILE="${SPOTT_ROOT}/spott_tr_plus/config/tr_plus_controller.yaml")

@@ -14,6 +14,7 @@
 #include <map>
 
 #include "cmd_vel_arbiter/ros/conversions.h"
+#include "cmd_vel_arbiter/ros/parameters.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 
@@ -21,31 +22,6 @@ namespace cmd_vel_arbiter {
 namespace {
 
 namespace conv = ros_conversions;
-
-struct NodeParameters {
-  ArbiterParameters arbiter;
-  double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), (0, 1000].
-  double status_rate_hz = 2.0;   ///< Status also at this rate besides every change (Hz), [0, 100].
-};
-
-void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
-  for (const std::string& name : r.Keys("sources")) {
-    SourceParameters s;
-    s.name = name;
-    r.Get("sources/" + name + "/priority", s.priority);
-    r.Get("sources/" + name + "/timeout_s", s.timeout_s, "s");
-    p.arbiter.sources.push_back(s);
-  }
-  r.Get("limits/max_linear_mps", p.arbiter.max_linear_mps, "m/s");
-  r.Get("limits/max_angular_rps", p.arbiter.max_angular_rps, "rad/s");
-  r.Get("update_rate_hz", p.update_rate_hz, "Hz");
-  r.Get("status_rate_hz", p.status_rate_hz, "Hz");
-  for (const std::string& e : ValidateParameters(p.arbiter)) r.Fail(e);
-  r.Require(p.update_rate_hz > 0 && p.update_rate_hz <= 1000, "update_rate_hz", "in (0, 1000]",
-            p.update_rate_hz);
-  r.Require(p.status_rate_hz >= 0 && p.status_rate_hz <= 100, "status_rate_hz", "in [0, 100]",
-            p.status_rate_hz);
-}
 
 class ArbiterNode {
  public:

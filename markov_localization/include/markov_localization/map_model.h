@@ -20,7 +20,7 @@ namespace markov_localization {
 using spott_map::Vec2;
 
 struct MapModelParameters {
-  double resolution_m = 0.15;      ///< Cell side (m), in (0, 2]; the paper's 10-15 cm.
+  double resolution_m = 0.15;      ///< Cell side (m), in [0.01, 2]; the paper's 10-15 cm.
   double state_clearance_m = 0.1;  ///< The robot's centre keeps this distance to obstacles
                                    ///< (m), in [0, 2]: cells closer are not states.
   double door_thickness_m = 0.05;  ///< Thickness of a closed door leaf (m), in (0, 1].

@@ -34,9 +34,7 @@ void AddCore(std::vector<std::string>& errors, const std::vector<std::string>& c
 
 }  // namespace
 
-std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
-  // spott_ros::ParameterReader: typed getters, every violation and every unknown key by name.
-  spott_ros::ParameterReader r = spott_ros::ParameterReader::FromNode(pnh);
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   std::vector<std::string> v;  // this node's own checks, handed to the reader at the end
   r.Get("world_file", p.world_file);
   r.Get("map_file", p.map_file);
@@ -282,7 +280,13 @@ std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParamete
   if (p.cmd_vel_topic.empty()) v.push_back("~active_run/cmd_vel_topic must not be empty");
   if (p.seed < 0) v.push_back("~active_run/seed must be >= 0");
   for (const std::string& e : v) r.Fail(e);
-  return r.Finish();  // the violations above, then every key no getter asked for
+}
+
+std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p) {
+  // spott_ros::ParameterReader: typed getters, every violation and every unknown key by name.
+  spott_ros::ParameterReader r = spott_ros::ParameterReader::FromNode(pnh);
+  ReadParameters(r, p);
+  return r.Finish();  // the violations, then every key no getter asked for
 }
 
 }  // namespace markov_localization

@@ -19,11 +19,12 @@ struct SimNodeParameters {
   std::string start_pose;          ///< "" = the world's robot_start; else "x y yaw" (m, m, rad)
   int seed = 1;                    ///< Seeds every random draw, >= 0.
   double physics_rate_hz = 100.0;  ///< [10, 10000]
-  double sensor_rate_hz = 10.0;    ///< Sonar, infrared, bumper; (0, physics_rate_hz]
-  double laser_rate_hz = 10.0;     ///< (0, physics_rate_hz]
-  double profile_rate_hz = 1.0;    ///< QUADRIS profiles (horizontal and vertical); (0, physics]
-  double odom_rate_hz = 50.0;      ///< /odom, tf, ground truth, joint states; (0, physics]
-  double real_time_factor = 1.0;   ///< Simulated s per wall s; 0 = as fast as possible; [0, 1e4]
+  double sensor_rate_hz = 10.0;    ///< Sonar, infrared, bumper; [0.01, physics_rate_hz]
+  double laser_rate_hz = 10.0;     ///< [0.01, physics_rate_hz]
+  double profile_rate_hz = 1.0;    ///< QUADRIS profiles (horizontal and vertical); [0.01, physics]
+  double odom_rate_hz = 50.0;      ///< /odom, tf, ground truth, joint states; [0.01, physics]
+  /// Simulated s per wall s; 0 = as fast as possible, else [0.01, 1e4].
+  double real_time_factor = 1.0;
   double cmd_vel_timeout_s = 1.0;  ///< Stop without a command for this long (sim s); 0 = never
   std::string map_frame = "map";
   std::string odom_frame = "odom";
@@ -37,7 +38,7 @@ struct SimNodeParameters {
   std::string octomap_file = "/tmp/robot_sim.bt";  ///< Where ~save_octomap writes.
   /// The stack's outputs whose lag holds the clock (consumer_pacer.h).
   PacerParameters consumers;
-  /// The battery's drain model (battery.h) and how often /battery is published, (0, physics].
+  /// The battery's drain model (battery.h) and how often /battery is published, [0.01, physics].
   BatteryParameters battery;
   double battery_rate_hz = 1.0;
 };

@@ -28,9 +28,10 @@ class OcTree;
 namespace robot_sim {
 
 struct SimWorldParameters {
-  double wall_height_m = 2.5;           ///< Walls and door leaves are this tall (m), > 0.
+  double wall_height_m = 2.5;           ///< Walls and door leaves are this tall (m), (0, 10].
   double door_leaf_thickness_m = 0.05;  ///< A closed door's leaf (m), > 0.
-  double octomap_resolution_m = 0.05;   ///< Voxel side (m), (0, 1].
+  /// Voxel side (m), [0.01, 1]: the tree (16 levels) reaches 32768 voxels from the origin.
+  double octomap_resolution_m = 0.05;
   /// How the simulator builds a door whose state the world file leaves unknown (the map
   /// database may not know it; the building always does).
   bool unknown_doors_closed = true;

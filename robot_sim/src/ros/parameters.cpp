@@ -109,6 +109,10 @@ void Read(spott_ros::ParameterReader& r, SimNodeParameters& p) {
 std::string FaultScheduleYaml(const ros::NodeHandle& pnh) {
   XmlRpc::XmlRpcValue faults;
   if (!pnh.getParam("faults", faults)) return "";
+  return FaultScheduleYaml(faults);
+}
+
+std::string FaultScheduleYaml(const XmlRpc::XmlRpcValue& faults) {
   std::ostringstream out;
   out << "faults: ";
   Emit(faults, out);

@@ -8,8 +8,9 @@ namespace rpl_executive::noreils_chatila {
 std::vector<std::string> ValidateParameters(const PathSmoothingParameters& p) {
   std::vector<std::string> v;
   if (!(p.corner_distance_max_m > 0.0)) v.push_back("corner_distance_max_m: must be above 0");
-  if (!(p.sample_step_m > 0.0 && p.sample_step_m <= 1.0)) {
-    v.push_back("sample_step_m: must be in (0, 1]");
+  // A line is sampled in ceil(length / sample_step_m) steps, counted in an int.
+  if (!(p.sample_step_m >= 0.001 && p.sample_step_m <= 1.0)) {
+    v.push_back("sample_step_m: must be in [0.001, 1]");
   }
   if (!(p.max_deflection_rad > 0.0 && p.max_deflection_rad < kPi)) {
     v.push_back("max_deflection_rad: must be in (0, pi)");

@@ -24,8 +24,9 @@ std::vector<std::string> ValidateParameters(const NodeParameters& p) {
         &p.laser_topic, &p.battery_topic}) {
     if (f->empty()) e.push_back("frame, topic, action and service names must not be empty");
   }
-  if (!(p.state_rate_hz >= 0 && p.state_rate_hz <= 100))
-    e.push_back("state_rate_hz: must be in [0, 100] Hz");
+  // The state timer's period 1 / state_rate_hz must make a ros::Duration (at most 2^31 s).
+  if (!(p.state_rate_hz == 0 || (p.state_rate_hz >= 0.01 && p.state_rate_hz <= 100)))
+    e.push_back("state_rate_hz: must be 0 (on change only) or in [0.01, 100] Hz");
   if (!(p.ended_threads_kept >= 0 && p.ended_threads_kept <= 1000))
     e.push_back("ended_threads_kept: must be in [0, 1000]");
   if (!(p.service_timeout_s > 0 && p.service_timeout_s <= 60))

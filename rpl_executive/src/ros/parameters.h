@@ -38,7 +38,8 @@ struct NodeParameters {
   std::string arbiter = "cmd_vel_arbiter";
   /// The executive's source at the arbiter (its input is /cmd_vel/<source>).
   std::string wheels_source = "executive";
-  /// ~state is published on every change and also at this rate (Hz), [0, 100].
+  /// ~state is published on every change and also at this rate (Hz): 0 (on change only) or
+  /// [0.01, 100].
   double state_rate_hz = 1.0;
   /// Ended threads of control kept in the task tree feedback, [0, 1000].
   int ended_threads_kept = 30;

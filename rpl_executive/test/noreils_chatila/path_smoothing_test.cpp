@@ -107,5 +107,21 @@ TEST(PathSmoothing, ParametersAreValidatedByName) {
   EXPECT_EQ(v[1].rfind("max_deflection_rad:", 0), 0u);
 }
 
+// Found by rpl_executive_parameters_fuzz: nc/pilot/sample_step_m 1e-300 was accepted, and a
+// line's sample count ceil(length / step) was cast into an int (undefined).
+TEST(PathSmoothing, ASampleStepTooFineToCountIsRefused) {
+  PathSmoothingParameters p;
+  for (double step : {1e-300, 1e-9, 0.0009}) {
+    p.sample_step_m = step;
+    const auto v = ValidateParameters(p);
+    ASSERT_EQ(v.size(), 1u) << step;
+    EXPECT_EQ(v[0].rfind("sample_step_m:", 0), 0u);
+  }
+  p.sample_step_m = 0.001;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  const SmoothedPath path = SmoothBrokenLine({{0, 0}, {1, 0}, {1, 1}}, p);
+  EXPECT_GT(path.samples.size(), 1000u);
+}
+
 }  // namespace
 }  // namespace rpl_executive::noreils_chatila

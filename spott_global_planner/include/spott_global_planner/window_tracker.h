@@ -16,11 +16,13 @@
 namespace spott_global_planner {
 
 struct WindowParameters {
-  double window_size_m = 7.0;       ///< Side of the square window (m), > 0 (paper: 35 x 35 cells).
-  double resolution_m = 0.2;        ///< Cell side of the local planner's grid (m), > 0.
-  double recentre_margin_m = 1.0;   ///< Re-centre this close to the border (m), [0, size / 2).
-  bool fit_node = false;            ///< Grow the window to hold the robot's whole node.
-  double max_window_size_m = 30.0;  ///< Largest side fit_node may give (m), >= window_size_m.
+  double window_size_m = 7.0;      ///< Side of the square window (m), > 0 (paper: 35 x 35 cells).
+  double resolution_m = 0.2;       ///< Cell side of the local planner's grid (m), > 0.
+  double recentre_margin_m = 1.0;  ///< Re-centre this close to the border (m), [0, size / 2).
+  bool fit_node = false;           ///< Grow the window to hold the robot's whole node.
+  /// Largest side fit_node may give (m), >= window_size_m and at most 8192 cells of resolution_m
+  /// (the local planner's limit).
+  double max_window_size_m = 30.0;
 };
 
 /// Every violated constraint, naming its parameter ("window_size_m must be > 0 (got -1)").

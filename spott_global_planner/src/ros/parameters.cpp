@@ -29,8 +29,9 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("passage/max_cells", s.max_cells);
   if (p.frame_id.empty()) r.Fail("frame_id must not be empty");
   if (p.robot_frame.empty()) r.Fail("robot_frame must not be empty");
-  r.Require(p.update_rate_hz > 0.0 && p.update_rate_hz <= 100.0, "update_rate_hz", "in (0, 100]",
-            p.update_rate_hz);
+  // The timer's period 1 / update_rate_hz must make a ros::Duration (at most 2^31 s).
+  r.Require(p.update_rate_hz >= 0.01 && p.update_rate_hz <= 100.0, "update_rate_hz",
+            "in [0.01, 100]", p.update_rate_hz);
   r.Require(p.max_localization_error_m >= 0.0, "passage/max_localization_error_m", ">= 0",
             p.max_localization_error_m);
 }

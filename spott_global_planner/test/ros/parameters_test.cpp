@@ -40,6 +40,37 @@ TEST(NodeParameters, NestedValuesAreRead) {
   EXPECT_EQ(p.core.passage.max_cells, 1000);
 }
 
+// Found by global_planner_parameters_fuzz: 1e-300 Hz was accepted, and the update timer's
+// ros::Duration(1 / update_rate_hz) throws beyond 2^31 s.
+TEST(NodeParameters, ARateWhosePeriodNoDurationHoldsIsRefused) {
+  for (double hz : {1e-300, 4.9e-324, 0.0099}) {
+    XmlRpcValue v;
+    v["update_rate_hz"] = hz;
+    NodeParameters p;
+    const Strings e = Read(v, p);
+    ASSERT_EQ(e.size(), 1u) << hz;
+    EXPECT_EQ(e[0].rfind("~update_rate_hz must be in [0.01, 100]", 0), 0u) << e[0];
+  }
+  XmlRpcValue v;
+  v["update_rate_hz"] = 0.01;
+  NodeParameters p;
+  EXPECT_EQ(Read(v, p), Strings{});
+}
+
+// Found by global_planner_parameters_fuzz: a 7 m window of 1e-300 m cells was accepted, and
+// WindowAround rounds the cells into an int (std::lround beyond a long: an unspecified window).
+TEST(NodeParameters, AWindowOfMoreCellsThanTheLocalPlannerTakesIsRefused) {
+  XmlRpcValue v;
+  v["window"]["resolution_m"] = 1e-300;
+  NodeParameters p;
+  const Strings e = Read(v, p);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].rfind("~window/max_window_size_m must be at most 8192 cells", 0), 0u) << e[0];
+  XmlRpcValue fine;
+  fine["window"]["resolution_m"] = 30.0 / 8192;  // max_window_size_m 30 m: 8192 cells
+  EXPECT_EQ(Read(fine, p), Strings{});
+}
+
 TEST(NodeParameters, EveryViolationNamesItsParameter) {
   XmlRpcValue v;
   v["algorithm"] = "bfs";
@@ -53,7 +84,7 @@ TEST(NodeParameters, EveryViolationNamesItsParameter) {
   EXPECT_EQ(Read(v, p), (Strings{"~frame_id must be a string, not an integer",
                                  "~algorithm must be dijkstra or astar (got 'bfs')",
                                  "~window/fit_node must be true or false, not a string",
-                                 "~update_rate_hz must be in (0, 100] (got 0)",
+                                 "~update_rate_hz must be in [0.01, 100] (got 0)",
                                  "~passage/max_localization_error_m must be >= 0 (got -0.5)",
                                  "~window/window_size_m must be > 0 (got -1)",
                                  "~window/size is not a parameter of this node"}));

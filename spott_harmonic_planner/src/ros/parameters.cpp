@@ -73,8 +73,9 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
 
   r.Require(p.heading_tolerance_rad > 0.0 && p.heading_tolerance_rad <= M_PI,
             "navigate/heading_tolerance_rad", "in (0, pi]", p.heading_tolerance_rad);
-  r.Require(p.cycle_rate_hz > 0.0 && p.cycle_rate_hz <= 1000.0, "cycle_rate_hz", "in (0, 1000]",
-            p.cycle_rate_hz);
+  // The timer's period 1 / cycle_rate_hz must make a ros::Duration (at most 2^31 s).
+  r.Require(p.cycle_rate_hz >= 0.01 && p.cycle_rate_hz <= 1000.0, "cycle_rate_hz",
+            "in [0.01, 1000]", p.cycle_rate_hz);
   r.Require(p.visualization_every >= 1, "visualization_every", ">= 1", p.visualization_every);
   r.Require(p.contact_memory_s > 0.0, "navigate/contact_memory_s", "> 0", p.contact_memory_s);
   r.Require(p.contact_size_m > 0.0 && p.contact_size_m <= 1.0, "navigate/contact_size_m",

@@ -23,7 +23,8 @@ struct LocalMapParameters {
   double door_thickness_m = 0.05;  ///< A closed door leaf drawn across its opening (m), >= 0.
 
   double padding_m() const { return robot_radius_m + max_localization_error_m; }
-  int cells() const;  ///< Cells per side: round(window_size_m / resolution_m).
+  /// Cells per side: round(window_size_m / resolution_m), of valid parameters (at most 8192).
+  int cells() const;
 };
 
 /// Every violated constraint, each naming its parameter, e.g.

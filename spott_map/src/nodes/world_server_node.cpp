@@ -18,6 +18,7 @@
 #include "spott_map/local_map.h"
 #include "spott_map/ros/conversions.h"
 #include "spott_map/ros/map_update.h"
+#include "spott_map/ros/world_server_parameters.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
@@ -26,13 +27,6 @@ namespace spott_map {
 namespace {
 
 namespace conv = ros_conversions;
-
-struct WorldServerParameters {
-  std::string world_file;  ///< Required.
-  std::string frame_id = "map";
-  double map_resolution_m = 0.05;    ///< > 0
-  double feature_tolerance_m = 0.1;  ///< > 0: sensed features this close are "already there".
-};
 
 class WorldServer {
  public:
@@ -177,19 +171,6 @@ class WorldServer {
   ros::ServiceServer door_srv_, locate_srv_, lookup_srv_, load_srv_;
   spott_ros::InputRefusals refusals_;
 };
-
-// Reads and checks every parameter; each violation names its parameter.
-void ReadParameters(spott_ros::ParameterReader& r, WorldServerParameters& p) {
-  r.Get("world_file", p.world_file);
-  r.Get("frame_id", p.frame_id);
-  r.Get("map_resolution_m", p.map_resolution_m, "m");
-  r.Get("feature_tolerance_m", p.feature_tolerance_m, "m");
-  if (p.world_file.empty()) r.Fail("world_file is required (path to a world YAML)");
-  if (p.frame_id.empty()) r.Fail("frame_id must not be empty");
-  r.Require(p.map_resolution_m > 0.0 && p.map_resolution_m <= 10.0, "map_resolution_m",
-            "in (0, 10]", p.map_resolution_m);
-  r.Require(p.feature_tolerance_m > 0.0, "feature_tolerance_m", "> 0", p.feature_tolerance_m);
-}
 
 }  // namespace
 }  // namespace spott_map

@@ -14,22 +14,11 @@
 #include <atomic>
 
 #include "spott_move_base/conversions.h"
+#include "spott_move_base/parameters.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace spott_move_base {
 namespace {
-
-struct NodeParameters {
-  std::string navigate_action = "harmonic_planner/navigate";
-  double server_timeout_s = 30.0;  ///< Wait this long for the Navigate server per goal (s), > 0.
-};
-
-void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
-  r.Get("navigate_action", p.navigate_action);
-  r.Get("server_timeout_s", p.server_timeout_s, "s");
-  r.Require(p.server_timeout_s > 0, "server_timeout_s", "> 0", p.server_timeout_s);
-  if (p.navigate_action.empty()) r.Fail("navigate_action must not be empty");
-}
 
 using NavigateClient = actionlib::SimpleActionClient<spott_msgs::NavigateAction>;
 using MoveBaseServer = actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>;

@@ -24,45 +24,13 @@
 #include "spott_tr_plus/interpreter.h"
 #include "spott_tr_plus/parser.h"
 #include "spott_tr_plus/ros/conversions.h"
+#include "spott_tr_plus/ros/parameters.h"
 #include "spott_tr_plus/task_command.h"
 
 namespace spott_tr_plus {
 namespace {
 
 namespace conv = ros_conversions;
-
-struct NodeParameters {
-  std::string program_file;           ///< Required: the .tr file to run at start-up.
-  std::string main;                   ///< The program to run; empty: the file's `main`.
-  int max_call_depth = 32;            ///< >= 1
-  TaskInterpretationParameters task;  ///< ~task/... (task_command.h)
-};
-
-// Every key under ~ through the one reader: a misspelt or mistyped key stops the node by name.
-void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
-  r.Get("program_file", p.program_file);
-  r.Get("main", p.main);
-  r.Get("max_call_depth", p.max_call_depth);
-  TaskInterpretationParameters& t = p.task;
-  const std::pair<const char*, double*> distances[] = {
-      {"task/at_distance_m", &t.at_distance_m},
-      {"task/against_distance_m", &t.against_distance_m},
-      {"task/near_distance_m", &t.near_distance_m},
-      {"task/far_distance_m", &t.far_distance_m},
-      {"task/beyond_distance_m", &t.beyond_distance_m},
-      {"task/goal_tolerance_m", &t.goal_tolerance_m},
-      {"task/default_door_width_m", &t.default_door_width_m},
-      {"task/default_chair_radius_m", &t.default_chair_radius_m},
-      {"task/default_desk_length_m", &t.default_desk_length_m},
-      {"task/default_desk_width_m", &t.default_desk_width_m}};
-  for (const auto& [name, field] : distances) r.Get(name, *field, "m");
-  r.Get("task/slow_fraction", t.slow_fraction);
-  r.Get("task/normal_fraction", t.normal_fraction);
-  r.Get("task/quick_fraction", t.quick_fraction);
-  if (p.program_file.empty()) r.Fail("program_file is required (a .tr file)");
-  r.Require(p.max_call_depth >= 1, "max_call_depth", ">= 1", p.max_call_depth);
-  for (const std::string& v : ValidateParameters(t)) r.Fail("task/" + v);
-}
 
 class TrPlusNode {
  public:

@@ -21,6 +21,7 @@
 #include "markov_localization/sticky_estimate.h"
 #include "markov_localization/wander.h"
 #include "spott_map/world.h"
+#include "spott_ros/parameter_reader.h"
 
 namespace markov_localization {
 
@@ -119,8 +120,13 @@ struct NodeParameters {
   int seed = 1;                                  ///< Seeds the random motion, >= 0.
 };
 
+/// Reads every parameter of the reader (the node's private namespace) into `p` and records each
+/// violation in `r`, naming its parameter ("~grid/threshold_fraction must be in (0, 1)");
+/// r.Finish() then adds the unknown keys.
+void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p);
+
 /// Reads every parameter from `pnh` (private namespace) into `p`; returns each violation
-/// naming its parameter ("~grid/threshold_fraction must be in (0, 1)"); empty when valid.
+/// naming its parameter; empty when valid.
 std::vector<std::string> ReadParameters(const ros::NodeHandle& pnh, NodeParameters& p);
 
 }  // namespace markov_localization

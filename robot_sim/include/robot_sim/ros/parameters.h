@@ -19,5 +19,7 @@ void Read(spott_ros::ParameterReader& r, SimNodeParameters& p);
 /// The `faults` parameter (a list of events, see fault_events.h) as YAML text for
 /// ParseFaultSchedule; "" when unset.
 std::string FaultScheduleYaml(const ros::NodeHandle& pnh);
+/// The same for the value of the `faults` parameter.
+std::string FaultScheduleYaml(const XmlRpc::XmlRpcValue& faults);
 
 }  // namespace robot_sim::ros_parameters

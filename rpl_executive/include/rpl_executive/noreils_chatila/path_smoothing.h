@@ -23,7 +23,7 @@ namespace rpl_executive::noreils_chatila {
 
 struct PathSmoothingParameters {
   double corner_distance_max_m = 0.5;  ///< d at most, (0, inf)
-  double sample_step_m = 0.02;         ///< spacing of the samples, (0, 1]
+  double sample_step_m = 0.02;         ///< spacing of the samples, [0.001, 1]
   double max_deflection_rad = 2.8;     ///< sharper turns are made in place, (0, pi)
 };
 std::vector<std::string> ValidateParameters(const PathSmoothingParameters& p);

@@ -15,7 +15,7 @@ struct NodeParameters {
   std::string frame_id = "map";           ///< frame of the graph, goals and outputs
   std::string robot_frame = "base_link";  ///< pose = tf frame_id -> robot_frame; its URDF link
   std::string robot_description = "robot_description";  ///< parameter holding the URDF
-  double update_rate_hz = 5.0;                          ///< (0, 100]
+  double update_rate_hz = 5.0;                          ///< [0.01, 100]
   bool follow_local_window = true;                      ///< use the window received on local_window
   /// Passage padding = robot radius (robot description) + this (m), >= 0.
   double max_localization_error_m = 0.075;

@@ -18,7 +18,7 @@ struct NodeParameters {
   std::string frame_id = "map";
   std::string base_frame = "base_link";  ///< Also the URDF link whose footprint pads obstacles.
   std::string robot_description = "robot_description";  ///< Parameter holding the URDF.
-  double cycle_rate_hz = 20.0;                          ///< (0, 1000]
+  double cycle_rate_hz = 20.0;                          ///< [0.01, 1000]
   int visualization_every = 5;         ///< Cycles between potential/contour/path messages, >= 1.
   double heading_tolerance_rad = 0.1;  ///< Default final heading tolerance (rad), (0, pi].
   double contact_memory_s = 60.0;      ///< Bumper contacts kept as obstacles (s), > 0.

@@ -1,0 +1,21 @@
+// world_server's parameters (config/world_server.yaml), read through spott_ros's reader: wrong
+// types, values out of range and unknown keys stop the node, each named.
+#pragma once
+
+#include <string>
+
+#include "spott_ros/parameter_reader.h"
+
+namespace spott_map {
+
+struct WorldServerParameters {
+  std::string world_file;  ///< Required.
+  std::string frame_id = "map";
+  double map_resolution_m = 0.05;    ///< (0, 10]
+  double feature_tolerance_m = 0.1;  ///< > 0: sensed features this close are "already there".
+};
+
+/// Fills `p` (missing keys keep their defaults) and records every violation in `r` by its key.
+void ReadParameters(spott_ros::ParameterReader& r, WorldServerParameters& p);
+
+}  // namespace spott_map
