@@ -117,6 +117,7 @@ void Controller(FuzzedDataProvider& in) {
   ExpectIn("localization/jump_rad", l.jump_rad, "(0, inf)");
   ExpectIn("localization/retract_s", l.retract_s, "[0, inf)");
   ExpectIn("localization/settle_s", l.settle_s, "[0, inf)");
+  ExpectIn("localization/keep_radius_m", l.keep_radius_m, "[0, 10]");
   const auto& k = c.tasks;
   ExpectIn("tasks/goal_tolerance_m", k.goal_tolerance_m, "(0, inf)");
   Expect(k.navigate_retries >= 0, "tasks/navigate_retries < 0 accepted");

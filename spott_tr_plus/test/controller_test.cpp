@@ -312,29 +312,47 @@ TEST_F(Controller, AnEstimateJumpTakesBackWhatWasJustSensedAndPausesMapping) {
   c_->Bumper({}, 0.3);
   Run(0.3, 10.0, "reflex");
   // 12 s later in hall_e, odometry and estimate agreeing (a long drive, not a jump).
-  const Pose2 east{20.0, 8.25, 0.0};
-  c_->SetOdometry(east, 0.0, 0.0, 12.0);
-  c_->SetPose(east, 12.0);
-  c_->SetLocalization(true, 12.0);
-  c_->Bumper({0.0}, 12.1);  // contact_2
+  const auto drive_to = [&](double x, double t) {
+    const Pose2 p{x, 8.25, 0.0};
+    pose_ = p;  // where Run() moves the fake robot on from
+    c_->SetOdometry(p, 0.0, 0.0, t);
+    c_->SetPose(p, t);
+    c_->SetLocalization(true, t);
+  };
+  drive_to(20.0, 12.0);
+  c_->Bumper({0.0}, 12.1);  // contact_2 at (20.2285, 8.25)
   c_->Bumper({}, 12.2);
+  Run(12.2, 20.0, "reflex");  // the reflex backs off and hands the wheels back
+  drive_to(22.0, 20.0);
+  c_->Bumper({0.0}, 20.1);  // contact_3 at (22.2285, 8.25)
+  c_->Bumper({}, 20.2);
   ASSERT_TRUE(Has(c_->added_features(), "contact_1"));
   ASSERT_TRUE(Has(c_->added_features(), "contact_2"));
+  ASSERT_TRUE(Has(c_->added_features(), "contact_3"));
   EXPECT_EQ(c_->estimate_jumps(), 0);
-  // Now the estimate moves 1 m while odometry stands: contact_2 was placed with a pose that
-  // was 1 m off; contact_1, placed 12.8 s before (localization/retract_s 10), stays.
+  // Now the estimate moves 1 m while odometry stands: contact_2 and contact_3 were placed with
+  // a pose 1 m off. contact_2, 1.77 m behind the robot, is taken back; contact_3, 0.23 m ahead
+  // (within localization/keep_radius_m), moves with the robot: the obstacle is still just
+  // ahead of it. contact_1, placed 20.8 s before (localization/retract_s 10), stays.
   const std::size_t sent = io_.updates.size();
-  c_->SetPose(Pose2{21.0, 8.25, 0.0}, 13.0);
+  c_->SetPose(Pose2{23.0, 8.25, 0.0}, 21.0);
   EXPECT_EQ(c_->estimate_jumps(), 1);
   ASSERT_EQ(io_.updates.size(), sent + 1);
-  EXPECT_EQ(io_.updates.back().removed, std::vector<std::string>{"contact_2"});
+  EXPECT_EQ(io_.updates.back().removed, (std::vector<std::string>{"contact_3", "contact_2"}));
+  ASSERT_EQ(io_.updates.back().added.size(), 1u);
+  const spott_map::MapFeature moved = io_.updates.back().added[0];
+  ASSERT_EQ(moved.points.size(), 1u);
+  EXPECT_NEAR(moved.points[0].x(), 23.2285, 1e-6);
+  EXPECT_NEAR(moved.points[0].y(), 8.25, 1e-6);
+  EXPECT_TRUE(c_->map().FindFeature(moved.id));
   EXPECT_FALSE(c_->map().FindFeature("contact_2"));
+  EXPECT_FALSE(c_->map().FindFeature("contact_3"));
   EXPECT_TRUE(c_->map().FindFeature("contact_1"));
   EXPECT_FALSE(Has(c_->added_features(), "contact_2"));
   // A turn of the estimate by 0.5 rad is a jump too; small corrections are not.
-  c_->SetPose(Pose2{21.1, 8.3, 0.1}, 13.5);
+  c_->SetPose(Pose2{23.1, 8.3, 0.1}, 21.5);
   EXPECT_EQ(c_->estimate_jumps(), 1);
-  c_->SetPose(Pose2{21.1, 8.3, 0.6}, 14.0);
+  c_->SetPose(Pose2{23.1, 8.3, 0.6}, 22.0);
   EXPECT_EQ(c_->estimate_jumps(), 2);
 }
 

@@ -70,6 +70,8 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
   if (!(l.jump_rad > 0)) v.push_back(Violation("localization/jump_rad", "> 0", l.jump_rad));
   if (!(l.retract_s >= 0)) v.push_back(Violation("localization/retract_s", ">= 0", l.retract_s));
   if (!(l.settle_s >= 0)) v.push_back(Violation("localization/settle_s", ">= 0", l.settle_s));
+  if (!(l.keep_radius_m >= 0 && l.keep_radius_m <= 10))
+    v.push_back(Violation("localization/keep_radius_m", "in [0, 10]", l.keep_radius_m));
   const auto& t = p.tasks;
   if (!(t.goal_tolerance_m > 0))
     v.push_back(Violation("tasks/goal_tolerance_m", "> 0", t.goal_tolerance_m));
@@ -641,18 +643,34 @@ bool NavigationController::MappingAllowed(double now) const {
 }
 
 // The estimate jumped: the features sensed in the seconds before were placed where the robot
-// was believed to be, not where it was. Take them back, drop the evidence not yet confirmed,
-// and map nothing until the estimate has settled.
-void NavigationController::EstimateJumped(double now) {
+// was believed to be, not where it was. Take them back (those near the robot move with it: the
+// sensor measured them from the robot), drop the evidence not yet confirmed, and map nothing
+// until the estimate has settled.
+void NavigationController::EstimateJumped(const Pose2& before, const Pose2& after, double now) {
   ++estimate_jumps_;
   mapping_resumes_ = now + params_.localization.settle_s;
   sonar_mapper_.Forget();
   quadris_mapper_.Forget();
   batches_.clear();  // found, not yet added: placed with the old pose as well
+  // after * before^-1: a point at the old pose's offset lands at the same offset from the new.
+  const double turn = Wrap(after.yaw - before.yaw), c = std::cos(turn), sn = std::sin(turn);
+  const auto move = [&](const Vec2& p) {
+    const Vec2 d = p - before.Position();
+    return Vec2(after.x + c * d.x() - sn * d.y(), after.y + sn * d.x() + c * d.y());
+  };
   MapChange change;
   while (!recent_ids_.empty() && recent_ids_.back().first >= now - params_.localization.retract_s) {
-    change.removed.push_back(recent_ids_.back().second);
+    const std::string id = recent_ids_.back().second;
     recent_ids_.pop_back();
+    const spott_map::MapFeature* f = db_.FindFeature(id);
+    if (!f) continue;
+    change.removed.push_back(id);
+    if (f->DistanceTo(before.Position()) > params_.localization.keep_radius_m) continue;
+    spott_map::MapFeature moved = *f;
+    for (Vec2& p : moved.points) p = move(p);
+    const Vec2 centre = move(moved.pose.Position());
+    moved.pose = Pose2{centre.x(), centre.y(), Wrap(moved.pose.yaw + turn)};
+    change.added.push_back(std::move(moved));
   }
   recent_ids_.clear();  // older ones were placed before the estimate went wrong: they stay
   ApplyChange(std::move(change), now);
@@ -763,8 +781,10 @@ void NavigationController::SetPose(const Pose2& pose, double now) {
                            correction_->y + sy * odom_->x + cy * odom_->y);
       const double moved = (predicted - pose.Position()).norm();
       const double turned = std::abs(Wrap(correction.yaw - correction_->yaw));
-      if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad)
-        EstimateJumped(now);
+      if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad) {
+        const double yaw_before = Wrap(correction_->yaw + odom_->yaw);
+        EstimateJumped(Pose2{predicted.x(), predicted.y(), yaw_before}, pose, now);
+      }
     }
     correction_ = correction;
   }

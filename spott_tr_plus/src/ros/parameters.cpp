@@ -107,6 +107,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("localization/jump_m", l.jump_m, "m");
   r.Get("localization/jump_rad", l.jump_rad, "rad");
   r.Get("localization/retract_s", l.retract_s, "s");
+  r.Get("localization/keep_radius_m", l.keep_radius_m, "m");
   r.Get("localization/settle_s", l.settle_s, "s");
   auto& k = c.tasks;
   r.Get("tasks/goal_tolerance_m", k.goal_tolerance_m, "m");

@@ -111,8 +111,12 @@ struct LocalizationParameters {
   /// wrong pose, and what is sensed next with one that may still settle.
   double jump_m = 0.3;
   double jump_rad = 0.35;
-  /// Sensed features added this long before a jump are removed (s), >= 0.
+  /// Sensed features added this long before a jump are removed (s), >= 0 ...
   double retract_s = 10.0;
+  /// ... but those this close to the robot (in the frame they were placed in: their true
+  /// offset from it) are moved with the jump instead (m), >= 0: taken back, an obstacle just
+  /// ahead went unmapped for settle_s and a Fig. 18 run drove into the lab's partition.
+  double keep_radius_m = 1.0;
   /// Nothing is mapped for this long after a jump (s), >= 0.
   double settle_s = 3.0;
 };
@@ -238,7 +242,8 @@ class NavigationController {
   void Finish(const std::string& outcome, bool success, const std::string& message, double now,
               bool defer = false);
   void ApplyChange(MapChange change, double now);
-  void EstimateJumped(double now);
+  /// `before`: the robot's pose now by the correction before the jump; `after`: the new one.
+  void EstimateJumped(const Pose2& before, const Pose2& after, double now);
   /// Takes back the sensed features within `radius` of `at`; returns how many.
   int ClearSensedNear(const Vec2& at, double radius, double now);
   bool MappingAllowed(double now) const;
