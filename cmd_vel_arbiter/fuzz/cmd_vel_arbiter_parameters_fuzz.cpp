@@ -37,6 +37,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("limits/max_angular_rps", a.max_angular_rps, "(0, inf)");
   ExpectIn("update_rate_hz", p.update_rate_hz, "[0.01, 1000]");
   if (p.status_rate_hz != 0) ExpectIn("status_rate_hz", p.status_rate_hz, "[0.01, 100]");
+  ExpectIn("clearance/max_age_s", p.clearance_max_age_s, "(0, 60]");
+  ExpectIn("clearance/deceleration_mps2", p.clearance.deceleration_mps2, "(0, 100]");
+  ExpectIn("clearance/latency_s", p.clearance.latency_s, "[0, 5]");
+  ExpectIn("clearance/stop_margin_m", p.clearance.stop_margin_m, "[0, 2]");
+  ExpectIn("clearance/corridor_margin_m", p.clearance.corridor_margin_m, "[0, 1]");
+  ExpectIn("clearance/footprint_radius_m", p.clearance.footprint_radius_m, "[0, 10]");
   spott_fuzz::ExpectRosDuration("the update timer's 1 / update_rate_hz", 1.0 / p.update_rate_hz);
   if (p.status_rate_hz > 0) {
     spott_fuzz::ExpectRosDuration("the status timer's 1 / status_rate_hz", 1.0 / p.status_rate_hz);

@@ -83,7 +83,7 @@ bool Arbiter::Sending(const Source& s, double now_s) const {
 
 int Arbiter::PriorityOf(const std::string& name) const { return sources_.at(name).params.priority; }
 
-Velocity Arbiter::Filter(Velocity v) {
+Velocity Arbiter::Filter(Velocity v, const std::string& driver) {
   // Run-time limits: one factor for both components keeps the commanded curvature.
   double scale = 1.0;
   if (std::abs(v.linear_mps) > limit_linear_) scale = limit_linear_ / std::abs(v.linear_mps);
@@ -96,7 +96,23 @@ Velocity Arbiter::Filter(Velocity v) {
     if (v.linear_mps * std::cos(phi) > kPushEpsilon) bumper_stop_ = true;
   }
   if (bumper_stop_) v.linear_mps = 0.0;
+  // The clearance caps the linear speed only: turning away stays possible.
+  clearance_slowed_ = false;
+  const auto& exempt = params_.clearance_exempt;
+  if (std::find(exempt.begin(), exempt.end(), driver) == exempt.end()) {
+    const double cap = v.linear_mps > 0.0 ? clear_forward_ : clear_backward_;
+    if (std::abs(v.linear_mps) > cap) {
+      v.linear_mps = std::copysign(cap, v.linear_mps);
+      clearance_slowed_ = true;
+    }
+  }
   return v;
+}
+
+Output Arbiter::SetClearance(double forward_mps, double backward_mps, double now_s) {
+  clear_forward_ = std::isnan(forward_mps) ? 0.0 : std::max(0.0, forward_mps);
+  clear_backward_ = std::isnan(backward_mps) ? 0.0 : std::max(0.0, backward_mps);
+  return Select(now_s, false);
 }
 
 Output Arbiter::Select(double now_s, bool force) {
@@ -131,7 +147,7 @@ Output Arbiter::Select(double now_s, bool force) {
   }
   driver_ = driver;
   const bool was_bumper_stop = bumper_stop_;
-  const Velocity command = driver.empty() ? Velocity{} : Filter(sources_.at(driver).last);
+  const Velocity command = driver.empty() ? Velocity{} : Filter(sources_.at(driver).last, driver);
   if (driver.empty()) bumper_stop_ = false;
   changed |= bumper_stop_ != was_bumper_stop;
   if (changed) ++revision_;
@@ -141,6 +157,7 @@ Output Arbiter::Select(double now_s, bool force) {
   if (out.publish) {
     published_ = command;
     if (bumper_stop_) ++bumper_stops_;
+    if (clearance_slowed_) ++clearance_slowdowns_;
   }
   return out;
 }
@@ -180,6 +197,7 @@ Output Arbiter::Command(const std::string& source, const Velocity& v, double now
   if (driver_ == source && !out.publish) {
     out.publish = true;
     if (bumper_stop_) ++bumper_stops_;
+    if (clearance_slowed_) ++clearance_slowdowns_;
   }
   return out;
 }

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ struct ArbiterParameters {
   std::vector<SourceParameters> sources;  ///< At least one.
   double max_linear_mps = 0.5;            ///< The robot's limit: faster commands are refused, > 0.
   double max_angular_rps = 1.0;           ///< (rad/s), > 0.
+  /// Sources the clearance bounds do not cap (a reflex backing off a contact); names that are
+  /// not sources change nothing.
+  std::vector<std::string> clearance_exempt{"reflex"};
 };
 
 /// Every violation, named as in config/cmd_vel_arbiter.yaml.
@@ -78,6 +82,8 @@ class Arbiter {
   /// The bumper segments pressed now, as angles about +z from the robot's +x (rad).
   Output SetContacts(const std::vector<double>& pressed_angles_rad, double now_s);
 
+  /// Linear speed bounds from the range sensors (m/s, magnitudes; infinite = none).
+  Output SetClearance(double forward_mps, double backward_mps, double now_s);
   /// Exclusive take (see the header comment). False with `*message` when refused.
   bool Take(const std::string& source, double now_s, std::string* message, std::string* preempted,
             Output* out);
@@ -93,6 +99,8 @@ class Arbiter {
   double max_angular_rps() const { return limit_angular_; }
   const std::string& limits_reason() const { return limits_reason_; }
   bool bumper_stop() const { return bumper_stop_; }
+  /// Commands the clearance bounds slowed (counted at each published command).
+  std::uint32_t clearance_slowdowns() const { return clearance_slowdowns_; }
   std::uint32_t bumper_stops() const { return bumper_stops_; }
   std::uint32_t refused() const { return refused_total_; }
   /// Changes whenever the status (driver, states, holder, limits, bumper) changes.
@@ -113,7 +121,7 @@ class Arbiter {
   /// Chooses the driver and source states; returns what to publish. `force` publishes even
   /// when nothing changed (a driver's own command).
   Output Select(double now_s, bool force);
-  Velocity Filter(Velocity v);
+  Velocity Filter(Velocity v, const std::string& driver);
 
   ArbiterParameters params_;
   std::map<std::string, Source> sources_;
@@ -125,6 +133,10 @@ class Arbiter {
   std::vector<double> contacts_;
   bool bumper_stop_ = false;
   std::uint32_t bumper_stops_ = 0;
+  double clear_forward_ = std::numeric_limits<double>::infinity();
+  double clear_backward_ = std::numeric_limits<double>::infinity();
+  bool clearance_slowed_ = false;  ///< The last filtered command was slowed by them.
+  std::uint32_t clearance_slowdowns_ = 0;
   std::uint32_t refused_total_ = 0;
   std::uint64_t revision_ = 0;
 };

@@ -3,15 +3,17 @@
 // the bumper and a timer, serves take/release/limits and publishes the status.
 //
 // Subscribes: cmd_vel/<source> (geometry_msgs/Twist) for every configured source, bumper
-// (spott_msgs/BumperRing). Publishes: cmd_vel (geometry_msgs/Twist), ~status
-// (spott_msgs/ArbiterStatus, latched). Services: ~take_wheels, ~release_wheels,
-// ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
+// (spott_msgs/BumperRing), clearance/topic (spott_msgs/RangeRing, default sonar). Publishes:
+// cmd_vel (geometry_msgs/Twist), ~status (spott_msgs/ArbiterStatus, latched). Services:
+// ~take_wheels, ~release_wheels, ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
 #include <ros/ros.h>
 #include <spott_msgs/ReleaseWheels.h>
 #include <spott_msgs/SetSpeedLimits.h>
 #include <spott_msgs/TakeWheels.h>
 
+#include <limits>
 #include <map>
+#include <optional>
 
 #include "cmd_vel_arbiter/ros/conversions.h"
 #include "cmd_vel_arbiter/ros/parameters.h"
@@ -26,7 +28,7 @@ namespace conv = ros_conversions;
 class ArbiterNode {
  public:
   ArbiterNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
-      : arbiter_(p.arbiter), refusals_(nh, "cmd_vel_arbiter") {
+      : arbiter_(p.arbiter), params_(p), refusals_(nh, "cmd_vel_arbiter") {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
@@ -38,12 +40,13 @@ class ArbiterNode {
           ros::VoidConstPtr(), hints));
     }
     bumper_sub_ = nh.subscribe("bumper", 10, &ArbiterNode::OnBumper, this, hints);
+    if (p.clearance_enabled)
+      ring_sub_ = nh.subscribe(p.clearance_topic, 10, &ArbiterNode::OnRing, this, hints);
     take_srv_ = pnh.advertiseService("take_wheels", &ArbiterNode::OnTake, this);
     release_srv_ = pnh.advertiseService("release_wheels", &ArbiterNode::OnRelease, this);
     limits_srv_ = pnh.advertiseService("set_speed_limits", &ArbiterNode::OnLimits, this);
-    update_timer_ =
-        nh.createTimer(ros::Duration(1.0 / p.update_rate_hz),
-                       [this](const ros::TimerEvent&) { Emit(arbiter_.Update(Now())); });
+    update_timer_ = nh.createTimer(ros::Duration(1.0 / p.update_rate_hz),
+                                   [this](const ros::TimerEvent&) { OnTimer(); });
     if (p.status_rate_hz > 0) {
       status_timer_ = nh.createTimer(ros::Duration(1.0 / p.status_rate_hz),
                                      [this](const ros::TimerEvent&) { PublishStatus(); });
@@ -84,6 +87,37 @@ class ArbiterNode {
     Emit(arbiter_.SetContacts(*angles, Now()));
   }
 
+  void OnRing(const spott_msgs::RangeRing& ring) {
+    std::string error;
+    const auto bounds = conv::RingBounds(ring, params_.clearance, &error);
+    if (!bounds) {
+      refusals_.Refuse(params_.clearance_topic, "ranges/mounts", error);
+      return;
+    }
+    ring_time_ = Now();
+    const std::uint32_t before = arbiter_.clearance_slowdowns();
+    Emit(arbiter_.SetClearance(bounds->forward_mps, bounds->backward_mps, *ring_time_));
+    if (arbiter_.clearance_slowdowns() != before) {
+      ROS_INFO_THROTTLE(5.0,
+                        "cmd_vel_arbiter: %s slowed to %.2f m/s: an echo %.2f m ahead, %.2f m "
+                        "behind",
+                        arbiter_.driver().c_str(), bounds->forward_mps, bounds->forward_gap_m,
+                        bounds->backward_gap_m);
+    }
+  }
+  void OnTimer() {
+    const double now = Now();
+    if (ring_time_ && now - *ring_time_ > params_.clearance_max_age_s) {
+      // A silent ring caps nothing: the bumper and the planners' maps still guard.
+      ROS_WARN("cmd_vel_arbiter: no %s for %.1f s: the clearance caps nothing until it is back",
+               params_.clearance_topic.c_str(), now - *ring_time_);
+      ring_time_.reset();
+      Emit(arbiter_.SetClearance(std::numeric_limits<double>::infinity(),
+                                 std::numeric_limits<double>::infinity(), now));
+      return;
+    }
+    Emit(arbiter_.Update(now));
+  }
   bool OnTake(spott_msgs::TakeWheels::Request& req, spott_msgs::TakeWheels::Response& res) {
     Output out;
     res.success = arbiter_.Take(req.source, Now(), &res.message, &res.preempted, &out);
@@ -127,11 +161,13 @@ class ArbiterNode {
   }
 
   Arbiter arbiter_;
+  NodeParameters params_;
+  std::optional<double> ring_time_;  ///< Of the last accepted ring (clearance).
   spott_ros::InputRefusals refusals_;
   std::uint64_t published_revision_ = ~std::uint64_t{0};
   ros::Publisher cmd_pub_, status_pub_;
   std::vector<ros::Subscriber> inputs_;
-  ros::Subscriber bumper_sub_;
+  ros::Subscriber bumper_sub_, ring_sub_;
   ros::ServiceServer take_srv_, release_srv_, limits_srv_;
   ros::Timer update_timer_, status_timer_;
 };

@@ -35,6 +35,31 @@ std::optional<std::vector<double>> PressedAngles(const spott_msgs::BumperRing& r
   return angles;
 }
 
+std::optional<SpeedBounds> RingBounds(const spott_msgs::RangeRing& ring,
+                                      const ClearanceParameters& p, std::string* error) {
+  if (ring.ranges.size() != ring.mounts.size()) {
+    *error = std::to_string(ring.ranges.size()) + " ranges but " +
+             std::to_string(ring.mounts.size()) + " mounts";
+    return std::nullopt;
+  }
+  if (!std::isfinite(ring.field_of_view) || !std::isfinite(ring.min_range) ||
+      !std::isfinite(ring.max_range)) {
+    *error = "field_of_view, min_range or max_range is not finite";
+    return std::nullopt;
+  }
+  std::vector<Transducer> transducers;
+  for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
+    const auto& m = ring.mounts[i];
+    if (!std::isfinite(m.x) || !std::isfinite(m.y) || !std::isfinite(m.theta)) {
+      *error = "mounts[" + std::to_string(i) + "] is not finite";
+      return std::nullopt;
+    }
+    transducers.push_back(Transducer{m.x, m.y, m.theta});
+  }
+  const std::vector<double> ranges(ring.ranges.begin(), ring.ranges.end());
+  return BoundsFromRing(transducers, ring.field_of_view, ring.min_range, ring.max_range, ranges, p);
+}
+
 spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp) {
   spott_msgs::ArbiterStatus s;
   s.header.stamp = stamp;

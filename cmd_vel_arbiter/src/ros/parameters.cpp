@@ -14,7 +14,21 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("limits/max_angular_rps", p.arbiter.max_angular_rps, "rad/s");
   r.Get("update_rate_hz", p.update_rate_hz, "Hz");
   r.Get("status_rate_hz", p.status_rate_hz, "Hz");
+  r.Get("clearance/enabled", p.clearance_enabled);
+  r.Get("clearance/topic", p.clearance_topic);
+  r.Get("clearance/max_age_s", p.clearance_max_age_s, "s");
+  r.Get("clearance/exempt_sources", p.arbiter.clearance_exempt);
+  ClearanceParameters& c = p.clearance;
+  r.Get("clearance/deceleration_mps2", c.deceleration_mps2, "m/s^2");
+  r.Get("clearance/latency_s", c.latency_s, "s");
+  r.Get("clearance/stop_margin_m", c.stop_margin_m, "m");
+  r.Get("clearance/corridor_margin_m", c.corridor_margin_m, "m");
+  r.Get("clearance/footprint_radius_m", c.footprint_radius_m, "m");
   for (const std::string& e : ValidateParameters(p.arbiter)) r.Fail(e);
+  for (const std::string& e : ValidateParameters(p.clearance)) r.Fail(e);
+  r.Require(p.clearance_max_age_s > 0 && p.clearance_max_age_s <= 60, "clearance/max_age_s",
+            "in (0, 60]", p.clearance_max_age_s);
+  if (p.clearance_enabled && p.clearance_topic.empty()) r.Fail("clearance/topic must be set");
   // The timers' periods 1 / rate must make a ros::Duration (at most 2^31 s).
   r.Require(p.update_rate_hz >= 0.01 && p.update_rate_hz <= 1000, "update_rate_hz",
             "in [0.01, 1000]", p.update_rate_hz);

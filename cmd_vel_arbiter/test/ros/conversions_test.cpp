@@ -59,5 +59,37 @@ TEST(Conversions, StatusStatesMatchTheMessageConstants) {
   EXPECT_EQ(s.sources[1].state, spott_msgs::ArbiterSource::DRIVING);
 }
 
+TEST(Conversions, ARangeRingGivesTheClearanceBoundsOrIsRefusedNamingTheField) {
+  spott_msgs::RangeRing r;
+  r.field_of_view = 0.436f;
+  r.min_range = 0.15f;
+  r.max_range = 5.0f;
+  for (int i = 0; i < 4; ++i) {  // front, left, back, right on a 0.25 m body
+    geometry_msgs::Pose2D m;
+    m.theta = i * M_PI / 2;
+    m.x = 0.25 * std::cos(m.theta);
+    m.y = 0.25 * std::sin(m.theta);
+    r.mounts.push_back(m);
+  }
+  r.ranges = {0.5f, 5.0f, std::numeric_limits<float>::quiet_NaN(), 5.0f};
+  const ClearanceParameters p;
+  std::string error;
+  const auto b = RingBounds(r, p, &error);
+  ASSERT_TRUE(b) << error;
+  EXPECT_NEAR(b->forward_gap_m, 0.5, 1e-6);  // the front echo, from the body's front
+  EXPECT_EQ(b->backward_gap_m, std::numeric_limits<double>::infinity());  // NaN: dropped out
+  EXPECT_NEAR(b->forward_mps, StoppingSpeed(0.5, p), 1e-6);
+  r.ranges.pop_back();
+  EXPECT_FALSE(RingBounds(r, p, &error));
+  EXPECT_NE(error.find("3 ranges but 4 mounts"), std::string::npos) << error;
+  r.ranges.push_back(5.0f);
+  r.mounts[1].theta = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(RingBounds(r, p, &error));
+  EXPECT_NE(error.find("mounts[1]"), std::string::npos) << error;
+  r.mounts[1].theta = M_PI / 2;
+  r.field_of_view = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(RingBounds(r, p, &error));
+}
+
 }  // namespace
 }  // namespace cmd_vel_arbiter::ros_conversions

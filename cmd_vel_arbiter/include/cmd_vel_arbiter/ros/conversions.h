@@ -9,8 +9,10 @@
 #include <ros/time.h>
 #include <spott_msgs/ArbiterStatus.h>
 #include <spott_msgs/BumperRing.h>
+#include <spott_msgs/RangeRing.h>
 
 #include "cmd_vel_arbiter/arbiter.h"
+#include "cmd_vel_arbiter/clearance.h"
 
 namespace cmd_vel_arbiter::ros_conversions {
 
@@ -23,6 +25,12 @@ geometry_msgs::Twist ToTwist(const Velocity& v);
 /// do not match or an angle of a pressed segment is not finite.
 std::optional<std::vector<double>> PressedAngles(const spott_msgs::BumperRing& ring,
                                                  std::string* error);
+
+/// The speed bounds from a range ring (in the robot's frame: the mounts are in the header's
+/// frame, base_link); nullopt with `error` when the arrays do not match or a mount or the cone
+/// is not finite.
+std::optional<SpeedBounds> RingBounds(const spott_msgs::RangeRing& ring,
+                                      const ClearanceParameters& p, std::string* error);
 
 spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cmd_vel_arbiter/arbiter.h"
+#include "cmd_vel_arbiter/clearance.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace cmd_vel_arbiter {
@@ -12,6 +13,11 @@ struct NodeParameters {
   double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), [0.01, 1000].
   /// Status also at this rate besides every change (Hz): 0 (on change only) or [0.01, 100].
   double status_rate_hz = 2.0;
+  /// The clearance bounds (clearance.h) from a range ring; off: nothing caps the speed.
+  bool clearance_enabled = true;
+  std::string clearance_topic = "sonar";  ///< spott_msgs/RangeRing.
+  double clearance_max_age_s = 0.5;       ///< An older ring bounds nothing (s), (0, 60].
+  ClearanceParameters clearance;
 };
 
 /// Fills `p` (missing keys keep their defaults; one source per key under `sources`) and records

@@ -1,0 +1,48 @@
+// How fast the robot may drive towards what its range ring sees (ROS-free): Nav2's collision
+// monitor for the arbiter. Each reading puts an echo somewhere on its cone's arc; the echoes in
+// the corridor the round body sweeps ahead (or behind) bound the speed so that the robot, braking
+// at `deceleration_mps2` after `latency_s`, stops `stop_margin_m` before the nearest one:
+// v * latency + v^2 / (2 a) = gap - margin. A planner whose pose is wrong (a kidnapped robot, a
+// localization that has not yet noticed) is stopped by what the sensors see, not by its map.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace cmd_vel_arbiter {
+
+struct ClearanceParameters {
+  double deceleration_mps2 = 0.5;   ///< Braking the limit assumes (m/s^2), > 0.
+  double latency_s = 0.2;           ///< Reading to braking (s), [0, 5].
+  double stop_margin_m = 0.05;      ///< Left between the body and an echo (m), [0, 2].
+  double corridor_margin_m = 0.02;  ///< Added to the radius for the swept corridor (m), [0, 1].
+  /// The body's radius (m); 0 = the farthest transducer from the centre (they sit on the body).
+  double footprint_radius_m = 0.0;
+};
+
+/// Every violation, named as in config/cmd_vel_arbiter.yaml (clearance/...).
+std::vector<std::string> ValidateParameters(const ClearanceParameters& p);
+
+/// One transducer: position (m) and axis (rad) in the robot's frame.
+struct Transducer {
+  double x = 0.0, y = 0.0, yaw = 0.0;
+};
+
+struct SpeedBounds {
+  double forward_mps = std::numeric_limits<double>::infinity();
+  double backward_mps = std::numeric_limits<double>::infinity();   ///< Magnitude.
+  double forward_gap_m = std::numeric_limits<double>::infinity();  ///< Body to nearest echo.
+  double backward_gap_m = std::numeric_limits<double>::infinity();
+};
+
+/// The bounds from one reading of the ring. `ranges_m` one per transducer; NaN, readings
+/// below `min_range_m` and at or beyond `max_range_m` (no echo) bound nothing.
+SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double field_of_view_rad,
+                           double min_range_m, double max_range_m,
+                           const std::vector<double>& ranges_m, const ClearanceParameters& p);
+
+/// The largest speed that stops `margin` before a gap (m/s); 0 when the gap is within it.
+double StoppingSpeed(double gap_m, const ClearanceParameters& p);
+
+}  // namespace cmd_vel_arbiter

@@ -1,0 +1,66 @@
+#include "cmd_vel_arbiter/clearance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cmd_vel_arbiter {
+
+std::vector<std::string> ValidateParameters(const ClearanceParameters& p) {
+  std::vector<std::string> v;
+  const auto in = [&](const char* name, double x, double lo, double hi, bool open_lo) {
+    if (!(std::isfinite(x) && (open_lo ? x > lo : x >= lo) && x <= hi)) {
+      std::ostringstream m;
+      m << "clearance/" << name << " must be in " << (open_lo ? "(" : "[") << lo << ", " << hi
+        << "], got " << x;
+      v.push_back(m.str());
+    }
+  };
+  in("deceleration_mps2", p.deceleration_mps2, 0.0, 100.0, true);
+  in("latency_s", p.latency_s, 0.0, 5.0, false);
+  in("stop_margin_m", p.stop_margin_m, 0.0, 2.0, false);
+  in("corridor_margin_m", p.corridor_margin_m, 0.0, 1.0, false);
+  in("footprint_radius_m", p.footprint_radius_m, 0.0, 10.0, false);
+  return v;
+}
+
+double StoppingSpeed(double gap_m, const ClearanceParameters& p) {
+  if (!std::isfinite(gap_m)) return std::numeric_limits<double>::infinity();
+  const double d = gap_m - p.stop_margin_m;
+  if (d <= 0.0) return 0.0;
+  // v T + v^2 / (2 a) = d  =>  v = -a T + sqrt((a T)^2 + 2 a d)
+  const double a = p.deceleration_mps2, aT = a * p.latency_s;
+  return -aT + std::sqrt(aT * aT + 2.0 * a * d);
+}
+
+SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double field_of_view_rad,
+                           double min_range_m, double max_range_m,
+                           const std::vector<double>& ranges_m, const ClearanceParameters& p) {
+  SpeedBounds b;
+  double radius = p.footprint_radius_m;
+  if (radius <= 0.0) {
+    for (const Transducer& t : transducers) radius = std::max(radius, std::hypot(t.x, t.y));
+  }
+  const double half_width = radius + p.corridor_margin_m;
+  const double half_fov = std::isfinite(field_of_view_rad) ? 0.5 * field_of_view_rad : 0.0;
+  const std::size_t n = std::min(transducers.size(), ranges_m.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = ranges_m[i];
+    if (!std::isfinite(r) || r < min_range_m || r >= max_range_m) continue;
+    const Transducer& t = transducers[i];
+    // The echo lies somewhere on the arc: its ends and middle stand for it.
+    for (const double off : {-half_fov, 0.0, half_fov}) {
+      const double px = t.x + r * std::cos(t.yaw + off), py = t.y + r * std::sin(t.yaw + off);
+      if (std::abs(py) >= half_width) continue;
+      // Along x from the round body's outline to the echo.
+      const double body = std::sqrt(std::max(0.0, radius * radius - py * py));
+      if (px > 0.0) b.forward_gap_m = std::min(b.forward_gap_m, std::max(0.0, px - body));
+      if (px < 0.0) b.backward_gap_m = std::min(b.backward_gap_m, std::max(0.0, -px - body));
+    }
+  }
+  b.forward_mps = StoppingSpeed(b.forward_gap_m, p);
+  b.backward_mps = StoppingSpeed(b.backward_gap_m, p);
+  return b;
+}
+
+}  // namespace cmd_vel_arbiter

@@ -1,0 +1,112 @@
+#include "cmd_vel_arbiter/clearance.h"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "cmd_vel_arbiter/arbiter.h"
+
+namespace cmd_vel_arbiter {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The B21's ring: 24 sonars every 15 degrees on its 0.2625 m enclosure, 25-degree cones.
+std::vector<Transducer> B21Ring() {
+  std::vector<Transducer> t;
+  for (int i = 0; i < 24; ++i) {
+    const double a = i * M_PI / 12;
+    t.push_back(Transducer{0.2625 * std::cos(a), 0.2625 * std::sin(a), a});
+  }
+  return t;
+}
+
+TEST(Clearance, TheStoppingSpeedBrakesBeforeTheMarginAfterTheLatency) {
+  ClearanceParameters p;  // 0.5 m/s^2, 0.2 s, 0.05 m
+  EXPECT_EQ(StoppingSpeed(kInf, p), kInf);
+  EXPECT_EQ(StoppingSpeed(0.05, p), 0.0);
+  EXPECT_EQ(StoppingSpeed(0.0, p), 0.0);
+  const double v = StoppingSpeed(0.6, p);
+  // Driving at v, it covers v T before braking and v^2 / (2 a) while braking: the 0.55 m left.
+  EXPECT_NEAR(v * 0.2 + v * v / (2 * 0.5), 0.55, 1e-9);
+  EXPECT_LT(StoppingSpeed(0.3, p), v);
+}
+
+TEST(Clearance, AWallAheadCapsForwardOnlyAndSideWallsCapNothing) {
+  ClearanceParameters p;
+  const auto ring = B21Ring();
+  std::vector<double> z(24, 5.0);  // max range: no echo
+  // A wall 0.6 m ahead of the body: the front sonar and its neighbours' cones meet it.
+  z[0] = 0.6;
+  z[1] = 0.6 / std::cos(M_PI / 12 - 0.218);
+  z[23] = z[1];
+  // Hallway walls 0.5 m to each side of the body (beyond the corridor the body sweeps).
+  z[6] = 0.5;
+  z[18] = 0.5;
+  const SpeedBounds b = BoundsFromRing(ring, 0.436, 0.15, 5.0, z, p);
+  EXPECT_NEAR(b.forward_gap_m, 0.6, 0.02);
+  EXPECT_NEAR(b.forward_mps, StoppingSpeed(b.forward_gap_m, p), 1e-12);
+  EXPECT_EQ(b.backward_mps, kInf);
+  EXPECT_EQ(b.backward_gap_m, kInf);
+  // The side walls alone bound nothing; a dropped-out (NaN) or too short reading neither.
+  std::vector<double> sides(24, 5.0);
+  sides[6] = sides[18] = 0.5;
+  sides[3] = std::nan("");
+  sides[2] = 0.1;  // below min_range
+  EXPECT_EQ(BoundsFromRing(ring, 0.436, 0.15, 5.0, sides, p).forward_mps, kInf);
+  // Something just behind: backing is capped, and stopped within the margin.
+  std::vector<double> behind(24, 5.0);
+  behind[12] = 0.16;
+  const SpeedBounds back = BoundsFromRing(ring, 0.436, 0.15, 5.0, behind, p);
+  EXPECT_EQ(back.forward_mps, kInf);
+  EXPECT_NEAR(back.backward_gap_m, 0.16 * std::cos(0.218), 0.01);
+  EXPECT_GT(back.backward_mps, 0.0);
+}
+
+TEST(Clearance, ValidationNamesEveryBadParameter) {
+  ClearanceParameters p;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.deceleration_mps2 = 0.0;
+  p.latency_s = std::nan("");
+  p.stop_margin_m = -1;
+  EXPECT_EQ(ValidateParameters(p).size(), 3u);
+}
+
+ArbiterParameters Params() {
+  ArbiterParameters p;
+  p.sources = {{"planner", 10, 0.5}, {"reflex", 100, 0.5}};
+  p.max_linear_mps = 0.9;
+  p.max_angular_rps = 1.5;
+  return p;
+}
+
+// Section 4's kidnapped B21: turned towards a wall while the planner, on the old pose, drives on.
+TEST(Arbiter, TheClearanceCapsTheDriversLinearSpeedButNotTurningNorAReflex) {
+  Arbiter a(Params());
+  std::string why;
+  EXPECT_DOUBLE_EQ(a.Command("planner", Velocity{0.54, 0.3}, 0.0, &why).command.linear_mps, 0.54);
+  Output out = a.SetClearance(0.2, kInf, 0.05);
+  ASSERT_TRUE(out.publish);  // at once, not at the driver's next command
+  EXPECT_DOUBLE_EQ(out.command.linear_mps, 0.2);
+  EXPECT_DOUBLE_EQ(out.command.angular_rps, 0.3);
+  EXPECT_EQ(a.clearance_slowdowns(), 1u);
+  // Backing away is capped by what is behind only.
+  EXPECT_DOUBLE_EQ(a.Command("planner", Velocity{-0.3, 0.0}, 0.1, &why).command.linear_mps, -0.3);
+  out = a.SetClearance(0.0, 0.1, 0.15);
+  EXPECT_DOUBLE_EQ(out.command.linear_mps, -0.1);
+  // A stop in front leaves turning in place.
+  out = a.Command("planner", Velocity{0.5, 1.0}, 0.2, &why);
+  EXPECT_DOUBLE_EQ(out.command.linear_mps, 0.0);
+  EXPECT_DOUBLE_EQ(out.command.angular_rps, 1.0);
+  // The reflex is exempt: it backs off a contact whatever the ring says.
+  out = a.Command("reflex", Velocity{-0.3, 0.0}, 0.25, &why);
+  EXPECT_DOUBLE_EQ(out.command.linear_mps, -0.3);
+  // Cleared: the driver's speed again.
+  a.Command("reflex", Velocity{}, 0.3, &why);
+  out = a.SetClearance(kInf, kInf, 1.0);
+  EXPECT_DOUBLE_EQ(a.Command("planner", Velocity{0.5, 0.0}, 1.0, &why).command.linear_mps, 0.5);
+}
+
+}  // namespace
+}  // namespace cmd_vel_arbiter
