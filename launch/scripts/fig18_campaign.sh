@@ -6,7 +6,8 @@
 # ports). Usage: launch/scripts/fig18_campaign.sh [N] [FIRST_SEED]    (from the repository)
 # FIG18_LOCALIZATION=truth runs the stack on the simulator's pose (no localization error), to
 # tell the controller's failures from the localization's. FIG18_BAG=1 records each run's ground
-# truth, estimate, map updates, bumper and steering in $OUT/run-SEED.bag (rosbag; about 10 MB).
+# truth, estimate, map updates, bumper and steering in $OUT/run-SEED.bag (rosbag; about 10 MB);
+# launch/scripts/fig18_bag_summary.py summarizes them on the ground truth.
 # Do not rebuild or edit config/*.yaml while it runs: every run starts the nodes afresh.
 set -u
 N=${1:-20}
@@ -41,8 +42,13 @@ run_one() {  # seed start_pose
   if [[ -n "$bag" ]]; then
     kill -INT "$bag" 2> /dev/null
     wait "$bag" 2> /dev/null
-    [[ -f "$OUT/run-$1.bag.active" ]] && rosbag reindex "$OUT/run-$1.bag.active" > /dev/null 2>&1 &&
-      mv "$OUT/run-$1.bag.active" "$OUT/run-$1.bag"
+    # The recorder closes the bag shortly after its wrapper exits; only a bag left open is
+    # reindexed.
+    for _ in 1 2 3 4 5 6 7 8 9 10; do [[ -f "$OUT/run-$1.bag.active" ]] || break; sleep 1; done
+    if [[ -f "$OUT/run-$1.bag.active" ]]; then
+      rosbag reindex "$OUT/run-$1.bag.active" > /dev/null 2>&1 &&
+        mv "$OUT/run-$1.bag.active" "$OUT/run-$1.bag"
+    fi
   fi
   return 0
 }
