@@ -69,7 +69,7 @@ struct NodeParameters {
   /// object; in the map it made the true place fit worse than its twin (office_201 and 202 are
   /// alike 5 m apart), and the estimate moved there.
   bool map_update_features = false;
-  bool sonar_enabled = true;                      ///< Localize on the RangeRing of ring_topic.
+  bool sonar_enabled = true;  ///< Localize on the RangeRing of ring_topic.
   /// enable_sonar false lasts at most this long (s): readings are used again after it, in case
   /// the caller that switched them off (a doorway's travel mode) is gone. (0, 600].
   double sonar_off_max_s = 20.0;
