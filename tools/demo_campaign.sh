@@ -4,17 +4,19 @@
 # truth, bumper contacts, the localization's largest error, lost alarms and the real-time
 # factor achieved. The numbers behind the README's "demo legs reached over 10 runs" table.
 #   tools/demo_campaign.sh --world cim_office --runs 10 [--busy] [--first-seed 1]
+#                          [--controller none|tr_plus]
 set -o pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
-world=cim_office runs=10 busy=0 first=1
+world=cim_office runs=10 busy=0 first=1 controller=none
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --world) world=$2; shift 2;;
     --runs) runs=$2; shift 2;;
     --first-seed) first=$2; shift 2;;
     --busy) busy=1; shift;;
-    -h|--help) sed -n 2,7p "$0"; exit 0;;
+    --controller) controller=$2; shift 2;;
+    -h|--help) sed -n 2,8p "$0"; exit 0;;
     *) echo "demo_campaign: unknown option $1" >&2; exit 2;;
   esac
 done
@@ -28,8 +30,9 @@ fi
 total_legs=0 total_reached=0 total_contacts=0 total_alarms=0 worst=0
 printf '%-16s %4s %8s %8s %9s %7s %6s %6s\n' world seed reached contacts max_err_m alarms rtf load
 for ((seed = first; seed < first + runs; ++seed)); do
-  report="$out/$world-$seed.report"
-  SPOTT_SKIP_SETUP=1 "$ROOT/spott" demo --world "$world" --seed "$seed" >"$report" 2>"$out/$world-$seed.err"
+  report="$out/$world-$controller-$seed.report"
+  SPOTT_SKIP_SETUP=1 "$ROOT/spott" demo --world "$world" --seed "$seed" --controller "$controller" \
+    >"$report" 2>"$out/$world-$controller-$seed.err"
   legs=$(grep -cE '^   to [a-z_0-9]+ \(' "$report")
   reached=$(grep -cE '^   to [a-z_0-9]+ \(.*\): reached$' "$report")
   contacts=$(grep -oE 'bumper contacts: [0-9]+' "$report" | awk '{s += $3} END {print s + 0}')

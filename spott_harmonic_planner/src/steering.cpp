@@ -32,6 +32,8 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
         "in (0, 100] 1/s", v);
   Check(p.max_bias_deviation_rad >= 0.0 && p.max_bias_deviation_rad < M_PI / 2,
         "max_bias_deviation_rad", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
+  Check(p.bias_clearance_m > 0.0 && p.bias_clearance_m <= 10.0, "bias_clearance_m",
+        p.bias_clearance_m, "in (0, 10] m", v);
   Check(p.slow_clearance_m > 0.0, "slow_clearance_m", p.slow_clearance_m, "> 0 m", v);
   Check(p.goal_slowdown_m > 0.0, "goal_slowdown_m", p.goal_slowdown_m, "> 0 m", v);
   Check(p.escape_radius_m >= 0.0 && p.escape_radius_m <= 2.0, "escape_radius_m", p.escape_radius_m,
@@ -117,7 +119,10 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
   }
   cmd.valid = true;
   cmd.descent = *descent;
-  cmd.heading = BiasedHeading(*descent, direction_bias, params.max_bias_deviation_rad);
+  // The bias yields to descent near obstacles: the robot's heading lags the command while it
+  // turns, and at a padded corner only descent keeps it out of the padding.
+  const double room = std::clamp(cmd.clearance / params.bias_clearance_m, 0.0, 1.0);
+  cmd.heading = BiasedHeading(*descent, direction_bias, params.max_bias_deviation_rad * room);
   const double error = WrapAngle(cmd.heading - pose.yaw);
   cmd.angular =
       std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);

@@ -25,6 +25,10 @@ struct SteeringParameters {
   /// Largest angle (rad) between the command and steepest descent that a direction bias may
   /// ask for, in [0, pi/2): below pi/2 the robot still descends.
   double max_bias_deviation_rad = 1.2;
+  /// Below this clearance (m) the allowed deviation shrinks in proportion, to none at the
+  /// padding's edge, > 0: beside a door's jamb a heading pulled off descent cuts the padded
+  /// corner while the robot turns (Fig. 18 seed 20: a `to` bias through the wall, 24 contacts).
+  double bias_clearance_m = 0.4;
   double slow_clearance_m = 0.4;  ///< Below this clearance the speed scales down (m), > 0.
   double goal_slowdown_m =
       0.5;  ///< Below this distance to the goal the speed scales down (m), > 0.
