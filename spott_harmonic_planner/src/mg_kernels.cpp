@@ -302,11 +302,16 @@ inline void ProlongateT(const T* uc, int cnx, T* u, const T* mask, int fnx, cons
       // Eight coarse values and their midpoints interleaved by two shuffles (the steps may run
       // past m - 1 in the scratch row: those entries are not read).
       using V = Vec<float>::type;
-      using M = Vec<float>::mask;
       for (; k + 1 < m; k += 8) {
         const V a = Ld(cr + k), mid = T(0.5) * (a + Ld(cr + k + 1));
+#if defined(__clang__)  // clang spells GCC's vector shuffle with constant indices this way
+        St(ex + 2 * k, __builtin_shufflevector(a, mid, 0, 8, 1, 9, 2, 10, 3, 11));
+        St(ex + 2 * k + 8, __builtin_shufflevector(a, mid, 4, 12, 5, 13, 6, 14, 7, 15));
+#else
+        using M = Vec<float>::mask;
         St(ex + 2 * k, __builtin_shuffle(a, mid, M{0, 8, 1, 9, 2, 10, 3, 11}));
         St(ex + 2 * k + 8, __builtin_shuffle(a, mid, M{4, 12, 5, 13, 6, 14, 7, 15}));
+#endif
       }
     } else {
       for (; k + 1 < m; ++k) {
