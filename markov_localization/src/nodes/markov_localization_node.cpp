@@ -451,10 +451,10 @@ class LocalizationNode {
   }
 
   void OnScan(const sensor_msgs::LaserScan& scan) {
-    if (!(std::isfinite(scan.angle_min) && std::isfinite(scan.angle_increment) &&
-          std::isfinite(scan.range_max) && scan.range_max > 0.0f && scan.range_max < 1000.0f)) {
-      refusals_.Refuse(params_.laser.topic, "angle_min/angle_increment/range_max",
-                       "not finite, or range_max not in (0, 1000) m");
+    const std::string problem = conv::LaserScanProblem(scan);
+    if (!problem.empty()) {
+      const auto colon = problem.find(':');
+      refusals_.Refuse(params_.laser.topic, problem.substr(0, colon), problem.substr(colon + 2));
       return;
     }
     if (!odom_) return;
