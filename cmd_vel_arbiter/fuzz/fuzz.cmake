@@ -1,4 +1,5 @@
-# libFuzzer target of cmd_vel_arbiter (see tools/fuzz/CMakeLists.txt): the node's parameters.
+# libFuzzer targets of cmd_vel_arbiter (see tools/fuzz/CMakeLists.txt): the node's parameters,
+# its message conversions and inputs.
 spott_fuzz_core(cmd_vel_arbiter)
 spott_add_parameter_fuzzer(cmd_vel_arbiter_parameters_fuzz
   "${CMAKE_CURRENT_LIST_DIR}/cmd_vel_arbiter_parameters_fuzz.cpp"
@@ -17,6 +18,9 @@ if(EXISTS "${spott_devel_include}/spott_msgs/RangeRing.h")
                         roscpp_serialization rostime cpp_common)
   spott_add_fuzzer(range_ring_fuzz "${CMAKE_CURRENT_LIST_DIR}/range_ring_fuzz.cpp"
                    CORES cmd_vel_arbiter_ros)
+  # Every input of the arbiter (twists, bumper and sonar rings, takes, limits) in any order.
+  spott_add_fuzzer(arbiter_inputs_fuzz "${CMAKE_CURRENT_LIST_DIR}/arbiter_inputs_fuzz.cpp"
+                   CORES cmd_vel_arbiter_ros)
 else()
-  message(STATUS "range_ring_fuzz left out: no ${spott_devel_include} (run ./spott build)")
+  message(STATUS "range_ring_fuzz, arbiter_inputs_fuzz left out: no ${spott_devel_include}")
 endif()
