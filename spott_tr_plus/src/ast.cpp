@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "spott_text/lexemes.h"
@@ -34,11 +35,14 @@ const Arg* ArgForParam(const CondExpr& atom, const ConditionDecl& decl, size_t k
 
 namespace {
 
+// The shortest of 15 and 17 significant digits that reads back as the same double: 0.1 stays
+// "0.1", and a condition's value published as text (TRProgramState) is the value itself.
 std::string FormatNumber(double v) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.15g", v);
-  std::string s = buf;
-  return s;
+  if (std::isfinite(v) && std::strtod(buf, nullptr) != v)
+    std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
 }
 
 }  // namespace

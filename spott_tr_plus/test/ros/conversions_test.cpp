@@ -27,6 +27,13 @@ TEST(Conversions, ValuesRoundTripThroughText) {
     EXPECT_EQ(ValueFromText(ValueToString(v)), v) << ValueToString(v);
   }
   EXPECT_EQ(ValueFromText("kitchen"), Value{std::string("kitchen")});
+  // condition_state_fuzz: 15 digits lost the value of a 30-digit input (4.44444444444444e+29).
+  for (const double d : {444444444444444444444444444444.0, 1.0 / 3.0, -2.0 / 7.0e-200}) {
+    EXPECT_EQ(ValueFromText(ValueToString(Value{d})), Value{d}) << ValueToString(Value{d});
+    EXPECT_EQ(ValueFromText(ValueToString(Value{std::vector<double>{d, 1.0}})),
+              (Value{std::vector<double>{d, 1.0}}));
+  }
+  EXPECT_EQ(ValueToString(Value{0.1}), "0.1") << "the shortest text that reads back";
 }
 
 TEST(Conversions, StateNamesTheDeepestFiringRuleAndEveryProcess) {
