@@ -63,4 +63,30 @@ SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double fi
   return b;
 }
 
+RingBoundsSet::RingBoundsSet(std::size_t rings, double max_age_s)
+    : rings_(rings), max_age_s_(max_age_s) {}
+
+void RingBoundsSet::Set(std::size_t ring, const SpeedBounds& bounds, double now_s) {
+  if (ring >= rings_.size()) return;
+  rings_[ring] = Entry{bounds, now_s, true};
+}
+
+SpeedBounds RingBoundsSet::Tightest(double now_s, std::vector<std::size_t>* went_silent) {
+  SpeedBounds t;
+  for (std::size_t i = 0; i < rings_.size(); ++i) {
+    Entry& e = rings_[i];
+    if (!e.fresh) continue;
+    if (now_s - e.time_s > max_age_s_) {
+      e.fresh = false;
+      if (went_silent) went_silent->push_back(i);
+      continue;
+    }
+    t.forward_mps = std::min(t.forward_mps, e.bounds.forward_mps);
+    t.backward_mps = std::min(t.backward_mps, e.bounds.backward_mps);
+    t.forward_gap_m = std::min(t.forward_gap_m, e.bounds.forward_gap_m);
+    t.backward_gap_m = std::min(t.backward_gap_m, e.bounds.backward_gap_m);
+  }
+  return t;
+}
+
 }  // namespace cmd_vel_arbiter

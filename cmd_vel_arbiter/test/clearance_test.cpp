@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +72,41 @@ TEST(Clearance, ValidationNamesEveryBadParameter) {
   p.latency_s = std::nan("");
   p.stop_margin_m = -1;
   EXPECT_EQ(ValidateParameters(p).size(), 3u);
+}
+
+// The Nomad's two rings: the sonar at 0.65 m sees over the lab's 0.6 m crate; the infrared ring
+// at 0.4 m sees it (Fig. 18 seed 15 touched it with only the sonar capping).
+TEST(RingBoundsSet, TheTightestFreshRingBoundsAndASilentOneBoundsNothing) {
+  RingBoundsSet rings(2, 0.5);
+  EXPECT_EQ(rings.Tightest(0.0, nullptr).forward_mps, kInf) << "nothing heard: no bound";
+  SpeedBounds sonar, infrared;
+  sonar.forward_mps = 0.4;
+  sonar.forward_gap_m = 1.2;
+  infrared.forward_mps = 0.1;
+  infrared.forward_gap_m = 0.3;
+  infrared.backward_mps = 0.2;
+  rings.Set(0, sonar, 1.0);
+  rings.Set(1, infrared, 1.1);
+  rings.Set(7, SpeedBounds{0.0, 0.0, 0.0, 0.0}, 1.1);  // no such ring: ignored
+  std::vector<std::size_t> silent;
+  SpeedBounds t = rings.Tightest(1.2, &silent);
+  EXPECT_DOUBLE_EQ(t.forward_mps, 0.1);
+  EXPECT_DOUBLE_EQ(t.forward_gap_m, 0.3);
+  EXPECT_DOUBLE_EQ(t.backward_mps, 0.2);
+  EXPECT_TRUE(silent.empty());
+  // The infrared ring falls silent; the sonar goes on.
+  rings.Set(0, sonar, 1.5);
+  t = rings.Tightest(1.7, &silent);
+  EXPECT_DOUBLE_EQ(t.forward_mps, 0.4);
+  EXPECT_EQ(t.backward_mps, kInf);
+  EXPECT_EQ(silent, std::vector<std::size_t>{1});
+  silent.clear();
+  rings.Tightest(1.8, &silent);
+  EXPECT_TRUE(silent.empty()) << "said once";
+  // Both silent: no bound at all.
+  t = rings.Tightest(3.0, &silent);
+  EXPECT_EQ(t.forward_mps, kInf);
+  EXPECT_EQ(silent, std::vector<std::size_t>{0});
 }
 
 ArbiterParameters Params() {

@@ -6,6 +6,7 @@
 // localization that has not yet noticed) is stopped by what the sensors see, not by its map.
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -44,5 +45,26 @@ SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double fi
 
 /// The largest speed that stops `margin` before a gap (m/s); 0 when the gap is within it.
 double StoppingSpeed(double gap_m, const ClearanceParameters& p);
+
+/// Several rings at once (the sonar and the low infrared ring, which sees what passes under the
+/// sonar's cones: a crate, a chair's seat): each ring's latest bounds, and the tightest of those
+/// at most `max_age_s` old. A ring that fell silent bounds nothing.
+class RingBoundsSet {
+ public:
+  RingBoundsSet(std::size_t rings, double max_age_s);
+  void Set(std::size_t ring, const SpeedBounds& bounds, double now_s);
+  /// The tightest bounds of the rings heard within max_age_s; `went_silent` (optional) gets the
+  /// rings that aged out since the previous call, each once.
+  SpeedBounds Tightest(double now_s, std::vector<std::size_t>* went_silent);
+
+ private:
+  struct Entry {
+    SpeedBounds bounds;
+    double time_s = 0.0;
+    bool fresh = false;
+  };
+  std::vector<Entry> rings_;
+  double max_age_s_;
+};
 
 }  // namespace cmd_vel_arbiter

@@ -3,7 +3,7 @@
 // the bumper and a timer, serves take/release/limits and publishes the status.
 //
 // Subscribes: cmd_vel/<source> (geometry_msgs/Twist) for every configured source, bumper
-// (spott_msgs/BumperRing), clearance/topic (spott_msgs/RangeRing, default sonar). Publishes:
+// (spott_msgs/BumperRing), clearance/topics (spott_msgs/RangeRing: sonar, infrared). Publishes:
 // cmd_vel (geometry_msgs/Twist), ~status (spott_msgs/ArbiterStatus, latched). Services:
 // ~take_wheels, ~release_wheels, ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
 #include <ros/ros.h>
@@ -13,7 +13,8 @@
 
 #include <limits>
 #include <map>
-#include <optional>
+#include <string>
+#include <vector>
 
 #include "cmd_vel_arbiter/ros/conversions.h"
 #include "cmd_vel_arbiter/ros/parameters.h"
@@ -28,7 +29,10 @@ namespace conv = ros_conversions;
 class ArbiterNode {
  public:
   ArbiterNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
-      : arbiter_(p.arbiter), params_(p), refusals_(nh, "cmd_vel_arbiter") {
+      : arbiter_(p.arbiter),
+        params_(p),
+        rings_(p.clearance_topics.size(), p.clearance_max_age_s),
+        refusals_(nh, "cmd_vel_arbiter") {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
@@ -40,8 +44,12 @@ class ArbiterNode {
           ros::VoidConstPtr(), hints));
     }
     bumper_sub_ = nh.subscribe("bumper", 10, &ArbiterNode::OnBumper, this, hints);
-    if (p.clearance_enabled)
-      ring_sub_ = nh.subscribe(p.clearance_topic, 10, &ArbiterNode::OnRing, this, hints);
+    for (std::size_t i = 0; p.clearance_enabled && i < p.clearance_topics.size(); ++i) {
+      ring_subs_.push_back(nh.subscribe<spott_msgs::RangeRing>(
+          p.clearance_topics[i], 10,
+          [this, i](const spott_msgs::RangeRing::ConstPtr& m) { OnRing(i, *m); },
+          ros::VoidConstPtr(), hints));
+    }
     take_srv_ = pnh.advertiseService("take_wheels", &ArbiterNode::OnTake, this);
     release_srv_ = pnh.advertiseService("release_wheels", &ArbiterNode::OnRelease, this);
     limits_srv_ = pnh.advertiseService("set_speed_limits", &ArbiterNode::OnLimits, this);
@@ -87,33 +95,47 @@ class ArbiterNode {
     Emit(arbiter_.SetContacts(*angles, Now()));
   }
 
-  void OnRing(const spott_msgs::RangeRing& ring) {
+  void OnRing(std::size_t index, const spott_msgs::RangeRing& ring) {
+    const std::string& topic = params_.clearance_topics[index];
     std::string error;
     const auto bounds = conv::RingBounds(ring, params_.clearance, &error);
     if (!bounds) {
-      refusals_.Refuse(params_.clearance_topic, "ranges/mounts", error);
+      refusals_.Refuse(topic, "ranges/mounts", error);
       return;
     }
-    ring_time_ = Now();
+    const double now = Now();
+    rings_.Set(index, *bounds, now);
     const std::uint32_t before = arbiter_.clearance_slowdowns();
-    Emit(arbiter_.SetClearance(bounds->forward_mps, bounds->backward_mps, *ring_time_));
+    const SpeedBounds tightest = Tightest(now, nullptr);
+    Emit(arbiter_.SetClearance(tightest.forward_mps, tightest.backward_mps, now));
     if (arbiter_.clearance_slowdowns() != before) {
       ROS_INFO_THROTTLE(5.0,
                         "cmd_vel_arbiter: %s slowed to %.2f m/s: an echo %.2f m ahead, %.2f m "
                         "behind",
-                        arbiter_.driver().c_str(), bounds->forward_mps, bounds->forward_gap_m,
-                        bounds->backward_gap_m);
+                        arbiter_.driver().c_str(), tightest.forward_mps, tightest.forward_gap_m,
+                        tightest.backward_gap_m);
     }
   }
+
+  // The rings' tightest bounds; a ring silent for clearance/max_age_s bounds nothing (the bumper
+  // and the planners' maps still guard), said once when it falls silent.
+  SpeedBounds Tightest(double now, bool* went_silent) {
+    std::vector<std::size_t> silent;
+    const SpeedBounds t = rings_.Tightest(now, &silent);
+    for (std::size_t i : silent) {
+      ROS_WARN("cmd_vel_arbiter: no %s for %.1f s: it caps nothing until it is back",
+               params_.clearance_topics[i].c_str(), params_.clearance_max_age_s);
+    }
+    if (went_silent) *went_silent = !silent.empty();
+    return t;
+  }
+
   void OnTimer() {
     const double now = Now();
-    if (ring_time_ && now - *ring_time_ > params_.clearance_max_age_s) {
-      // A silent ring caps nothing: the bumper and the planners' maps still guard.
-      ROS_WARN("cmd_vel_arbiter: no %s for %.1f s: the clearance caps nothing until it is back",
-               params_.clearance_topic.c_str(), now - *ring_time_);
-      ring_time_.reset();
-      Emit(arbiter_.SetClearance(std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity(), now));
+    bool went_silent = false;
+    const SpeedBounds t = Tightest(now, &went_silent);
+    if (went_silent) {
+      Emit(arbiter_.SetClearance(t.forward_mps, t.backward_mps, now));
       return;
     }
     Emit(arbiter_.Update(now));
@@ -162,12 +184,13 @@ class ArbiterNode {
 
   Arbiter arbiter_;
   NodeParameters params_;
-  std::optional<double> ring_time_;  ///< Of the last accepted ring (clearance).
+  RingBoundsSet rings_;  ///< The clearance rings' latest bounds.
   spott_ros::InputRefusals refusals_;
   std::uint64_t published_revision_ = ~std::uint64_t{0};
   ros::Publisher cmd_pub_, status_pub_;
   std::vector<ros::Subscriber> inputs_;
-  ros::Subscriber bumper_sub_, ring_sub_;
+  ros::Subscriber bumper_sub_;
+  std::vector<ros::Subscriber> ring_subs_;
   ros::ServiceServer take_srv_, release_srv_, limits_srv_;
   ros::Timer update_timer_, status_timer_;
 };

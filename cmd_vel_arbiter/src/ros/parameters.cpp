@@ -15,7 +15,7 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("update_rate_hz", p.update_rate_hz, "Hz");
   r.Get("status_rate_hz", p.status_rate_hz, "Hz");
   r.Get("clearance/enabled", p.clearance_enabled);
-  r.Get("clearance/topic", p.clearance_topic);
+  r.Get("clearance/topics", p.clearance_topics);
   r.Get("clearance/max_age_s", p.clearance_max_age_s, "s");
   r.Get("clearance/exempt_sources", p.arbiter.clearance_exempt);
   ClearanceParameters& c = p.clearance;
@@ -28,7 +28,15 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   for (const std::string& e : ValidateParameters(p.clearance)) r.Fail(e);
   r.Require(p.clearance_max_age_s > 0 && p.clearance_max_age_s <= 60, "clearance/max_age_s",
             "in (0, 60]", p.clearance_max_age_s);
-  if (p.clearance_enabled && p.clearance_topic.empty()) r.Fail("clearance/topic must be set");
+  if (p.clearance_enabled && p.clearance_topics.empty())
+    r.Fail("clearance/topics must name at least one topic");
+  for (std::size_t i = 0; i < p.clearance_topics.size(); ++i) {
+    const std::string& t = p.clearance_topics[i];
+    if (t.empty()) r.Fail("clearance/topics: an empty topic name");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (p.clearance_topics[j] == t) r.Fail("clearance/topics: '" + t + "' twice");
+    }
+  }
   // The timers' periods 1 / rate must make a ros::Duration (at most 2^31 s).
   r.Require(p.update_rate_hz >= 0.01 && p.update_rate_hz <= 1000, "update_rate_hz",
             "in [0.01, 1000]", p.update_rate_hz);

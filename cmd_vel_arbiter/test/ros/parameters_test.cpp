@@ -49,5 +49,27 @@ TEST(NodeParameters, RatesWhosePeriodNoDurationHoldsAreRefused) {
   EXPECT_EQ(ReadTree(v, &p), Strings{});
 }
 
+TEST(NodeParameters, ClearanceTopicsAreAListOfDistinctNames) {
+  NodeParameters p;
+  EXPECT_EQ(ReadTree(OneSource(), &p), Strings{});
+  EXPECT_EQ(p.clearance_topics, (Strings{"sonar", "infrared"}));
+  for (const Strings& bad : {Strings{}, Strings{"sonar", ""}, Strings{"sonar", "sonar"}}) {
+    XmlRpc::XmlRpcValue v = OneSource();
+    v["clearance"]["topics"].setSize(static_cast<int>(bad.size()));
+    for (std::size_t i = 0; i < bad.size(); ++i) v["clearance"]["topics"][i] = bad[i];
+    NodeParameters q;
+    const Strings e = ReadTree(v, &q);
+    ASSERT_EQ(e.size(), 1u) << (bad.empty() ? "no topic" : bad.back());
+    EXPECT_NE(e[0].find("clearance/topics"), std::string::npos) << e[0];
+  }
+  // The old single key is refused by name (unknown keys stop the node).
+  XmlRpc::XmlRpcValue v = OneSource();
+  v["clearance"]["topic"] = "sonar";
+  NodeParameters q;
+  const Strings e = ReadTree(v, &q);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_NE(e[0].find("clearance/topic"), std::string::npos) << e[0];
+}
+
 }  // namespace
 }  // namespace cmd_vel_arbiter

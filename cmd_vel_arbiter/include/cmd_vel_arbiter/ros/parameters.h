@@ -2,6 +2,9 @@
 // types, values out of range and unknown keys stop the node, each named.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "cmd_vel_arbiter/arbiter.h"
 #include "cmd_vel_arbiter/clearance.h"
 #include "spott_ros/parameter_reader.h"
@@ -13,10 +16,12 @@ struct NodeParameters {
   double update_rate_hz = 50.0;  ///< Timeout checks per second (Hz), [0.01, 1000].
   /// Status also at this rate besides every change (Hz): 0 (on change only) or [0.01, 100].
   double status_rate_hz = 2.0;
-  /// The clearance bounds (clearance.h) from a range ring; off: nothing caps the speed.
+  /// The clearance bounds (clearance.h) from range rings; off: nothing caps the speed.
   bool clearance_enabled = true;
-  std::string clearance_topic = "sonar";  ///< spott_msgs/RangeRing.
-  double clearance_max_age_s = 0.5;       ///< An older ring bounds nothing (s), (0, 60].
+  /// spott_msgs/RangeRing topics, the tightest bound wins; a topic nobody publishes bounds
+  /// nothing (the B21 and HILARE have no infrared ring).
+  std::vector<std::string> clearance_topics{"sonar", "infrared"};
+  double clearance_max_age_s = 0.5;  ///< An older ring bounds nothing (s), (0, 60].
   ClearanceParameters clearance;
 };
 
