@@ -98,8 +98,9 @@ void LocalPlanner::SetMap(const spott_map::MapDatabase& db) {
   map_dirty_ = true;
 }
 
-void LocalPlanner::SetGoal(const Vec2& goal) {
+void LocalPlanner::SetGoal(const Vec2& goal, double snap_radius_m) {
   goal_ = goal;
+  goal_snap_radius_m_ = std::isfinite(snap_radius_m) ? std::max(0.0, snap_radius_m) : 0.0;
   border_goal_.reset();
   goal_dirty_ = true;
   goal_moved_ = true;
@@ -145,6 +146,7 @@ void LocalPlanner::PlaceGoal() {
   status_.problem.clear();
   status_.has_goal = false;
   status_.border_widened = false;
+  status_.goal_snapped_m = 0.0;
   if (!goal_) return;
   const spott_map::Box b = window_.bounds();
   // Inside the window's inner part (the border ring holds the high value), decided by the
@@ -162,7 +164,22 @@ void LocalPlanner::PlaceGoal() {
                            : goal_->cwiseMax(b.min + Vec2(1.5 * r, 1.5 * r))
                                  .cwiseMin(b.max - Vec2(1.5 * r, 1.5 * r));
     ok = field_.SetGoalPoint(aim);
-    if (!ok) status_.problem = "the goal lies in a padded obstacle";
+    // A goal in the padding (beside a door's jamb, the controller's goal region fitted with
+    // another margin) is aimed at through the nearest free cell within the goal's tolerance.
+    if (!ok && inner && goal_snap_radius_m_ > 0.0) {
+      if (const auto free = NearestFreeCell(aim, goal_snap_radius_m_)) {
+        ok = field_.SetGoalPoint(*free);
+        if (ok) status_.goal_snapped_m = (*free - aim).norm();
+      }
+    }
+    if (!ok) {
+      status_.problem = "the goal lies in a padded obstacle";
+      if (goal_snap_radius_m_ > 0.0) {
+        std::ostringstream s;
+        s << " (no free cell within " << goal_snap_radius_m_ << " m)";
+        status_.problem += s.str();
+      }
+    }
   } else {
     std::optional<spott_map::Segment> seg = border_goal_;
     if (!seg)
@@ -185,6 +202,31 @@ void LocalPlanner::PlaceGoal() {
   }
   goal_moved_ = false;
   status_.has_goal = ok;
+}
+
+std::optional<Vec2> LocalPlanner::NearestFreeCell(const Vec2& p, double radius_m) const {
+  const auto c = field_.CellOf(p);
+  if (!c) return std::nullopt;
+  const int r = static_cast<int>(std::ceil(radius_m / field_.resolution()));
+  std::optional<Vec2> best;
+  double best_d = radius_m, best_to_robot = 0.0;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const int x = c->first + dx, y = c->second + dy;
+      if (x < 1 || y < 1 || x > field_.width() - 2 || y > field_.height() - 2) continue;
+      if (field_.cell(x, y) == FieldCell::kObstacle) continue;
+      const Vec2 centre = field_.CellCentre(x, y);
+      const double d = (centre - p).norm();
+      const double to_robot = (centre - pose_.Position()).norm();
+      // Nearest the goal; of equals, the one nearer the robot (its side of the padding).
+      if (d < best_d - 1e-9 || (best && d < best_d + 1e-9 && to_robot < best_to_robot)) {
+        best = centre;
+        best_d = d;
+        best_to_robot = to_robot;
+      }
+    }
+  }
+  return best;
 }
 
 PlannerStatus LocalPlanner::Cycle() {

@@ -52,7 +52,9 @@ struct PlannerStatus {
   bool goal_on_border = false;
   bool recentred = false;       ///< This cycle moved the window (step f).
   bool border_widened = false;  ///< The border goal's own cells were blocked: it was widened.
-  std::string problem;          ///< Non-empty when the goal cannot be placed (blocked, ...).
+  /// The point goal lay in the padding: aimed at the free cell this far from it (m), else 0.
+  double goal_snapped_m = 0.0;
+  std::string problem;  ///< Non-empty when the goal cannot be placed (blocked, ...).
 };
 
 class LocalPlanner {
@@ -63,8 +65,10 @@ class LocalPlanner {
   /// (c) A new map database (a priori map plus sensed features); applied at the next Cycle()
   /// with a warm start when the window does not move.
   void SetMap(const spott_map::MapDatabase& db);
-  /// The target (map frame). Projected onto the window border while outside it.
-  void SetGoal(const Vec2& goal);
+  /// The target (map frame). Projected onto the window border while outside it. A target in
+  /// the padding is aimed at through the free cell nearest it within `snap_radius_m` (navfn's
+  /// default_tolerance: a goal whose tolerance reaches free space is reachable within it).
+  void SetGoal(const Vec2& goal, double snap_radius_m = 0.0);
   /// A border goal projected by the global planner (Fig. 14). While one is set it is used even
   /// when the target lies inside the window: the global path says the way to the target leaves
   /// the window (e.g. the target is behind a wall, reached through a door outside the window).
@@ -97,6 +101,7 @@ class LocalPlanner {
 
  private:
   void PlaceGoal();
+  std::optional<Vec2> NearestFreeCell(const Vec2& p, double radius_m) const;
 
   PlannerParameters params_;
   spott_map::MapDatabase db_;
@@ -107,6 +112,7 @@ class LocalPlanner {
   bool goal_dirty_ = false;
   bool goal_moved_ = true;  // the goal changed in the map since the field was last started
   std::optional<Vec2> goal_;
+  double goal_snap_radius_m_ = 0.0;
   std::optional<spott_map::Segment> border_goal_;
   spott_map::Pose2 pose_;
   std::optional<spott_map::Pose2> last_odom_;

@@ -241,7 +241,8 @@ class HarmonicPlannerNode {
     if (have_pose_) session_->PoseAvailable();
     goal_id_ = ros::this_node::getName() + "/" + std::to_string(++goal_count_);
     planner_.ClearBorderGoal();
-    planner_.SetGoal(request_.target);
+    planner_.SetGoal(request_.target, request_.tolerance_m);
+    snap_said_ = false;
     turning_ = false;
     travelled_ = 0.0;
     last_position_ = planner_.pose().Position();
@@ -369,6 +370,13 @@ class HarmonicPlannerNode {
     const ros::WallTime t0 = ros::WallTime::now();
     planner_.Cycle();
     solve_time_ += (ros::WallTime::now() - t0).toSec();
+    if (planner_.status().goal_snapped_m > 0.0 && !snap_said_) {
+      snap_said_ = true;
+      ROS_INFO(
+          "harmonic_planner: the goal lies in the padding: aiming at the free cell %.2f m "
+          "from it (within its tolerance %.2f m)",
+          planner_.status().goal_snapped_m, request_.tolerance_m);
+    }
     status_pub_.publish(conv::ToStatus(planner_, solve_time_, params_.frame_id, now));
     if (planner_.status().recentred) PublishWindow(now);
     if (++cycle_ % params_.visualization_every == 0 && planner_.status().has_goal) {
@@ -451,7 +459,8 @@ class HarmonicPlannerNode {
   std::string goal_id_;
   long goal_count_ = 0;
   bool have_pose_ = false;
-  bool turning_ = false;  ///< Arrived at the position; turning to the final heading.
+  bool turning_ = false;    ///< Arrived at the position; turning to the final heading.
+  bool snap_said_ = false;  ///< The goal's snap out of the padding was logged.
   spott_map::Pose2 odom_;
   double travelled_ = 0.0;
   Vec2 last_position_{0.0, 0.0};
