@@ -33,8 +33,9 @@ for ((seed = first; seed < first + runs; ++seed)); do
   report="$out/$world-$controller-$seed.report"
   SPOTT_SKIP_SETUP=1 "$ROOT/spott" demo --world "$world" --seed "$seed" --controller "$controller" \
     >"$report" 2>"$out/$world-$controller-$seed.err"
-  legs=$(grep -cE '^   to [a-z_0-9]+ \(' "$report")
-  reached=$(grep -cE '^   to [a-z_0-9]+ \(.*\): reached$' "$report")
+  # A leg is a place ("   to NAME (x, y): ...") or, with --controller tr_plus, a task ("   task '...': ...").
+  legs=$(grep -cE "^   (to [a-z_0-9]+ \(|task ')" "$report")
+  reached=$(grep -cE "^   (to [a-z_0-9]+ \(.*\)|task '.*'): reached$" "$report")
   contacts=$(grep -oE 'bumper contacts: [0-9]+' "$report" | awk '{s += $3} END {print s + 0}')
   alarms=$(grep -oE 'said lost [0-9]+' "$report" | awk '{s += $3} END {print s + 0}')
   max_err=$(grep -oE 'max [0-9.]+ m /' "$report" | awk '{if ($2 > m) m = $2} END {print m + 0}')
