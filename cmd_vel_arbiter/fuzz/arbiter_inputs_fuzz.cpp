@@ -17,32 +17,14 @@
 
 #include "cmd_vel_arbiter/arbiter.h"
 #include "cmd_vel_arbiter/ros/conversions.h"
+#include "fuzz_values.h"
 
 namespace conv = cmd_vel_arbiter::ros_conversions;
 
 namespace {
 
-template <typename T>
-T AnyNumber(FuzzedDataProvider& in, T lo, T hi) {
-  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
-    case 0:
-      return std::numeric_limits<T>::quiet_NaN();
-    case 1:
-      return in.ConsumeBool() ? std::numeric_limits<T>::infinity()
-                              : -std::numeric_limits<T>::infinity();
-    case 2:
-      return in.ConsumeFloatingPoint<T>();
-    default:
-      return in.ConsumeFloatingPointInRange<T>(lo, hi);
-  }
-}
-
-void Check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "arbiter_inputs_fuzz: %s\n", what);
-    std::abort();
-  }
-}
+using spott_fuzz::AnyNumber;
+void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "arbiter_inputs_fuzz", what); }
 
 const char* kSources[] = {"planner", "teleop", "reflex", "nobody"};
 

@@ -12,29 +12,13 @@
 #include <string>
 
 #include "cmd_vel_arbiter/ros/conversions.h"
+#include "fuzz_values.h"
 
 namespace {
 
-float AnyFloat(FuzzedDataProvider& in) {
-  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
-    case 0:
-      return std::numeric_limits<float>::quiet_NaN();
-    case 1:
-      return in.ConsumeBool() ? std::numeric_limits<float>::infinity()
-                              : -std::numeric_limits<float>::infinity();
-    case 2:
-      return in.ConsumeFloatingPoint<float>();
-    default:
-      return in.ConsumeFloatingPointInRange<float>(-1.0f, 6.0f);
-  }
-}
+void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "range_ring_fuzz", what); }
 
-void Check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "range_ring_fuzz: %s\n", what);
-    std::abort();
-  }
-}
+float AnyFloat(FuzzedDataProvider& in) { return spott_fuzz::AnyNumber<float>(in, -1.0f, 6.0f); }
 
 }  // namespace
 

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fuzz_values.h"
 #include "markov_localization/map_model.h"
 #include "markov_localization/ros/conversions.h"
 
@@ -22,27 +23,8 @@ namespace conv = markov_localization::ros_conversions;
 
 namespace {
 
-template <typename T>
-T AnyNumber(FuzzedDataProvider& in, T lo, T hi) {
-  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
-    case 0:
-      return std::numeric_limits<T>::quiet_NaN();
-    case 1:
-      return in.ConsumeBool() ? std::numeric_limits<T>::infinity()
-                              : -std::numeric_limits<T>::infinity();
-    case 2:
-      return in.ConsumeFloatingPoint<T>();
-    default:
-      return in.ConsumeFloatingPointInRange<T>(lo, hi);
-  }
-}
-
-void Check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "sensor_messages_fuzz: %s\n", what);
-    std::abort();
-  }
-}
+using spott_fuzz::AnyNumber;
+void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "sensor_messages_fuzz", what); }
 
 void Scan(FuzzedDataProvider& in) {
   sensor_msgs::LaserScan scan;

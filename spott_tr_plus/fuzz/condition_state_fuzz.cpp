@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_values.h"
 #include "spott_tr_plus/parser.h"
 #include "spott_tr_plus/ros/conversions.h"
 #include "spott_tr_plus/value.h"
@@ -18,6 +19,8 @@
 namespace conv = spott_tr_plus::ros_conversions;
 
 namespace {
+
+void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "condition_state_fuzz", what); }
 
 const spott_tr_plus::ProgramFile& Program() {
   static const spott_tr_plus::ProgramFile program = [] {
@@ -31,13 +34,6 @@ const spott_tr_plus::ProgramFile& Program() {
     return r.program;
   }();
   return program;
-}
-
-void Check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "condition_state_fuzz: %s\n", what);
-    std::abort();
-  }
 }
 
 }  // namespace
