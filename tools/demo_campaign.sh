@@ -4,11 +4,11 @@
 # truth, bumper contacts, the localization's largest error, lost alarms and the real-time
 # factor achieved. The numbers behind the README's "demo legs reached over 10 runs" table.
 #   tools/demo_campaign.sh --world cim_office --runs 10 [--busy] [--first-seed 1]
-#                          [--controller none|tr_plus]
+#                          [--controller tr_plus|none]   (the demo's default: tr_plus)
 set -o pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
-world=cim_office runs=10 busy=0 first=1 controller=none
+world=cim_office runs=10 busy=0 first=1 controller=tr_plus
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --world) world=$2; shift 2;;
