@@ -11,18 +11,10 @@ spott_add_parameter_fuzzer(harmonic_planner_parameters_fuzz
 
 # The Navigate goal conversion, with ROS's headers and the workspace's generated messages
 # (./spott build first).
-set(spott_devel_include "${SPOTT_ROOT}/.ws/devel/include")
-if(EXISTS "${spott_devel_include}/spott_msgs/NavigateGoal.h")
-  add_library(spott_harmonic_planner_ros_fuzzcore STATIC
-              "${SPOTT_ROOT}/spott_harmonic_planner/src/ros/conversions.cpp"
-              "${SPOTT_ROOT}/spott_ros/src/pose_conversions.cpp")
-  target_include_directories(spott_harmonic_planner_ros_fuzzcore PUBLIC
-                             "${SPOTT_ROOT}/spott_ros/include" "${spott_devel_include}")
-  target_compile_options(spott_harmonic_planner_ros_fuzzcore PRIVATE -fsanitize=fuzzer-no-link)
-  target_link_libraries(spott_harmonic_planner_ros_fuzzcore PUBLIC spott_harmonic_planner_fuzzcore
-                        spott_map_ros_fuzzcore roscpp_serialization rostime cpp_common)
-  spott_add_fuzzer(navigate_goal_fuzz "${CMAKE_CURRENT_LIST_DIR}/navigate_goal_fuzz.cpp"
-                   CORES spott_harmonic_planner_ros)
-else()
-  message(STATUS "navigate_goal_fuzz left out: no ${spott_devel_include} (run ./spott build)")
+spott_ros_fuzzcore(spott_harmonic_planner_ros HEADER spott_msgs/NavigateGoal.h
+                   SOURCES "${SPOTT_ROOT}/spott_harmonic_planner/src/ros/conversions.cpp"
+                           "${SPOTT_ROOT}/spott_ros/src/pose_conversions.cpp"
+                   INCLUDES "${SPOTT_ROOT}/spott_ros/include" CORES spott_harmonic_planner spott_map_ros)
+if(TARGET spott_harmonic_planner_ros_fuzzcore)
+  spott_add_fuzzer(navigate_goal_fuzz "${CMAKE_CURRENT_LIST_DIR}/navigate_goal_fuzz.cpp" CORES spott_harmonic_planner_ros)
 endif()

@@ -5,20 +5,12 @@ spott_add_fuzzer(pose_text_fuzz "${CMAKE_CURRENT_LIST_DIR}/pose_text_fuzz.cpp" C
 
 # The message conversions (src/ros/) with ROS's headers and the workspace's generated messages:
 # needs a built workspace (./spott build) for spott_msgs' headers.
-set(spott_devel_include "${SPOTT_ROOT}/.ws/devel/include")
-if(EXISTS "${spott_devel_include}/spott_msgs/MapUpdate.h")
-  add_library(spott_map_ros_fuzzcore STATIC "${SPOTT_ROOT}/spott_map/src/ros/conversions.cpp"
-              "${SPOTT_ROOT}/spott_map/src/ros/map_update.cpp"
-              "${SPOTT_ROOT}/spott_ros/src/markers.cpp")
-  target_include_directories(spott_map_ros_fuzzcore PUBLIC "${SPOTT_ROOT}/spott_ros/include"
-                             "${spott_devel_include}")
-  target_compile_options(spott_map_ros_fuzzcore PRIVATE -fsanitize=fuzzer-no-link)
-  target_link_libraries(spott_map_ros_fuzzcore PUBLIC spott_map_fuzzcore roscpp_serialization
-                        rostime cpp_common)
-  spott_add_fuzzer(map_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/map_messages_fuzz.cpp"
-                   CORES spott_map_ros)
-else()
-  message(STATUS "map_messages_fuzz left out: no ${spott_devel_include} (run ./spott build)")
+spott_ros_fuzzcore(spott_map_ros HEADER spott_msgs/MapUpdate.h
+                   SOURCES "${SPOTT_ROOT}/spott_map/src/ros/conversions.cpp"
+                           "${SPOTT_ROOT}/spott_map/src/ros/map_update.cpp" "${SPOTT_ROOT}/spott_ros/src/markers.cpp"
+                   INCLUDES "${SPOTT_ROOT}/spott_ros/include" CORES spott_map)
+if(TARGET spott_map_ros_fuzzcore)
+  spott_add_fuzzer(map_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/map_messages_fuzz.cpp" CORES spott_map_ros)
 endif()
 
 # world_server's parameters (ROS-side: spott_ros's reader over XmlRpc; no workspace needed).

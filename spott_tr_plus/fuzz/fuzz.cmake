@@ -16,15 +16,8 @@ target_compile_definitions(tr_plus_parameters_fuzz PRIVATE
 
 # tr_plus_node's external condition messages (src/ros/conversions.cpp): needs a built workspace
 # for spott_msgs' headers.
-set(spott_devel_include "${SPOTT_ROOT}/.ws/devel/include")
-if(EXISTS "${spott_devel_include}/spott_msgs/ConditionState.h")
-  add_library(spott_tr_plus_ros_fuzzcore STATIC "${SPOTT_ROOT}/spott_tr_plus/src/ros/conversions.cpp")
-  target_include_directories(spott_tr_plus_ros_fuzzcore PUBLIC "${spott_devel_include}")
-  target_compile_options(spott_tr_plus_ros_fuzzcore PRIVATE -fsanitize=fuzzer-no-link)
-  target_link_libraries(spott_tr_plus_ros_fuzzcore PUBLIC spott_tr_plus_fuzzcore
-                        roscpp_serialization rostime cpp_common)
-  spott_add_fuzzer(condition_state_fuzz "${CMAKE_CURRENT_LIST_DIR}/condition_state_fuzz.cpp"
-                   CORES spott_tr_plus_ros)
-else()
-  message(STATUS "condition_state_fuzz left out: no ${spott_devel_include} (run ./spott build)")
+spott_ros_fuzzcore(spott_tr_plus_ros HEADER spott_msgs/ConditionState.h
+                   SOURCES "${SPOTT_ROOT}/spott_tr_plus/src/ros/conversions.cpp" CORES spott_tr_plus)
+if(TARGET spott_tr_plus_ros_fuzzcore)
+  spott_add_fuzzer(condition_state_fuzz "${CMAKE_CURRENT_LIST_DIR}/condition_state_fuzz.cpp" CORES spott_tr_plus_ros)
 endif()
