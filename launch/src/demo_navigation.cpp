@@ -300,6 +300,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     }
     const ros::Time started = ros::Time::now();
     const ros::WallTime wall_started = ros::WallTime::now();
+    leg.start_sim_s = started.toSec();
     watcher.Reset(started);
     {
       std::lock_guard<std::mutex> lock(log.mutex);
@@ -411,6 +412,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     leg.target = place->pose;
     const ros::Time started = ros::Time::now();
     const ros::WallTime wall_started = ros::WallTime::now();
+    leg.start_sim_s = started.toSec();
     watcher.Reset(started);
     FeedbackLog log;
     // Navigate waits in PLANNING for the pose and the global planner's answer: nothing to

@@ -31,6 +31,7 @@ struct NavigationLeg {
   bool reached = false;
   std::string global_path;  ///< Rooms and doors of the global plan, "hall_w -> d_lab_w -> lab".
   std::vector<std::string> recoveries;  ///< RECOVERING episodes, each with its note.
+  double start_sim_s = 0.0;             ///< Simulated time the leg began (s since the clock's 0).
   double sim_time_s = 0.0;              ///< Simulated time the leg took (s).
   double wall_time_s = 0.0;             ///< Wall time the leg took (s).
   double path_length_m = 0.0;           ///< Distance the robot really drove (ground truth, m).

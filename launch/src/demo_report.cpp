@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <ros/callback_queue.h>
 #include <ros/package.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/RoomDoorGraph.h>
@@ -78,7 +81,48 @@ std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spo
 
 }  // namespace
 
+namespace {
+
+// /sim/faults on a queue of its own: faults keep being logged while the demo waits on actions.
+class FaultLog {
+ public:
+  explicit FaultLog(ros::NodeHandle& parent) : nh_(parent) {
+    nh_.setCallbackQueue(&queue_);
+    sub_ = nh_.subscribe("/sim/faults", 20, &FaultLog::OnFault, this);
+    spinner_.start();
+  }
+  ~FaultLog() { spinner_.stop(); }
+  std::vector<DemoReport::Fault> Take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return faults_;
+  }
+
+ private:
+  void OnFault(const diagnostic_msgs::DiagnosticArray& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& status : msg.status) {
+      faults_.push_back({msg.header.stamp.toSec(), status.hardware_id, status.message,
+                         status.level == diagnostic_msgs::DiagnosticStatus::OK});
+    }
+  }
+  ros::NodeHandle nh_;
+  ros::CallbackQueue queue_;
+  ros::Subscriber sub_;
+  ros::AsyncSpinner spinner_{1, &queue_};
+  std::mutex mutex_;
+  std::vector<DemoReport::Fault> faults_;
+};
+
+}  // namespace
+
 DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options) {
+  FaultLog fault_log(nh);
+  DemoReport report = RunDemoSteps(nh, options);
+  report.faults = fault_log.Take();
+  return report;
+}
+
+DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   const std::string& world_file = options.world_file;
   const std::vector<std::string>& doors_to_close = options.doors_to_close;
   const double timeout_s = options.timeout_s;
@@ -266,6 +310,13 @@ std::string FormatReport(const DemoReport& r) {
       << " m, '.' free, 'R' robot):\n";
   for (const std::string& row : r.local_window) out << "   " << row << "\n";
   out << FormatNavigation(r.navigation);
+  if (!r.faults.empty()) {
+    out << "\n Faults (the simulator's schedule, /sim/faults):\n";
+    for (const auto& f : r.faults) {
+      out << "   " << std::fixed << std::setprecision(1) << f.sim_time_s << " s: " << f.what
+          << (f.applied ? "" : " (REFUSED)") << "\n";
+    }
+  }
   out << "\n Demo finished in " << std::fixed << std::setprecision(1) << r.elapsed_s << " s.\n"
       << rule << "\n";
   return out.str();

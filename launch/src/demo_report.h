@@ -38,6 +38,14 @@ struct DemoReport {
   std::vector<std::string> stack_packages_missing;  ///< Packages of the stack not in this build.
   std::vector<std::string> stack_packages_not_run;  ///< Built, but demo.launch does not run them.
   NavigationReport navigation;
+  /// The simulator's scheduled faults as they happened (/sim/faults), in order.
+  struct Fault {
+    double sim_time_s = 0.0;
+    std::string kind;  ///< The schedule's kind: kidnap, door, sensor, ...
+    std::string what;  ///< "door d_lab_w closed", with the refusal when refused
+    bool applied = false;
+  };
+  std::vector<Fault> faults;
 };
 
 struct DemoOptions {
@@ -57,8 +65,15 @@ struct DemoOptions {
 /// reopens them; then gives the TR+ controller each of `tasks` (RunTasks), or drives the robot
 /// to each of `goals` through Navigate (RunNavigation).
 DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options);
+/// RunDemo without the fault log.
+DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options);
 
 /// The report as a user reads it.
 std::string FormatReport(const DemoReport& report);
+
+/// The report as JSON (./spott run writes it beside the bag): outcome, per-leg time, path,
+/// bumper contacts, clearance, localization error against the ground truth, the faults and the
+/// leg each fell in. `scenario` names the scenario file ("" = none).
+std::string FormatReportJson(const DemoReport& report, const std::string& scenario);
 
 }  // namespace spott_launch

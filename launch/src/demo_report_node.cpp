@@ -12,10 +12,14 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
   std::string report_file;  // optional copy of the report (./spott demo prints it after shutdown)
+  std::string report_json;  // optional JSON report (./spott run)
+  std::string scenario;     // the scenario file the run came from, for the JSON report
   const auto options = spott_ros::ReadNodeParameters<spott_launch::DemoOptions>(
       pnh, "demo_report", [&](spott_ros::ParameterReader& r, spott_launch::DemoOptions& o) {
         r.Get("world_file", o.world_file);
         r.Get("report_file", report_file);
+        r.Get("report_json", report_json);
+        r.Get("scenario", scenario);
         r.Get("doors_to_close", o.doors_to_close);
         r.Get("running", o.running);
         r.Get("goals", o.goals);
@@ -36,6 +40,11 @@ int main(int argc, char** argv) {
     std::ofstream out(report_file);
     out << text;
     if (!out) ROS_ERROR("demo_report: cannot write ~report_file '%s'", report_file.c_str());
+  }
+  if (!report_json.empty()) {
+    std::ofstream out(report_json);
+    out << spott_launch::FormatReportJson(report, scenario);
+    if (!out) ROS_ERROR("demo_report: cannot write ~report_json '%s'", report_json.c_str());
   }
   return report.ok ? 0 : 1;
 }

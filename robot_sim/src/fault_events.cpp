@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "spott_map/yaml_reader.h"
@@ -38,6 +39,66 @@ bool ApplyFaultEvent(Simulator& sim, int robot, const FaultEvent& e, std::string
       return sim.world().RemoveObstacle(e.name, error);
   }
   return false;
+}
+
+const char* KindName(FaultEvent::Kind kind) {
+  switch (kind) {
+    case FaultEvent::Kind::kKidnap:
+      return "kidnap";
+    case FaultEvent::Kind::kDoor:
+      return "door";
+    case FaultEvent::Kind::kSensor:
+    case FaultEvent::Kind::kClearSensor:
+      return "sensor";
+    case FaultEvent::Kind::kSlip:
+      return "slip";
+    case FaultEvent::Kind::kAddObstacle:
+      return "add_obstacle";
+    case FaultEvent::Kind::kRemoveObstacle:
+      return "remove_obstacle";
+  }
+  return "?";
+}
+
+std::string Describe(const FaultEvent& e) {
+  char text[256];
+  std::snprintf(text, sizeof(text), " for %g s", e.duration);
+  const std::string lasting = e.duration > 0 ? text : " until cleared";
+  switch (e.kind) {
+    case FaultEvent::Kind::kKidnap:
+      std::snprintf(text, sizeof(text), "kidnap %s (%.2f m, %.2f m, %.2f rad)%s",
+                    e.relative ? "by" : "to", e.pose.x, e.pose.y, e.pose.yaw,
+                    e.relative ? " in the robot frame" : " in the map frame");
+      return text;
+    case FaultEvent::Kind::kDoor:
+      return "door " + e.name + (e.closed ? " closed" : " open");
+    case FaultEvent::Kind::kSensor: {
+      const char* fault = e.sensor_fault == FaultKind::kDropout ? "dropout"
+                          : e.sensor_fault == FaultKind::kStuck ? "stuck"
+                                                                : "noise";
+      std::string out = "sensor " + e.name + " " + fault;
+      if (e.sensor_fault == FaultKind::kNoise) {
+        std::snprintf(text, sizeof(text), " (%.3f m)", e.noise_stddev);
+        out += text;
+      }
+      return out + lasting;
+    }
+    case FaultEvent::Kind::kClearSensor:
+      return "sensor " + e.name + " faults cleared";
+    case FaultEvent::Kind::kSlip:
+      std::snprintf(text, sizeof(text), "wheel slip x%.2f linear, x%.2f angular for %.1f s",
+                    e.linear_scale, e.angular_scale, e.duration);
+      return text;
+    case FaultEvent::Kind::kAddObstacle:
+      std::snprintf(text, sizeof(text), "%s %s %.2f x %.2f x %.2f m added at (%.2f, %.2f)",
+                    e.obstacle.cylinder ? "cylinder" : "cuboid", e.obstacle.id.c_str(),
+                    e.obstacle.size_x, e.obstacle.size_y, e.obstacle.height, e.obstacle.pose.x,
+                    e.obstacle.pose.y);
+      return text;
+    case FaultEvent::Kind::kRemoveObstacle:
+      return "obstacle " + e.name + " removed";
+  }
+  return "?";
 }
 
 namespace {
@@ -124,22 +185,28 @@ std::optional<FaultEvent> ReadEvent(YamlReader& in, const YAML::Node& item,
 
 }  // namespace
 
+std::vector<FaultEvent> ReadFaultEvents(YamlReader& in, const YAML::Node& list,
+                                        const std::string& what) {
+  std::vector<FaultEvent> events;
+  if (!list || list.IsNull() || !in.ExpectSequence(list, what)) return events;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    auto e = ReadEvent(in, list[i], what + "[" + std::to_string(i) + "]");
+    if (e) events.push_back(*e);
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const FaultEvent& a, const FaultEvent& b) { return a.time < b.time; });
+  return events;
+}
+
 FaultScheduleResult ParseFaultSchedule(const std::string& yaml, const std::string& source_name) {
   FaultScheduleResult result;
   YamlReader in(source_name);
   const YAML::Node root = in.Parse(yaml);
   if (in.errors().empty() && root && !root.IsNull()) {
-    if (in.ExpectMap(root, "fault schedule", {"faults"}) && root["faults"] &&
-        !root["faults"].IsNull() && in.ExpectSequence(root["faults"], "faults")) {
-      const YAML::Node list = root["faults"];
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        auto e = ReadEvent(in, list[i], "faults[" + std::to_string(i) + "]");
-        if (e) result.events.push_back(*e);
-      }
+    if (in.ExpectMap(root, "fault schedule", {"faults"}) && root["faults"]) {
+      result.events = ReadFaultEvents(in, root["faults"], "faults");
     }
   }
-  std::stable_sort(result.events.begin(), result.events.end(),
-                   [](const FaultEvent& a, const FaultEvent& b) { return a.time < b.time; });
   result.errors = in.errors();
   if (!result.ok()) result.events.clear();
   return result;

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "robot_sim/fault_events.h"
 #include "test_world.h"
@@ -32,6 +34,32 @@ faults:
   EXPECT_EQ(r.events[6].kind, FaultEvent::Kind::kKidnap);
   EXPECT_TRUE(r.events[6].relative);
   EXPECT_DOUBLE_EQ(r.events[6].pose.yaw, -1.22);
+}
+
+TEST(FaultScheduleTest, EveryEventIsDescribedInTheUsersWords) {
+  const auto r = ParseFaultSchedule(R"(
+faults:
+  - {time: 1, kind: kidnap, pose: [0, 0, -1.22], relative: true}
+  - {time: 2, kind: door, door: d1, state: closed}
+  - {time: 3, kind: sensor, sensor: sonar/3, fault: dropout, duration: 2}
+  - {time: 4, kind: sensor, sensor: laser, fault: noise, noise_stddev: 0.2}
+  - {time: 5, kind: slip, linear_scale: 0.8, duration: 3}
+  - {time: 6, kind: add_obstacle, id: box, shape: cylinder, pose: [3, 2, 0], size: [0.5, 0.5, 1]}
+  - {time: 7, kind: remove_obstacle, id: box}
+)",
+                                    "schedule.yaml");
+  ASSERT_TRUE(r.ok()) << spott_map::FormatErrors(r.errors);
+  const std::vector<std::string> expected = {
+      "kidnap by (0.00 m, 0.00 m, -1.22 rad) in the robot frame",
+      "door d1 closed",
+      "sensor sonar/3 dropout for 2 s",
+      "sensor laser noise (0.200 m) until cleared",
+      "wheel slip x0.80 linear, x1.00 angular for 3.0 s",
+      "cylinder box 0.50 x 0.50 x 1.00 m added at (3.00, 2.00)",
+      "obstacle box removed"};
+  ASSERT_EQ(r.events.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(Describe(r.events[i]), expected[i]);
+  EXPECT_STREQ(KindName(r.events[5].kind), "add_obstacle");
 }
 
 TEST(FaultScheduleTest, ErrorsNameLineColumnAndTheProblem) {

@@ -17,6 +17,7 @@
 
 #include "robot_sim/simulator.h"
 #include "spott_map/source_location.h"
+#include "spott_map/yaml_reader.h"
 
 namespace robot_sim {
 
@@ -46,6 +47,18 @@ struct FaultScheduleResult {
   std::vector<spott_map::SourceError> errors;
   bool ok() const { return errors.empty(); }
 };
+
+/// The event in a user's words: "kidnap by (0, 0, -1.22 rad) in the robot frame",
+/// "door d_102 closed", "sensor sonar/3 dropout for 10 s", ... (logs, /sim/faults, reports).
+std::string Describe(const FaultEvent& event);
+
+/// "kidnap", "door", "sensor", "slip", "add_obstacle", "remove_obstacle": the schedule's `kind`.
+const char* KindName(FaultEvent::Kind kind);
+
+/// Reads the list `list` of fault events (a YAML sequence; null = none) named `what` in errors,
+/// sorted by time (stable); errors go to `in`. A scenario file's `faults:` uses it.
+std::vector<FaultEvent> ReadFaultEvents(spott_map::YamlReader& in, const YAML::Node& list,
+                                        const std::string& what);
 
 /// Parses a schedule; an empty document is an empty schedule.
 FaultScheduleResult ParseFaultSchedule(const std::string& yaml, const std::string& source_name);

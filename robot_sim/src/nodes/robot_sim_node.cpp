@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/callback_queue.h>
 #include <ros/package.h>
@@ -101,6 +102,7 @@ class SimNode {
           }));
     }
     rtf_pub_ = nh.advertise<std_msgs::Float64>("sim/real_time_factor", 1);
+    faults_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("sim/faults", 10, true);
     battery_pub_ = nh.advertise<sensor_msgs::BatteryState>("battery", 10);
     (void)pnh;
   }
@@ -307,13 +309,40 @@ class SimNode {
     while (next_event_ < schedule_.size() && schedule_[next_event_].time <= now_s) {
       const FaultEvent& e = schedule_[next_event_++];
       std::string error;
-      if (ApplyFaultEvent(*sim_, robot_, e, &error)) {
-        ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) applied", e.time, e.where.line);
+      const bool applied = ApplyFaultEvent(*sim_, robot_, e, &error);
+      const std::string what = Describe(e);
+      if (applied) {
+        ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) applied: %s", e.time, e.where.line,
+                 what.c_str());
       } else {
-        ROS_ERROR("robot_sim: scheduled fault at %.2f s (line %d) refused: %s", e.time,
-                  e.where.line, error.c_str());
+        ROS_ERROR("robot_sim: scheduled fault at %.2f s (line %d) refused: %s: %s", e.time,
+                  e.where.line, what.c_str(), error.c_str());
       }
+      PublishFault(now_s, e, what, applied ? "" : error);
     }
+  }
+
+  // /sim/faults: each scheduled fault as it happens (for reports and bags), one status each.
+  void PublishFault(double now_s, const FaultEvent& e, const std::string& what,
+                    const std::string& refusal) {
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time(now_s);
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = "robot_sim: fault";
+    status.hardware_id = KindName(e.kind);
+    status.level = refusal.empty() ? diagnostic_msgs::DiagnosticStatus::OK
+                                   : diagnostic_msgs::DiagnosticStatus::ERROR;
+    status.message = refusal.empty() ? what : what + ": refused: " + refusal;
+    auto value = [&](const std::string& key, const std::string& v) {
+      diagnostic_msgs::KeyValue kv;
+      kv.key = key;
+      kv.value = v;
+      status.values.push_back(kv);
+    };
+    value("scheduled_s", std::to_string(e.time));
+    value("line", std::to_string(e.where.line));
+    array.status.push_back(status);
+    faults_pub_.publish(array);
   }
 
   void OnCmdVel(const geometry_msgs::Twist& msg) {
@@ -402,6 +431,7 @@ class SimNode {
   std::unique_ptr<Simulator> sim_;
   int robot_;
   std::vector<FaultEvent> schedule_;
+  ros::Publisher faults_pub_;
   std::size_t next_event_ = 0;
   Rng rng_;
   bool have_command_ = false;

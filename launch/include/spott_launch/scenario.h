@@ -1,0 +1,70 @@
+// A scenario: one run of a whole stack as a file (issue 20). World, robot, start, seed, the
+// tasks (SPOTT task commands for the TR+ controller) or the places to drive to (Navigate), the
+// simulator's timed faults and the limits, read strictly: every error names the file, line and
+// column. ROS-free; `scenario_tool` turns a scenario into roslaunch arguments and parameter
+// files, `./spott run SCENARIO` runs it. The format is in spott_launch/README.md, "Scenarios".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "robot_sim/fault_events.h"
+#include "spott_map/source_location.h"
+#include "spott_map/world.h"
+
+namespace spott_launch {
+
+/// A string of the file with where it stands (for errors found after parsing).
+struct Located {
+  std::string text;
+  spott_map::SourceLocation where;
+  int quote = 0;  ///< 1 when the scalar was quoted: its text starts one column later.
+};
+
+struct Scenario {
+  std::string description;
+  Located world;                          ///< A world of spott_worlds (name, no path).
+  Located robot;                          ///< "" = the world's robot (stack.launch).
+  std::optional<spott_map::Pose2> start;  ///< none = the world's robot_start (m, rad).
+  spott_map::SourceLocation start_where;
+  int seed = 1;                         ///< The simulator's noise seed.
+  double real_time_factor = 4.0;        ///< Simulated s per wall s (0.1 .. 20).
+  std::string localization = "markov";  ///< markov | truth
+  std::vector<Located> tasks;           ///< Task commands for the TR+ controller, or
+  std::vector<Located> goals;           ///< places driven to through Navigate.
+  std::vector<Located> doors_to_close;  ///< The demo's reachability experiment.
+  double leg_timeout_s = 240.0;         ///< Simulated s per task or goal.
+  double goal_tolerance_m = 0.25;       ///< Judged on the ground truth (m).
+  double time_limit_s = 0.0;            ///< Simulated s for the whole run (0 = legs x timeout).
+  std::vector<robot_sim::FaultEvent> faults;  ///< Sorted by time (simulated s since start).
+  std::string faults_yaml;  ///< The `faults:` list as robot_sim reads it ("" none).
+
+  /// "tr_plus" when the scenario gives tasks, "none" when it gives goals.
+  std::string Controller() const { return tasks.empty() ? "none" : "tr_plus"; }
+  /// The time limit in effect: time_limit_s, or every leg's timeout plus a minute of start-up.
+  double EffectiveTimeLimit() const;
+};
+
+struct ScenarioResult {
+  std::optional<Scenario> scenario;            ///< Set only when there are no errors.
+  std::vector<spott_map::SourceError> errors;  ///< "file:line:column: message"
+  bool ok() const { return scenario.has_value(); }
+};
+
+/// Parses scenario text; `file` names it in errors. Checks what the file alone can tell: keys,
+/// types, ranges, task-command syntax (with the column inside the string), the fault list.
+ScenarioResult ParseScenario(const std::string& text, const std::string& file);
+
+/// What only the world can tell: goals and faults' doors name places and doors of `world`,
+/// the start and an absolute kidnap lie inside a room, doors_to_close are doors. Empty = fine.
+std::vector<spott_map::SourceError> CheckAgainstWorld(const Scenario& scenario,
+                                                      const spott_map::World& world);
+
+/// roslaunch arguments of spott_launch/demo.launch for the scenario, "name:=value" each.
+std::vector<std::string> LaunchArguments(const Scenario& scenario);
+
+/// The demo_report parameters (the keys of config/demo_<world>.yaml) as YAML text.
+std::string DemoParametersYaml(const Scenario& scenario);
+
+}  // namespace spott_launch

@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+# A scenario as `./spott run` runs it: scenario_tool checks the file and writes the launch
+# arguments, demo_report's parameters and robot_sim's fault schedule; demo.launch runs the whole
+# stack with them on this test's master, records a bag and writes the JSON report. The test
+# checks that the run was the scenario's (world, goals, each fault at its time in its leg), that
+# the JSON agrees with itself and with the bag, and that a bad scenario is refused with its line
+# and column. Python because the runner's parts are command-line programs.
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import catkin.find_in_workspaces as fiw
+import rosbag
+import rospkg
+import rostest
+
+PKG = 'spott_launch'
+SCENARIO = 'hilare_sonar_dropout.yaml'
+
+
+def find_tool():
+    # The workspace's lib/spott_launch/scenario_tool, as rosrun finds it.
+    found = fiw.find_in_workspaces(['libexec'], project=PKG, path='scenario_tool')
+    if not found:
+        raise RuntimeError('scenario_tool not built')
+    return found[0]
+
+
+class ScenarioRun(unittest.TestCase):
+    def test_a_bad_scenario_is_refused_with_its_line_and_column(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, 'bad.yaml')
+            with open(path, 'w') as f:
+                f.write('world: hilare_room\ngoals: [zone_exit]\nfaults:\n'
+                        '  - {time: 5, kind: sensor, sensor: sonar/1, fault: melt}\n')
+            out = subprocess.run([find_tool(), path, '--out', d], stdout=subprocess.PIPE,
+                                 stderr=subprocess.STDOUT, text=True, timeout=60)
+            self.assertEqual(out.returncode, 1, out.stdout)
+            self.assertIn(path + ':4:', out.stdout)
+            self.assertIn('melt', out.stdout)
+            self.assertFalse(os.path.exists(os.path.join(d, 'launch_args')))
+
+    def test_the_run_is_the_scenarios_and_its_report_and_bag_agree(self):
+        scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
+        with tempfile.TemporaryDirectory() as d:
+            out = subprocess.run([find_tool(), scenario, '--out', d], stdout=subprocess.PIPE,
+                                 stderr=subprocess.STDOUT, text=True, timeout=60)
+            self.assertEqual(out.returncode, 0, out.stdout)
+            with open(os.path.join(d, 'launch_args')) as f:
+                args = f.read().split('\n')
+            self.assertIn('world:=hilare_room', args)
+            self.assertIn('controller:=none', args)
+            bag = os.path.join(d, 'run.bag')
+            report = os.path.join(d, 'report.json')
+            run = subprocess.run(
+                ['roslaunch', PKG, 'demo.launch'] + [a for a in args if a] +
+                ['params_file:=' + os.path.join(d, 'demo_params.yaml'),
+                 'faults_file:=' + os.path.join(d, 'faults.yaml'),
+                 'report_json:=' + report, 'scenario:=' + scenario, 'bag:=' + bag],
+                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=360)
+            self.assertTrue(os.path.exists(report), run.stdout[-3000:])
+            with open(report) as f:
+                r = json.load(f)
+            self.assertTrue(r['ok'], r.get('failure'))
+            self.assertEqual(r['world'], 'hilare_room')
+            self.assertEqual(r['scenario'], scenario)
+            self.assertEqual([leg['goal'] for leg in r['legs']],
+                             ['wall_follow_start', 'zone_exit', 'corridor_north'])
+            # Each scheduled fault happened at its simulated time, in the leg then running.
+            self.assertEqual(len(r['faults']), 3, r['faults'])
+            for fault in r['faults']:
+                self.assertTrue(fault['applied'], fault)
+                self.assertAlmostEqual(fault['sim_time_s'], 25.0, delta=0.1)
+                self.assertIn('dropout for 20 s', fault['what'])
+                leg = r['legs'][fault['during_leg']]
+                self.assertLessEqual(leg['start_sim_s'], fault['sim_time_s'])
+            # The outcome is the legs' (ground truth, no contact), and HILARE makes it.
+            reached = all(leg['reached'] for leg in r['legs'])
+            contacts = sum(leg['bumper_hits'] for leg in r['legs'])
+            self.assertEqual(r['outcome'] == 'succeeded', reached and contacts == 0)
+            self.assertEqual(r['outcome'], 'succeeded', json.dumps(r['legs'], indent=1)[-2000:])
+            # The bag holds the run: the faults as they happened and the ground truth, which
+            # ends where the report says the last leg ended.
+            self.assertTrue(os.path.exists(bag), run.stdout[-2000:])
+            with rosbag.Bag(bag) as b:
+                faults = [m for _, m, _ in b.read_messages(topics=['/sim/faults'])]
+                truth = [m for _, m, _ in b.read_messages(topics=['/sim/ground_truth'])]
+            self.assertEqual(len(faults), 3)
+            self.assertEqual(faults[0].status[0].hardware_id, 'sensor')
+            self.assertGreater(len(truth), 100)
+            last = truth[-1].pose.pose.position
+            end = r['legs'][-1]['final_position']
+            self.assertLess(((last.x - end[0]) ** 2 + (last.y - end[1]) ** 2) ** 0.5, 0.3)
+
+
+if __name__ == '__main__':
+    rostest.rosrun(PKG, 'scenario_run_test', ScenarioRun, sys.argv)

@@ -1,0 +1,197 @@
+// Scenario files (spott_launch/scenario.h): what a user's mistake is told, with its line and
+// column, and what a good file turns into for roslaunch, demo_report and robot_sim.
+#include "spott_launch/scenario.h"
+
+#include <dirent.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "robot_sim/fault_events.h"
+#include "spott_map/world_loader.h"
+
+namespace spott_launch {
+namespace {
+
+std::string Errors(const ScenarioResult& r) { return spott_map::FormatErrors(r.errors); }
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+spott_map::World World(const std::string& name) {
+  const auto loaded = spott_map::LoadWorldFile(std::string(WORLDS_DIR) + "/" + name + ".yaml");
+  EXPECT_TRUE(loaded.ok()) << name;
+  return *loaded.world;
+}
+
+TEST(Scenario, EveryShippedScenarioParsesAndFitsItsWorld) {
+  DIR* dir = opendir(SCENARIOS_DIR);
+  ASSERT_NE(dir, nullptr);
+  int files = 0;
+  while (const dirent* entry = readdir(dir)) {
+    const std::string name = entry->d_name;
+    if (name.size() < 5 || name.substr(name.size() - 5) != ".yaml") continue;
+    ++files;
+    const auto r = ParseScenario(ReadFile(std::string(SCENARIOS_DIR) + "/" + name), name);
+    ASSERT_TRUE(r.ok()) << Errors(r);
+    const auto errors = CheckAgainstWorld(*r.scenario, World(r.scenario->world.text));
+    EXPECT_TRUE(errors.empty()) << name << ": " << spott_map::FormatErrors(errors);
+  }
+  closedir(dir);
+  EXPECT_GE(files, 4);
+}
+
+TEST(Scenario, AnUnknownKeyIsNamedAtItsLineAndColumnWithTheLikelyWord) {
+  const auto r = ParseScenario("world: cim_office\ntaks: [\"go in room(lab)\"]\n", "s.yaml");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(Errors(r).find("s.yaml:2:1:"), std::string::npos) << Errors(r);
+  EXPECT_NE(Errors(r).find("taks"), std::string::npos) << Errors(r);
+  EXPECT_NE(Errors(r).find("tasks"), std::string::npos) << Errors(r);
+}
+
+TEST(Scenario, ATaskSyntaxErrorPointsIntoItsString) {
+  // Column 21 of the line is the task's 12th character (after `tasks: ["`), where the grammar
+  // wanted the '(' of `door(...)` and found a name.
+  const auto r = ParseScenario("world: cim_office\ntasks: [\"go to door d_106)\"]\n", "s.yaml");
+  ASSERT_FALSE(r.ok());
+  ASSERT_EQ(r.errors.size(), 1u) << Errors(r);
+  EXPECT_EQ(r.errors[0].where.line, 2);
+  EXPECT_EQ(r.errors[0].where.column, 21) << Errors(r);
+  // Unquoted, the same task starts one column earlier.
+  const auto plain = ParseScenario("world: cim_office\ntasks: [go to door d_106)]\n", "s.yaml");
+  ASSERT_EQ(plain.errors.size(), 1u) << Errors(plain);
+  EXPECT_EQ(plain.errors[0].where.column, 20) << Errors(plain);
+  EXPECT_NE(Errors(r).find("tasks[0]"), std::string::npos) << Errors(r);
+}
+
+TEST(Scenario, TasksAndGoalsTogetherOrNeitherAreRefused) {
+  const auto both = ParseScenario(
+      "world: cim_office\ntasks: [\"go in room(lab)\"]\ngoals: [lab_bench]\n", "s.yaml");
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(Errors(both).find("s.yaml:3:"), std::string::npos) << Errors(both);
+  EXPECT_NE(Errors(both).find("not both"), std::string::npos) << Errors(both);
+  const auto neither = ParseScenario("world: cim_office\nseed: 3\n", "s.yaml");
+  ASSERT_FALSE(neither.ok());
+  EXPECT_NE(Errors(neither).find("nothing to do"), std::string::npos) << Errors(neither);
+  const auto empty = ParseScenario("", "s.yaml");
+  ASSERT_FALSE(empty.ok());
+  EXPECT_NE(Errors(empty).find("s.yaml:1:1:"), std::string::npos) << Errors(empty);
+}
+
+// scenario_fuzz: a goal with bytes that are not UTF-8 reached demo_report's parameters changed.
+TEST(Scenario, GoalsAndDoorsAreNamesOfTheWorld) {
+  const auto r = ParseScenario(
+      "world: bonn_department\ngoals: [position_1, w\xf2\xff\xffolframs]\n"
+      "doors_to_close: [\"door b\"]\n",
+      "s.yaml");
+  ASSERT_FALSE(r.ok());
+  ASSERT_EQ(r.errors.size(), 2u) << Errors(r);
+  EXPECT_NE(Errors(r).find("s.yaml:2:21: goals[1]:"), std::string::npos) << Errors(r);
+  EXPECT_NE(Errors(r).find("s.yaml:3:18: doors_to_close[0]:"), std::string::npos) << Errors(r);
+}
+
+TEST(Scenario, NumbersOutOfTheirRangesAreNamed) {
+  const std::string head = "world: cim_office\ngoals: [lab_bench]\n";
+  for (const auto& [line, field] : std::vector<std::pair<std::string, std::string>>{
+           {"seed: 1.5", "seed"},
+           {"seed: -2", "seed"},
+           {"real_time_factor: 50", "real_time_factor"},
+           {"leg_timeout_s: 0", "leg_timeout_s"},
+           {"goal_tolerance_m: .nan", "goal_tolerance_m"},
+           {"localization: amcl", "localization"},
+           {"start_pose: [1, 2]", "start_pose"}}) {
+    const auto r = ParseScenario(head + line + "\n", "s.yaml");
+    ASSERT_FALSE(r.ok()) << line;
+    EXPECT_NE(Errors(r).find("s.yaml:3:"), std::string::npos) << line << ": " << Errors(r);
+    EXPECT_NE(Errors(r).find(field), std::string::npos) << line << ": " << Errors(r);
+  }
+}
+
+TEST(Scenario, FaultsAreRobotSimsEventsAndReachItUnchanged) {
+  const auto r = ParseScenario(
+      "world: bonn_department\n"
+      "goals: [position_1]\n"
+      "faults:\n"
+      "  - {time: 45, kind: door, door: door_b, state: closed}\n"
+      "  - {time: 30, kind: kidnap, pose: [0, 0, -1.22], relative: true}\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const Scenario& s = *r.scenario;
+  ASSERT_EQ(s.faults.size(), 2u);
+  EXPECT_EQ(s.faults[0].kind, robot_sim::FaultEvent::Kind::kKidnap);  // sorted by time
+  EXPECT_EQ(s.faults[0].where.line, 5);
+  // What robot_sim's ~faults gets parses to the same events.
+  const auto schedule = robot_sim::ParseFaultSchedule(s.faults_yaml, "faults.yaml");
+  ASSERT_TRUE(schedule.ok()) << spott_map::FormatErrors(schedule.errors);
+  ASSERT_EQ(schedule.events.size(), 2u);
+  EXPECT_DOUBLE_EQ(schedule.events[0].pose.yaw, -1.22);
+  EXPECT_TRUE(schedule.events[0].relative);
+  EXPECT_EQ(schedule.events[1].name, "door_b");
+  EXPECT_TRUE(schedule.events[1].closed);
+
+  const auto bad = ParseScenario(
+      "world: bonn_department\ngoals: [position_1]\nfaults:\n  - {time: 5, kind: explode}\n",
+      "s.yaml");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(Errors(bad).find("s.yaml:4:"), std::string::npos) << Errors(bad);
+  EXPECT_NE(Errors(bad).find("explode"), std::string::npos) << Errors(bad);
+
+  const auto late = ParseScenario(
+      "world: bonn_department\ngoals: [position_1]\ntime_limit_s: 100\n"
+      "faults:\n  - {time: 200, kind: kidnap, pose: [0, 0, 1], relative: true}\n",
+      "s.yaml");
+  ASSERT_FALSE(late.ok());
+  EXPECT_NE(Errors(late).find("s.yaml:5:"), std::string::npos) << Errors(late);
+}
+
+TEST(Scenario, TheWorldNamesWhatItLacks) {
+  const auto r = ParseScenario(
+      "world: cim_office\n"
+      "start_pose: [-50, -50, 0]\n"
+      "goals: [lab_bench, nowhere]\n"
+      "doors_to_close: [d_nope]\n"
+      "faults:\n"
+      "  - {time: 5, kind: door, door: d_none, state: closed}\n"
+      "  - {time: 9, kind: kidnap, pose: [-40, 3, 0]}\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto errors = CheckAgainstWorld(*r.scenario, World("cim_office"));
+  const std::string text = spott_map::FormatErrors(errors);
+  ASSERT_EQ(errors.size(), 5u) << text;
+  EXPECT_NE(text.find("s.yaml:2:"), std::string::npos) << text;  // start in no room
+  EXPECT_NE(text.find("s.yaml:3:20: goals: no place 'nowhere'"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.yaml:4:"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.yaml:6:"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.yaml:7:"), std::string::npos) << text;
+}
+
+TEST(Scenario, LaunchArgumentsAndDemoParametersSayWhatTheFileSays) {
+  const auto r = ParseScenario(
+      "world: cim_office\nrobot: b12\nstart_pose: [3.5, 4, 1.5]\nseed: 7\n"
+      "real_time_factor: 2\nlocalization: truth\n"
+      "tasks: [\"go to door(d_106)\", 'go near point(meeting_room) quickly']\n"
+      "leg_timeout_s: 100\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto args = LaunchArguments(*r.scenario);
+  const std::vector<std::string> expected = {
+      "world:=cim_office",   "robot:=b12",          "start_pose:=3.5 4 1.5", "seed:=7",
+      "real_time_factor:=2", "localization:=truth", "controller:=tr_plus"};
+  EXPECT_EQ(args, expected);
+  const YAML::Node params = YAML::Load(DemoParametersYaml(*r.scenario));
+  ASSERT_TRUE(params["tasks"].IsSequence());
+  EXPECT_EQ(params["tasks"][1].as<std::string>(), "go near point(meeting_room) quickly");
+  EXPECT_FALSE(params["goals"]);
+  EXPECT_DOUBLE_EQ(params["leg_timeout_s"].as<double>(), 100.0);
+  EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 2 * 100.0);
+}
+
+}  // namespace
+}  // namespace spott_launch
