@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "spott_map/geometry.h"
@@ -29,82 +30,41 @@ namespace {
 
 using NavigateClient = actionlib::SimpleActionClient<spott_msgs::NavigateAction>;
 
-// What the simulator says while a leg runs; filled by subscriber callbacks.
+// What the simulator says while a leg runs (LegMetrics), filled by subscriber callbacks.
 struct LegWatcher {
   std::mutex mutex;
-  const spott_map::World* world = nullptr;
-  bool have_pose = false;
-  spott_map::Vec2 position{0.0, 0.0};
-  double yaw = 0.0;
-  double path_length_m = 0.0;
-  int estimates = 0, lost_reports = 0;
-  double sum_position_error_m = 0.0, max_position_error_m = 0.0;
-  double sum_heading_error_rad = 0.0, max_heading_error_rad = 0.0;
-  double min_wall_distance_m = std::numeric_limits<double>::infinity();
-  int bumper_hits = 0;
+  explicit LegWatcher(const spott_map::World& world) : metrics(world) {}
+  LegMetrics metrics;
   std::string global_path;  ///< The first plan made for the current goal.
   std::string last_path;    ///< The latest plan (latched: unchanged plans are not re-sent).
   ros::Time goal_time;
-  struct Sample {
-    ros::Time stamp;
-    spott_map::Vec2 position;
-    double yaw;
-  };
-  std::deque<Sample> history;
 
   void Reset(const ros::Time& now) {
     std::lock_guard<std::mutex> lock(mutex);
     global_path.clear();
     goal_time = now;
-    path_length_m = 0.0;
-    min_wall_distance_m = std::numeric_limits<double>::infinity();
-    bumper_hits = 0;
-    estimates = lost_reports = 0;
-    sum_position_error_m = max_position_error_m = 0.0;
-    sum_heading_error_rad = max_heading_error_rad = 0.0;
+    metrics.Reset(now.toSec());
+  }
+  spott_map::Pose2 Pose() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return metrics.pose();
   }
   void OnTruth(const nav_msgs::Odometry& odom) {
-    const spott_map::Vec2 p(odom.pose.pose.position.x, odom.pose.pose.position.y);
+    const auto& q = odom.pose.pose.orientation;
     std::lock_guard<std::mutex> lock(mutex);
-    if (have_pose) path_length_m += (p - position).norm();
-    position = p;
-    yaw = 2.0 * std::atan2(odom.pose.pose.orientation.z, odom.pose.pose.orientation.w);
-    have_pose = true;
-    // The last second of ground truth: a status is compared with the truth at its own stamp
-    // (it comes some time after the reading it was computed from; at 4x real time the robot
-    // turned meanwhile by up to 15 degrees).
-    if (!history.empty() && odom.header.stamp < history.back().stamp) history.clear();
-    history.push_back(Sample{odom.header.stamp, p, yaw});
-    while (history.size() > 2 && (odom.header.stamp - history.front().stamp).toSec() > 1.0)
-      history.pop_front();
-    min_wall_distance_m = std::min(min_wall_distance_m, DistanceToNearestSolid(*world, p));
+    metrics.OnTruth(odom.header.stamp.toSec(), odom.pose.pose.position.x, odom.pose.pose.position.y,
+                    2.0 * std::atan2(q.z, q.w));
   }
-  // The localization's estimate against the ground truth at the status' stamp (the truth comes
-  // at the simulator's rate).
   void OnStatus(const spott_msgs::LocalizationStatus& status) {
     std::lock_guard<std::mutex> lock(mutex);
-    if (!have_pose) return;
-    spott_map::Vec2 truth = position;
-    double truth_yaw = yaw;
-    for (auto it = history.rbegin(); it != history.rend(); ++it)
-      if (it->stamp <= status.header.stamp) {  // the newest truth not after the status' stamp
-        truth = it->position;
-        truth_yaw = it->yaw;
-        break;
-      }
-    const double e = (spott_map::Vec2(status.estimate.x, status.estimate.y) - truth).norm();
-    const double h = std::abs(spott_map::NormalizeAngle(status.estimate.theta - truth_yaw));
-    ++estimates;
-    lost_reports += status.lost ? 1 : 0;
-    sum_position_error_m += e;
-    sum_heading_error_rad += h;
-    max_position_error_m = std::max(max_position_error_m, e);
-    max_heading_error_rad = std::max(max_heading_error_rad, h);
+    metrics.OnStatus(status.header.stamp.toSec(), status.estimate.x, status.estimate.y,
+                     status.estimate.theta, status.lost);
   }
   void OnBumper(const spott_msgs::BumperRing& ring) {
-    if (std::none_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; })) return;
     std::lock_guard<std::mutex> lock(mutex);
-    ++bumper_hits;
+    metrics.OnBumper(
+        ring.header.stamp.toSec(),
+        std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
   }
   void OnGlobalPath(const spott_msgs::GlobalPath& path) {
     std::string text;
@@ -136,21 +96,6 @@ struct FeedbackLog {
 
 }  // namespace
 
-double DistanceToNearestSolid(const spott_map::World& world, const spott_map::Vec2& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const spott_map::Wall& wall : world.walls) {  // boxes with flat ends, as simulated
-    best = std::min(
-        best, spott_map::MakeSegment(wall.id, wall.segment, "wall", wall.thickness).DistanceTo(p));
-  }
-  for (const spott_map::WorldObject& object : world.objects) {
-    const spott_map::Polygon footprint = object.Footprint();
-    const double d =
-        spott_map::PointInPolygon(p, footprint) ? 0.0 : spott_map::DistanceToBoundary(p, footprint);
-    best = std::min(best, d);
-  }
-  return best;
-}
-
 namespace {
 
 // Copies what the watcher measured during a leg into it.
@@ -158,19 +103,7 @@ void Measure(LegWatcher& watcher, const spott_map::Vec2& target, NavigationLeg& 
   std::lock_guard<std::mutex> lock(watcher.mutex);
   if (leg.global_path.empty())
     leg.global_path = watcher.global_path.empty() ? watcher.last_path : watcher.global_path;
-  leg.path_length_m = watcher.path_length_m;
-  leg.final_error_m = (watcher.position - target).norm();
-  leg.final_position = watcher.position;
-  leg.min_wall_distance_m = watcher.min_wall_distance_m;
-  leg.bumper_hits = watcher.bumper_hits;
-  leg.estimates = watcher.estimates;
-  leg.lost_reports = watcher.lost_reports;
-  if (watcher.estimates > 0) {
-    leg.mean_position_error_m = watcher.sum_position_error_m / watcher.estimates;
-    leg.mean_heading_error_rad = watcher.sum_heading_error_rad / watcher.estimates;
-    leg.max_position_error_m = watcher.max_position_error_m;
-    leg.max_heading_error_rad = watcher.max_heading_error_rad;
-  }
+  watcher.metrics.Measure(target, leg);
 }
 
 // The simulator's side of a run, on a callback queue of its own so that ground truth, bumper,
@@ -183,8 +116,7 @@ struct RunWatch {
   std::vector<ros::Subscriber> subscribers;
   ros::AsyncSpinner spinner{1, &queue};
 
-  RunWatch(ros::NodeHandle& parent, const spott_map::World& world) : nh(parent) {
-    watcher.world = &world;
+  RunWatch(ros::NodeHandle& parent, const spott_map::World& world) : watcher(world), nh(parent) {
     nh.setCallbackQueue(&queue);
     subscribers.push_back(nh.subscribe("/sim/ground_truth", 50, &LegWatcher::OnTruth, &watcher));
     subscribers.push_back(nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher));
@@ -214,27 +146,39 @@ bool WaitForEnd(Client& client, const ros::Time& started, double leg_timeout_s) 
   return false;
 }
 
+// When a goal's result came (simulated time), set by the client's done callback.
+struct DoneTime {
+  std::mutex mutex;
+  std::optional<ros::Time> at;
+  void Set() {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!at) at = ros::Time::now();
+  }
+  ros::Time Get() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return at ? *at : ros::Time::now();
+  }
+};
+
+// Closes the leg's window at its result plus LegMetrics::kSettleS and waits until the messages
+// stamped within it have come (as bag_report counts them from a bag). Returns the end.
+ros::Time CloseLeg(LegWatcher& watcher, DoneTime& done) {
+  const ros::Time end = done.Get();
+  {
+    std::lock_guard<std::mutex> lock(watcher.mutex);
+    watcher.metrics.EndAt(end.toSec() + LegMetrics::kSettleS);
+  }
+  const ros::Time until = end + ros::Duration(LegMetrics::kSettleS + 0.2);
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(3.0);
+  while (ros::ok() && ros::Time::now() < until && ros::WallTime::now() < give_up)
+    ros::WallDuration(0.02).sleep();
+  return end;
+}
+
 std::string TimedOutText(double leg_timeout_s) {
   char text[64];
   std::snprintf(text, sizeof(text), "timed out after %.0f s of simulated time", leg_timeout_s);
   return text;
-}
-
-// The leg's verdict, on the simulator's ground truth and never on the stack's belief: reached
-// when whoever drove says so (`refusal` empty), the robot really is at the goal (`off_goal`
-// empty) and no bumper was pressed.
-void Judge(const std::string& refusal, const std::string& off_goal, NavigationLeg& leg) {
-  if (!refusal.empty()) {
-    leg.outcome = "not reached: " + refusal;
-  } else if (!off_goal.empty()) {
-    leg.outcome = "not reached: " + off_goal;
-  } else if (leg.bumper_hits > 0) {
-    leg.outcome = "not reached: at the goal, but after " + std::to_string(leg.bumper_hits) +
-                  " bumper contacts";
-  } else {
-    leg.outcome = "reached";
-    leg.reached = true;
-  }
 }
 
 }  // namespace
@@ -285,19 +229,11 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     return report;
   }
   report.ran = true;
-  // The goal regions are judged as the controller sees them (spott_tr_plus task interpretation)
-  // but on the CAD map of the world file and the ground truth.
-  const spott_map::MapDatabase cad = spott_map::MapDatabase::FromWorld(world);
-  const spott_tr_plus::PlaceResolver resolve = spott_tr_plus::MapPlaceResolver(cad, world.places);
   std::vector<std::string> features_before;
   for (const std::string& command : tasks) {
     NavigationLeg leg;
     leg.task = command;
-    spott_map::Pose2 start;
-    {
-      std::lock_guard<std::mutex> lock(watcher.mutex);
-      start = spott_map::Pose2{watcher.position.x(), watcher.position.y(), watcher.yaw};
-    }
+    const spott_map::Pose2 start = watcher.Pose();
     const ros::Time started = ros::Time::now();
     const ros::WallTime wall_started = ros::WallTime::now();
     leg.start_sim_s = started.toSec();
@@ -310,9 +246,10 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     }
     spott_msgs::TaskGoal goal;
     goal.command = command;
-    client.sendGoal(goal);
+    DoneTime done_time;
+    client.sendGoal(goal, [&done_time](const actionlib::SimpleClientGoalState&,
+                                       const spott_msgs::TaskResultConstPtr&) { done_time.Set(); });
     const bool done = WaitForEnd(client, started, leg_timeout_s);
-    leg.sim_time_s = (ros::Time::now() - started).toSec();
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     spott_msgs::TaskResultConstPtr result;
     if (done) {
@@ -322,7 +259,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
       client.waitForResult(ros::Duration(5.0));
       result = client.getResult();
     }
-    ros::WallDuration(0.2).sleep();  // the last ground truth and bumper messages
+    leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
     bool reached_by_controller = false;
     if (result) {
       leg.interpretation = result->interpretation;
@@ -354,32 +291,8 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     }
     Measure(watcher, leg.target.Position(), leg);
     // The goal region of the command from where the robot really started.
-    bool in_region = false;
-    std::string region_error;
-    const auto parsed = spott_tr_plus::ParseTaskCommand(command);
-    if (parsed.ok()) {
-      const auto in =
-          spott_tr_plus::InterpretTask(*parsed.command, start.x, start.y, start.yaw,
-                                       spott_tr_plus::TaskInterpretationParameters{}, resolve);
-      if (in.ok() && in.interpretation->goal) {
-        in_region =
-            in.interpretation->goal->Contains(leg.final_position.x(), leg.final_position.y());
-      } else {
-        region_error = "the command names no goal region";
-      }
-    }
-    std::string off_goal;
-    if (!leg.has_target || !region_error.empty()) {
-      off_goal = region_error.empty() ? "no goal point" : region_error;
-    } else if (!in_region && leg.final_error_m > goal_tolerance_m) {
-      char why[200];
-      std::snprintf(why, sizeof(why),
-                    "the controller says reached, but the robot is outside the goal region and "
-                    "%.2f m from the goal point (tolerance %.2f m)",
-                    leg.final_error_m, goal_tolerance_m);
-      off_goal = why;
-    }
-    Judge(reached_by_controller ? "" : "the controller says " + leg.task_outcome, off_goal, leg);
+    const std::string off_goal = OffTaskGoal(world, command, start, leg, goal_tolerance_m);
+    JudgeLeg(reached_by_controller ? "" : "the controller says " + leg.task_outcome, off_goal, leg);
     report.legs.push_back(leg);
   }
   return report;
@@ -417,11 +330,14 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     FeedbackLog log;
     // Navigate waits in PLANNING for the pose and the global planner's answer: nothing to
     // prepare here but the goal.
-    client.sendGoal(NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m),
-                    NavigateClient::SimpleDoneCallback(), NavigateClient::SimpleActiveCallback(),
-                    [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(fb); });
+    DoneTime done_time;
+    client.sendGoal(
+        NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m),
+        [&done_time](const actionlib::SimpleClientGoalState&,
+                     const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
+        NavigateClient::SimpleActiveCallback(),
+        [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(fb); });
     const bool done = WaitForEnd(client, started, leg_timeout_s);
-    leg.sim_time_s = (ros::Time::now() - started).toSec();
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     bool succeeded = false;
     if (done) {
@@ -432,23 +348,15 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
       client.cancelGoal();
       leg.navigate_outcome = TimedOutText(leg_timeout_s);
     }
-    ros::WallDuration(0.2).sleep();  // the last ground truth and bumper messages
+    leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
     {
       std::lock_guard<std::mutex> lock(log.mutex);
       leg.recoveries = log.recoveries;
       leg.global_path = log.path_summary;
     }
     Measure(watcher, place->pose.Position(), leg);
-    std::string off_goal;
-    if (leg.final_error_m > goal_tolerance_m) {
-      char why[160];
-      std::snprintf(why, sizeof(why),
-                    "Navigate succeeded on the estimate, but the robot is %.2f m from the target "
-                    "(tolerance %.2f m)",
-                    leg.final_error_m, goal_tolerance_m);
-      off_goal = why;
-    }
-    Judge(succeeded ? "" : "Navigate " + leg.navigate_outcome, off_goal, leg);
+    const std::string off_goal = OffPlace(leg, goal_tolerance_m);
+    JudgeLeg(succeeded ? "" : "Navigate " + leg.navigate_outcome, off_goal, leg);
     report.legs.push_back(leg);
   }
   return report;

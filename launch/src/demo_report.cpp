@@ -11,8 +11,10 @@
 #include <ros/callback_queue.h>
 #include <ros/package.h>
 #include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/NavigateActionGoal.h>
 #include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/SetDoorState.h>
+#include <spott_msgs/TaskActionGoal.h>
 
 #include "spott_map/local_map.h"
 #include "spott_map/ros/conversions.h"
@@ -123,6 +125,14 @@ DemoReport RunDemo(ros::NodeHandle& nh, const DemoOptions& options) {
 }
 
 DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
+  // The legs' goal topic, advertised now, seconds before the first goal: a recorder (the bag of
+  // ./spott run) connects to it meanwhile. The action client advertises it only when the legs
+  // begin, and a recorder then missed the first goal 1 run in 3. roscpp shares one publication
+  // per topic in a node, so the client later publishes through these connections.
+  const ros::Publisher early_goal_topic =
+      options.tasks.empty()
+          ? nh.advertise<spott_msgs::NavigateActionGoal>("harmonic_planner/navigate/goal", 10)
+          : nh.advertise<spott_msgs::TaskActionGoal>("task/goal", 10);
   const std::string& world_file = options.world_file;
   const std::vector<std::string>& doors_to_close = options.doors_to_close;
   const double timeout_s = options.timeout_s;
@@ -244,6 +254,15 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
     srv.request.door_id = door;
     srv.request.state = state;
     set_door.call(srv);
+  }
+  if (options.wait_for_recorder) {
+    // The server and the recorder: both connected before the first goal.
+    const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::ok() && early_goal_topic.getNumSubscribers() < 2 && ros::WallTime::now() < give_up)
+      ros::WallDuration(0.05).sleep();
+    if (early_goal_topic.getNumSubscribers() < 2)
+      ROS_WARN("demo_report: the recorder did not subscribe to %s within %.0f s",
+               early_goal_topic.getTopic().c_str(), timeout_s);
   }
   if (!options.tasks.empty()) {
     report.navigation = RunTasks(nh, *scenario.world, options.tasks, options.leg_timeout_s,

@@ -58,6 +58,8 @@ struct DemoOptions {
   std::vector<std::string> tasks;
   double leg_timeout_s = 300.0;    ///< Simulated time allowed per leg (s).
   double goal_tolerance_m = 0.25;  ///< Asked of Navigate and judged on ground truth (m).
+  /// A recorder (rosbag record) takes the legs' goals: the first leg waits until it is connected.
+  bool wait_for_recorder = false;
 };
 
 /// Runs the demo against the running stack: reads the world server's latched topics, closes

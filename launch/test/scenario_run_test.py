@@ -3,8 +3,8 @@
 # arguments, demo_report's parameters and robot_sim's fault schedule; demo.launch runs the whole
 # stack with them on this test's master, records a bag and writes the JSON report. The test
 # checks that the run was the scenario's (world, goals, each fault at its time in its leg), that
-# the JSON agrees with itself and with the bag, and that a bad scenario is refused with its line
-# and column. Python because the runner's parts are command-line programs.
+# the JSON agrees with itself and with the bag, that bag_report recomputes the same report from
+# the bag alone, and that a bad scenario is refused with its line and column. Python because the runner's parts are command-line programs.
 import json
 import os
 import subprocess
@@ -21,11 +21,11 @@ PKG = 'spott_launch'
 SCENARIO = 'hilare_sonar_dropout.yaml'
 
 
-def find_tool():
-    # The workspace's lib/spott_launch/scenario_tool, as rosrun finds it.
-    found = fiw.find_in_workspaces(['libexec'], project=PKG, path='scenario_tool')
+def find_tool(name='scenario_tool'):
+    # The workspace's lib/spott_launch/<name>, as rosrun finds it.
+    found = fiw.find_in_workspaces(['libexec'], project=PKG, path=name)
     if not found:
-        raise RuntimeError('scenario_tool not built')
+        raise RuntimeError(name + ' not built')
     return found[0]
 
 
@@ -94,6 +94,40 @@ class ScenarioRun(unittest.TestCase):
             last = truth[-1].pose.pose.position
             end = r['legs'][-1]['final_position']
             self.assertLess(((last.x - end[0]) ** 2 + (last.y - end[1]) ** 2) ** 0.5, 0.3)
+            # The report recomputed from the bag alone gives the live run's figures: the same
+            # legs and verdicts, the same faults, and each figure within what a message the
+            # live subscriber or the recorder dropped could change.
+            replayed = os.path.join(d, 'bag.json')
+            out = subprocess.run([find_tool('bag_report'), bag, '--json', replayed],
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 timeout=120)
+            self.assertEqual(out.returncode, 0, out.stdout[-2000:])
+            with open(replayed) as f:
+                b = json.load(f)
+            legs = lambda j: [(l['goal'], l['start_sim_s'], l['sim_time_s']) for l in j['legs']]
+            self.assertEqual(len(b['legs']), len(r['legs']), '%s\n%s' % (legs(b), legs(r)))
+            self.assertEqual(b['outcome'], r['outcome'])
+            self.assertEqual(b['faults'], r['faults'], '%s\n%s' % (legs(b), legs(r)))
+            for live, bag_leg in zip(r['legs'], b['legs']):
+                name = live['goal']
+                for key in ('goal', 'reached', 'outcome', 'navigate_outcome', 'bumper_hits',
+                            'lost_reports', 'recoveries'):
+                    self.assertEqual(bag_leg[key], live[key], '%s: %s' % (name, key))
+                self.assertAlmostEqual(bag_leg['start_sim_s'], live['start_sim_s'], delta=0.05)
+                self.assertAlmostEqual(bag_leg['sim_time_s'], live['sim_time_s'], delta=0.1)
+                self.assertAlmostEqual(bag_leg['path_length_m'], live['path_length_m'],
+                                       delta=0.01 * live['path_length_m'] + 0.02, msg=name)
+                self.assertAlmostEqual(bag_leg['min_wall_distance_m'],
+                                       live['min_wall_distance_m'], delta=0.01, msg=name)
+                for a, c in zip(bag_leg['final_position'], live['final_position']):
+                    self.assertAlmostEqual(a, c, delta=0.01, msg=name)
+                bl, ll = bag_leg['localization'], live['localization']
+                self.assertAlmostEqual(bl['estimates'], ll['estimates'],
+                                       delta=0.02 * ll['estimates'] + 1, msg=name)
+                self.assertAlmostEqual(bl['mean_position_error_m'], ll['mean_position_error_m'],
+                                       delta=0.005, msg=name)
+                self.assertAlmostEqual(bl['max_position_error_m'], ll['max_position_error_m'],
+                                       delta=0.01, msg=name)
 
 
 if __name__ == '__main__':

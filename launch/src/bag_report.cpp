@@ -1,0 +1,298 @@
+// bag_report: the run's report recomputed from a bag alone (./spott report BAG). The legs are
+// the demo's action goals and results in the bag (/task for the TR+ controller, else
+// harmonic_planner/navigate); each is measured by the same LegMetrics and judged by the same
+// rules as the live run, on the recorded ground truth, bumpers and localization statuses; the
+// world is the one /room_door_graph names. Prints the navigation report; --json FILE writes the
+// JSON report (FormatReportJson).
+//   bag_report BAG [--json FILE] [--worlds DIR] [--tolerance M]
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <spott_msgs/BumperRing.h>
+#include <spott_msgs/GlobalPath.h>
+#include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/NavigateActionFeedback.h>
+#include <spott_msgs/NavigateActionGoal.h>
+#include <spott_msgs/NavigateActionResult.h>
+#include <spott_msgs/RoomDoorGraph.h>
+#include <spott_msgs/TaskActionGoal.h>
+#include <spott_msgs/TaskActionResult.h>
+
+#include "demo_report.h"
+#include "spott_launch/leg_metrics.h"
+#include "spott_map/world_loader.h"
+#include "spott_move_base/conversions.h"
+
+namespace {
+
+using spott_launch::NavigationLeg;
+
+// A leg is closed once the bag has passed its window (messages are recorded a little after
+// their stamps).
+constexpr double kRecordLagS = 0.5;
+
+struct Options {
+  std::string bag, json, worlds = SPOTT_WORLDS_DIR;
+  double tolerance_m = 0.25;
+};
+
+struct OpenLeg {
+  NavigationLeg leg;
+  std::string goal_id;
+  spott_map::Pose2 start;
+  double end_s = -1.0;  ///< Simulated time of the result (-1: still running).
+  bool succeeded = false;
+  std::string refusal;
+  std::string path_summary, first_path, last_path;
+  bool recovering = false;
+};
+
+class Replay {
+ public:
+  Replay(const spott_map::World& world, bool by_task, double tolerance_m)
+      : metrics_(world), world_(world), by_task_(by_task), tolerance_m_(tolerance_m) {}
+
+  void Time(double t) {
+    if (open_ && open_->end_s >= 0.0 &&
+        t > open_->end_s + spott_launch::LegMetrics::kSettleS + kRecordLagS) {
+      Close();
+    }
+  }
+  void Truth(const nav_msgs::Odometry& m) {
+    const auto& q = m.pose.pose.orientation;
+    metrics_.OnTruth(m.header.stamp.toSec(), m.pose.pose.position.x, m.pose.pose.position.y,
+                     2.0 * std::atan2(q.z, q.w));
+  }
+  void Status(const spott_msgs::LocalizationStatus& m) {
+    metrics_.OnStatus(m.header.stamp.toSec(), m.estimate.x, m.estimate.y, m.estimate.theta, m.lost);
+  }
+  void Bumper(const spott_msgs::BumperRing& m) {
+    metrics_.OnBumper(m.header.stamp.toSec(),
+                      std::any_of(m.pressed.begin(), m.pressed.end(), [](bool b) { return b; }));
+  }
+  void Path(const spott_msgs::GlobalPath& m) {
+    if (!open_) return;
+    std::string text;
+    for (std::size_t i = 0; i < m.rooms.size(); ++i) {
+      text += (i == 0 ? "" : " -> ") + m.rooms[i];
+      if (i < m.doors.size()) text += " -> " + m.doors[i];
+    }
+    open_->last_path = text.empty() ? "(no path)" : text;
+    if (open_->first_path.empty() && m.header.stamp.toSec() >= open_->leg.start_sim_s)
+      open_->first_path = open_->last_path;
+  }
+  void Feedback(const spott_msgs::NavigateFeedback& fb) {
+    if (!open_) return;
+    if (open_->path_summary.empty() && !fb.global_path_summary.empty())
+      open_->path_summary = fb.global_path_summary;
+    const bool now = fb.state == spott_msgs::NavigateFeedback::RECOVERING;
+    if (now && !open_->recovering)
+      open_->leg.recoveries.push_back(fb.note.empty() ? "recovering" : fb.note);
+    open_->recovering = now;
+  }
+  void Open(double t, const std::string& goal_id, NavigationLeg leg) {
+    if (open_) Close();
+    open_.emplace();
+    open_->start = metrics_.pose();
+    open_->goal_id = goal_id;
+    open_->leg = std::move(leg);
+    open_->leg.start_sim_s = t;
+    metrics_.Reset(t);
+  }
+  OpenLeg* Current(const std::string& goal_id) {
+    return open_ && open_->goal_id == goal_id && open_->end_s < 0.0 ? &*open_ : nullptr;
+  }
+  void End(OpenLeg& leg, double t) {
+    leg.end_s = t;
+    metrics_.EndAt(t + spott_launch::LegMetrics::kSettleS);
+    leg.leg.sim_time_s = t - leg.leg.start_sim_s;
+  }
+  std::vector<NavigationLeg> Finish() {
+    if (open_) Close();
+    return legs_;
+  }
+
+ private:
+  void Close() {
+    OpenLeg& o = *open_;
+    NavigationLeg& leg = o.leg;
+    leg.global_path = o.path_summary;
+    if (leg.global_path.empty())
+      leg.global_path = o.first_path.empty() ? o.last_path : o.first_path;
+    metrics_.Measure(leg.target.Position(), leg);
+    if (o.end_s < 0.0) {
+      JudgeLeg("no result in the bag", "", leg);
+    } else if (by_task_) {
+      JudgeLeg(o.refusal, spott_launch::OffTaskGoal(world_, leg.task, o.start, leg, tolerance_m_),
+               leg);
+    } else {
+      JudgeLeg(o.refusal, spott_launch::OffPlace(leg, tolerance_m_), leg);
+    }
+    legs_.push_back(leg);
+    open_.reset();
+  }
+
+  spott_launch::LegMetrics metrics_;
+  const spott_map::World& world_;
+  bool by_task_;
+  double tolerance_m_;
+  std::optional<OpenLeg> open_;
+  std::vector<NavigationLeg> legs_;
+};
+
+int Usage(const std::string& why) {
+  std::cerr << "bag_report: " << why
+            << "\nusage: bag_report BAG [--json FILE] [--worlds DIR] [--tolerance M]\n";
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if ((arg == "--json" || arg == "--worlds" || arg == "--tolerance") && i + 1 < argc) {
+      const std::string value = argv[++i];
+      if (arg == "--json") o.json = value;
+      if (arg == "--worlds") o.worlds = value;
+      if (arg == "--tolerance") {
+        try {
+          o.tolerance_m = std::stod(value);
+        } catch (const std::exception&) {
+          return Usage("--tolerance: not a number: " + value);
+        }
+        if (!(o.tolerance_m > 0.0)) return Usage("--tolerance must be > 0 m");
+      }
+    } else if (!arg.empty() && arg[0] == '-') {
+      return Usage("unknown option " + arg);
+    } else if (o.bag.empty()) {
+      o.bag = arg;
+    } else {
+      return Usage("one bag only");
+    }
+  }
+  if (o.bag.empty()) return Usage("no bag");
+  ros::Time::init();
+  rosbag::Bag bag;
+  try {
+    bag.open(o.bag, rosbag::bagmode::Read);
+  } catch (const rosbag::BagException& e) {
+    std::cerr << o.bag << ": " << e.what() << "\n";
+    return 1;
+  }
+  // The world and the kind of run first.
+  std::string world_name;
+  bool by_task = false;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
+    if (m.getTopic() == "/room_door_graph" && world_name.empty()) {
+      if (auto g = m.instantiate<spott_msgs::RoomDoorGraph>()) world_name = g->world;
+    }
+    if (m.getTopic() == "/task/goal") by_task = true;
+  }
+  if (world_name.empty()) {
+    std::cerr << o.bag << ": no /room_door_graph naming the world: not a run of the stack\n";
+    return 1;
+  }
+  const auto world = spott_map::LoadWorldFile(o.worlds + "/" + world_name + ".yaml");
+  if (!world.ok()) {
+    std::cerr << spott_map::FormatErrors(world.errors) << "\n";
+    return 1;
+  }
+  spott_launch::DemoReport report;
+  report.ok = true;
+  report.world = world_name;
+  report.navigation.by_task = by_task;
+  report.navigation.ran = true;
+  Replay replay(*world.world, by_task, o.tolerance_m);
+  std::vector<std::string> features_before;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
+    const std::string& topic = m.getTopic();
+    replay.Time(m.getTime().toSec());
+    if (topic == "/sim/ground_truth") {
+      if (auto p = m.instantiate<nav_msgs::Odometry>()) replay.Truth(*p);
+    } else if (topic == "/localization_status") {
+      if (auto p = m.instantiate<spott_msgs::LocalizationStatus>()) replay.Status(*p);
+    } else if (topic == "/bumper") {
+      if (auto p = m.instantiate<spott_msgs::BumperRing>()) replay.Bumper(*p);
+    } else if (topic == "/global_path") {
+      if (auto p = m.instantiate<spott_msgs::GlobalPath>()) replay.Path(*p);
+    } else if (topic == "/harmonic_planner/navigate/feedback") {
+      if (auto p = m.instantiate<spott_msgs::NavigateActionFeedback>())
+        replay.Feedback(p->feedback);
+    } else if (topic == "/sim/faults") {
+      if (auto p = m.instantiate<diagnostic_msgs::DiagnosticArray>()) {
+        for (const auto& s : p->status) {
+          report.faults.push_back({p->header.stamp.toSec(), s.hardware_id, s.message,
+                                   s.level == diagnostic_msgs::DiagnosticStatus::OK});
+        }
+      }
+    } else if (by_task && topic == "/task/goal") {
+      if (auto p = m.instantiate<spott_msgs::TaskActionGoal>()) {
+        NavigationLeg leg;
+        leg.task = p->goal.command;
+        replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
+      }
+    } else if (by_task && topic == "/task/result") {
+      auto p = m.instantiate<spott_msgs::TaskActionResult>();
+      OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
+      if (!leg) continue;
+      const auto& r = p->result;
+      NavigationLeg& l = leg->leg;
+      l.interpretation = r.interpretation;
+      l.trace = r.trace;
+      const bool reached = r.outcome == "reached";
+      l.task_outcome = r.outcome + (r.message.empty() || reached ? "" : ": " + r.message);
+      l.navigate_outcome = l.task_outcome;
+      for (const std::string& id : r.features_added) {
+        if (std::find(features_before.begin(), features_before.end(), id) == features_before.end())
+          l.features_added.push_back(id);
+      }
+      features_before = r.features_added;
+      l.has_target = std::isfinite(r.goal.x) && std::isfinite(r.goal.y);
+      if (l.has_target) l.target = spott_map::Pose2{r.goal.x, r.goal.y, 0.0};
+      leg->refusal = reached ? "" : "the controller says " + l.task_outcome;
+      replay.End(*leg, p->header.stamp.toSec());
+    } else if (!by_task && topic == "/harmonic_planner/navigate/goal") {
+      if (auto p = m.instantiate<spott_msgs::NavigateActionGoal>()) {
+        NavigationLeg leg;
+        const auto& target = p->goal.target.pose;
+        leg.target = spott_map::Pose2{target.position.x, target.position.y,
+                                      2.0 * std::atan2(target.orientation.z, target.orientation.w)};
+        // The place's name: the world's place at the goal's position.
+        for (const auto& place : world.world->places) {
+          if ((place.pose.Position() - leg.target.Position()).norm() < 1e-6) leg.goal = place.name;
+        }
+        if (leg.goal.empty()) leg.goal = "(a point)";
+        replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
+      }
+    } else if (!by_task && topic == "/harmonic_planner/navigate/result") {
+      auto p = m.instantiate<spott_msgs::NavigateActionResult>();
+      OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
+      if (!leg) continue;
+      leg->leg.navigate_outcome = spott_move_base::TextOf(p->result);
+      const bool succeeded = p->result.outcome == spott_msgs::NavigateResult::SUCCEEDED;
+      leg->refusal = succeeded ? "" : "Navigate " + leg->leg.navigate_outcome;
+      replay.End(*leg, p->header.stamp.toSec());
+    }
+  }
+  report.navigation.legs = replay.Finish();
+  std::cout << spott_launch::FormatNavigation(report.navigation);
+  if (!o.json.empty()) {
+    std::ofstream out(o.json);
+    out << spott_launch::FormatReportJson(report, "");
+    if (!out) {
+      std::cerr << "bag_report: cannot write " << o.json << "\n";
+      return 1;
+    }
+  }
+  return 0;
+}

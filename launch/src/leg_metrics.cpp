@@ -1,0 +1,167 @@
+#include "spott_launch/leg_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "spott_map/geometry.h"
+#include "spott_map/map_database.h"
+#include "spott_map/map_feature.h"
+#include "spott_tr_plus/task_command.h"
+
+namespace spott_launch {
+
+void LegMetrics::Reset(double t) {
+  leg_start_ = t;
+  leg_end_ = std::numeric_limits<double>::infinity();
+  path_length_m_ = 0.0;
+  min_wall_distance_m_ = std::numeric_limits<double>::infinity();
+  bumper_hits_ = estimates_ = lost_reports_ = 0;
+  sum_position_error_m_ = max_position_error_m_ = 0.0;
+  sum_heading_error_rad_ = max_heading_error_rad_ = 0.0;
+  pending_.clear();
+}
+
+void LegMetrics::OnTruth(double t, double x, double y, double yaw) {
+  if (t > leg_end_) return;
+  const spott_map::Vec2 p(x, y);
+  const bool in_leg = t >= leg_start_;
+  if (have_pose_ && in_leg) path_length_m_ += (p - position_).norm();
+  position_ = p;
+  yaw_ = yaw;
+  have_pose_ = true;
+  // The last second of ground truth: at 4x real time the robot turns up to 15 degrees between
+  // a reading and the status computed from it.
+  if (!history_.empty() && t < history_.back().t) history_.clear();
+  history_.push_back(Sample{t, p, yaw});
+  while (history_.size() > 2 && t - history_.front().t > 1.0) history_.pop_front();
+  if (in_leg)
+    min_wall_distance_m_ = std::min(min_wall_distance_m_, DistanceToNearestSolid(*world_, p));
+  Evaluate(false);
+}
+
+void LegMetrics::OnStatus(double t, double estimate_x, double estimate_y, double estimate_yaw,
+                          bool lost) {
+  if (t < leg_start_ || t > leg_end_) return;
+  pending_.push_back(Status{t, estimate_x, estimate_y, estimate_yaw, lost});
+  Evaluate(false);
+}
+
+void LegMetrics::Evaluate(bool all) {
+  while (!pending_.empty() && have_pose_ && (all || history_.back().t >= pending_.front().t)) {
+    const Status& s = pending_.front();
+    spott_map::Vec2 truth = history_.front().position;
+    double truth_yaw = history_.front().yaw;
+    for (auto it = history_.rbegin(); it != history_.rend(); ++it) {
+      if (it->t <= s.t) {  // the newest truth not after the status' stamp
+        truth = it->position;
+        truth_yaw = it->yaw;
+        break;
+      }
+    }
+    const double e = (spott_map::Vec2(s.x, s.y) - truth).norm();
+    const double h = std::abs(spott_map::NormalizeAngle(s.yaw - truth_yaw));
+    ++estimates_;
+    lost_reports_ += s.lost ? 1 : 0;
+    sum_position_error_m_ += e;
+    sum_heading_error_rad_ += h;
+    max_position_error_m_ = std::max(max_position_error_m_, e);
+    max_heading_error_rad_ = std::max(max_heading_error_rad_, h);
+    pending_.pop_front();
+  }
+}
+
+void LegMetrics::OnBumper(double t, bool any_pressed) {
+  if (t < leg_start_ || t > leg_end_) return;
+  bumper_hits_ += any_pressed ? 1 : 0;
+}
+
+void LegMetrics::Measure(const spott_map::Vec2& target, NavigationLeg& leg) {
+  Evaluate(true);
+  leg.path_length_m = path_length_m_;
+  leg.final_error_m = (position_ - target).norm();
+  leg.final_position = position_;
+  leg.min_wall_distance_m = min_wall_distance_m_;
+  leg.bumper_hits = bumper_hits_;
+  leg.estimates = estimates_;
+  leg.lost_reports = lost_reports_;
+  if (estimates_ > 0) {
+    leg.mean_position_error_m = sum_position_error_m_ / estimates_;
+    leg.mean_heading_error_rad = sum_heading_error_rad_ / estimates_;
+    leg.max_position_error_m = max_position_error_m_;
+    leg.max_heading_error_rad = max_heading_error_rad_;
+  }
+}
+
+double DistanceToNearestSolid(const spott_map::World& world, const spott_map::Vec2& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const spott_map::Wall& wall : world.walls) {  // boxes with flat ends, as simulated
+    best = std::min(
+        best, spott_map::MakeSegment(wall.id, wall.segment, "wall", wall.thickness).DistanceTo(p));
+  }
+  for (const spott_map::WorldObject& object : world.objects) {
+    const spott_map::Polygon footprint = object.Footprint();
+    const double d =
+        spott_map::PointInPolygon(p, footprint) ? 0.0 : spott_map::DistanceToBoundary(p, footprint);
+    best = std::min(best, d);
+  }
+  return best;
+}
+
+void JudgeLeg(const std::string& refusal, const std::string& off_goal, NavigationLeg& leg) {
+  leg.reached = false;
+  if (!refusal.empty()) {
+    leg.outcome = "not reached: " + refusal;
+  } else if (!off_goal.empty()) {
+    leg.outcome = "not reached: " + off_goal;
+  } else if (leg.bumper_hits > 0) {
+    leg.outcome = "not reached: at the goal, but after " + std::to_string(leg.bumper_hits) +
+                  " bumper contacts";
+  } else {
+    leg.outcome = "reached";
+    leg.reached = true;
+  }
+}
+
+std::string OffPlace(const NavigationLeg& leg, double tolerance_m) {
+  if (leg.final_error_m <= tolerance_m) return "";
+  char why[160];
+  std::snprintf(why, sizeof(why),
+                "Navigate succeeded on the estimate, but the robot is %.2f m from the target "
+                "(tolerance %.2f m)",
+                leg.final_error_m, tolerance_m);
+  return why;
+}
+
+std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
+                        const spott_map::Pose2& start, const NavigationLeg& leg,
+                        double tolerance_m) {
+  // The goal regions are judged as the controller sees them (spott_tr_plus task
+  // interpretation) but on the CAD map of the world file and the ground truth.
+  const spott_map::MapDatabase cad = spott_map::MapDatabase::FromWorld(world);
+  const spott_tr_plus::PlaceResolver resolve = spott_tr_plus::MapPlaceResolver(cad, world.places);
+  bool in_region = false;
+  std::string region_error;
+  const auto parsed = spott_tr_plus::ParseTaskCommand(command);
+  if (parsed.ok()) {
+    const auto in =
+        spott_tr_plus::InterpretTask(*parsed.command, start.x, start.y, start.yaw,
+                                     spott_tr_plus::TaskInterpretationParameters{}, resolve);
+    if (in.ok() && in.interpretation->goal) {
+      in_region = in.interpretation->goal->Contains(leg.final_position.x(), leg.final_position.y());
+    } else {
+      region_error = "the command names no goal region";
+    }
+  }
+  if (!leg.has_target || !region_error.empty())
+    return region_error.empty() ? "no goal point" : region_error;
+  if (in_region || leg.final_error_m <= tolerance_m) return "";
+  char why[200];
+  std::snprintf(why, sizeof(why),
+                "the controller says reached, but the robot is outside the goal region and "
+                "%.2f m from the goal point (tolerance %.2f m)",
+                leg.final_error_m, tolerance_m);
+  return why;
+}
+
+}  // namespace spott_launch

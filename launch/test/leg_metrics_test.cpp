@@ -1,0 +1,92 @@
+// LegMetrics: the figures of a leg depend on the messages' stamps, not on the order they arrive
+// in, so that a live run and its bag (bag_report) give the same report.
+#include "spott_launch/leg_metrics.h"
+
+#include <gtest/gtest.h>
+
+#include "spott_map/world_loader.h"
+
+namespace spott_launch {
+namespace {
+
+spott_map::World Corridor() {
+  const auto loaded = spott_map::LoadWorldFromString(R"(
+world: {name: corridor}
+walls: {from_rooms: true, thickness: 0.1}
+rooms:
+  - {id: hall, kind: hallway, polygon: [[0, 0], [10, 0], [10, 2], [0, 2]]}
+robot_start: {pose: [1, 1, 0]}
+)",
+                                                     "corridor.yaml");
+  EXPECT_TRUE(loaded.ok()) << spott_map::FormatErrors(loaded.errors);
+  return *loaded.world;
+}
+
+NavigationLeg Measured(LegMetrics& m) {
+  NavigationLeg leg;
+  m.Measure({5.0, 1.0}, leg);
+  return leg;
+}
+
+TEST(LegMetrics, AStatusMeetsTheTruthAtItsStampWhicheverComesFirst) {
+  const spott_map::World world = Corridor();
+  // The robot drives along the corridor at 1 m/s, truth every 0.1 s; a status stamped 0.55 s
+  // estimates (0.5, 1): right at the truth of 0.5 s, 0.05 m behind the truth of 0.6 s.
+  LegMetrics status_late(world), status_early(world);
+  for (LegMetrics* m : {&status_late, &status_early}) m->Reset(0.0);
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 0.1 * i;
+    if (i == 7) status_late.OnStatus(0.55, 0.5, 1.0, 0.0, false);
+    if (i == 3) status_early.OnStatus(0.55, 0.5, 1.0, 0.0, false);
+    for (LegMetrics* m : {&status_late, &status_early}) m->OnTruth(t, t, 1.0, 0.0);
+  }
+  const NavigationLeg late = Measured(status_late), early = Measured(status_early);
+  EXPECT_EQ(late.estimates, 1);
+  EXPECT_EQ(early.estimates, 1);
+  EXPECT_NEAR(late.max_position_error_m, 0.0, 1e-9);
+  EXPECT_NEAR(early.max_position_error_m, 0.0, 1e-9);
+}
+
+TEST(LegMetrics, OnlyMessagesStampedWithinTheLegCount) {
+  const spott_map::World world = Corridor();
+  LegMetrics m(world);
+  m.OnTruth(0.0, 1.0, 1.0, 0.0);
+  m.OnTruth(1.0, 2.0, 1.0, 0.0);  // before the leg: the robot's pose, not its path
+  m.Reset(1.5);
+  m.OnBumper(1.4, true);          // before
+  m.OnTruth(2.0, 3.0, 1.0, 0.0);  // the path continues from (2, 1)
+  m.OnBumper(2.0, true);
+  m.EndAt(3.0);
+  m.OnTruth(3.0, 4.0, 1.0, 0.0);
+  m.OnBumper(3.5, true);          // after
+  m.OnTruth(4.0, 9.0, 1.9, 0.0);  // after: neither path nor clearance
+  m.OnStatus(3.5, 0.0, 0.0, 0.0, true);
+  const NavigationLeg leg = Measured(m);
+  EXPECT_NEAR(leg.path_length_m, 2.0, 1e-9);
+  EXPECT_EQ(leg.bumper_hits, 1);
+  EXPECT_EQ(leg.estimates, 0);
+  EXPECT_NEAR(leg.final_position.x(), 4.0, 1e-9);
+  EXPECT_NEAR(leg.final_error_m, 1.0, 1e-9);
+  EXPECT_GT(leg.min_wall_distance_m, 0.5);  // the corridor's centre line, 1 m from each wall
+}
+
+TEST(LegMetrics, AVerdictNeedsTheDriversWordTheGoalAndNoContact) {
+  NavigationLeg leg;
+  leg.final_error_m = 0.1;
+  JudgeLeg("", OffPlace(leg, 0.25), leg);
+  EXPECT_TRUE(leg.reached);
+  leg.final_error_m = 0.3;
+  JudgeLeg("", OffPlace(leg, 0.25), leg);
+  EXPECT_FALSE(leg.reached);
+  EXPECT_NE(leg.outcome.find("0.30 m from the target"), std::string::npos) << leg.outcome;
+  leg.final_error_m = 0.1;
+  leg.bumper_hits = 2;
+  JudgeLeg("", OffPlace(leg, 0.25), leg);
+  EXPECT_FALSE(leg.reached);
+  leg.bumper_hits = 0;
+  JudgeLeg("Navigate failed: blocked", "", leg);
+  EXPECT_EQ(leg.outcome, "not reached: Navigate failed: blocked");
+}
+
+}  // namespace
+}  // namespace spott_launch
