@@ -87,6 +87,20 @@ class CommandLine(unittest.TestCase):
                              timeout=120)
         self.assertEqual(out.returncode, 0, out.stdout[-500:])
 
+    def test_replay_and_demo_launch_files_parse_with_a_scenarios_arguments(self):
+        # roslaunch loads the rosparam files while parsing: real ones.
+        scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', 'bonn_kidnap.yaml')
+        config = os.path.join(rospkg.RosPack().get_path(PKG), 'config', 'demo_cim_office.yaml')
+        for launch, args in (('replay.launch', ['bag:=/tmp/run.bag']),
+                             ('demo.launch', ['bag:=/tmp/run.bag', 'faults_file:=' + scenario,
+                                              'params_file:=' + config,
+                                              'start_pose:=1 2 0.5'])):
+            out = subprocess.run(['roslaunch', '--nodes', 'spott_launch', launch] + args,
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 timeout=120)
+            self.assertEqual(out.returncode, 0, launch + ': ' + out.stdout[-800:])
+            self.assertIn('/record' if launch == 'demo.launch' else '/play', out.stdout)
+
 
 if __name__ == '__main__':
     rospy.init_node('command_line_test')
