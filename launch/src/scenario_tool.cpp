@@ -1,14 +1,16 @@
 // scenario_tool: checks a scenario file and writes what `./spott run` launches it with.
-//   scenario_tool FILE [--worlds DIR] [--out DIR]
+//   scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]
 // Errors go to stderr as "file:line:column: message" (exit 1); usage errors exit 2. With --out
 // it writes DIR/launch_args (roslaunch arguments, one per line), DIR/demo_params.yaml
 // (demo_report's parameters), DIR/faults.yaml (robot_sim's ~faults, when the scenario has any)
-// and DIR/time_limit_s. ROS-free.
+// and DIR/time_limit_s. --seed replaces the scenario's seed (a suite runs one file with many).
+// ROS-free.
 #include <dirent.h>
 
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,7 +22,7 @@ namespace {
 
 int Usage(const std::string& why) {
   std::cerr << "scenario_tool: " << why
-            << "\nusage: scenario_tool FILE [--worlds DIR] [--out DIR]\n";
+            << "\nusage: scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]\n";
   return 2;
 }
 
@@ -63,12 +65,20 @@ bool Write(const std::string& path, const std::string& text) {
 
 int main(int argc, char** argv) {
   std::string file, worlds = SPOTT_WORLDS_DIR, out_dir;
+  std::optional<int> seed;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if ((arg == "--worlds" || arg == "--out") && i + 1 < argc) {
       (arg == "--worlds" ? worlds : out_dir) = argv[++i];
+    } else if (arg == "--seed" && i + 1 < argc) {
+      const std::string value = argv[++i];
+      if (value.empty() || value.size() > 9 ||
+          value.find_first_not_of("0123456789") != std::string::npos) {
+        return Usage("--seed must be a whole number from 0 to 999999999, not '" + value + "'");
+      }
+      seed = std::stoi(value);
     } else if (arg == "-h" || arg == "--help") {
-      std::cout << "usage: scenario_tool FILE [--worlds DIR] [--out DIR]\n";
+      std::cout << "usage: scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]\n";
       return 0;
     } else if (!arg.empty() && arg[0] == '-') {
       return Usage("unknown option " + arg);
@@ -91,7 +101,8 @@ int main(int argc, char** argv) {
     std::cerr << spott_map::FormatErrors(parsed.errors) << "\n";
     return 1;
   }
-  const spott_launch::Scenario& s = *parsed.scenario;
+  spott_launch::Scenario s = *parsed.scenario;
+  if (seed) s.seed = *seed;
   if (!Known(s.world, "world", worlds) || !Known(s.robot, "robot", SPOTT_ROBOTS_DIR)) return 1;
   const auto world = spott_map::LoadWorldFile(worlds + "/" + s.world.text + ".yaml");
   if (!world.ok()) {

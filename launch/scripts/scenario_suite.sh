@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The scenario suite (issue 20): every scenario of launch/scenarios/ (or those named) run with
+# seeds 1..SEEDS through ./spott run (no bags), and a table per scenario from the runs'
+# report.json: runs that succeeded (every leg reached on the ground truth without contact, every
+# fault applied), mean simulated and wall time, mean path length, bumper contacts, the largest
+# localization error. Writes the table to OUT/suite.md (OUT: runs/suite-<UTC time>).
+# Usage: launch/scripts/scenario_suite.sh [SEEDS (10)] [SCENARIO.yaml...]
+# ./spott bench scenarios [SEEDS] runs it.
+set -uo pipefail
+export PATH="/usr/bin:$PATH"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+SEEDS="${1:-10}"
+[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "scenario_suite: SEEDS must be a positive integer" >&2; exit 2; }
+shift $(( $# > 0 ? 1 : 0 ))
+scenarios=("$@")
+[[ ${#scenarios[@]} -gt 0 ]] || scenarios=("$ROOT"/launch/scenarios/*.yaml)
+OUT="${SUITE_OUT:-$ROOT/runs/suite-$(date -u +%Y%m%dT%H%M%SZ)}"
+mkdir -p "$OUT"
+echo "scenario suite: ${#scenarios[@]} scenarios x $SEEDS seeds into $OUT; load $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+for scenario in "${scenarios[@]}"; do
+  name=$(basename "$scenario" .yaml)
+  for ((seed = 1; seed <= SEEDS; ++seed)); do
+    start=$SECONDS
+    "$ROOT/spott" run "$scenario" --seed "$seed" --no-bag --out "$OUT/$name/seed-$seed" \
+      > "$OUT/$name-seed-$seed.log" 2>&1
+    echo "$name seed $seed: $(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['outcome'])" \
+      "$OUT/$name/seed-$seed/report.json" 2>/dev/null || echo 'no report') ($((SECONDS - start)) s)" >&2
+  done
+done
+python3 - "$OUT" "$SEEDS" "$(cut -d' ' -f1-3 /proc/loadavg)" > "$OUT/suite.md" <<'PY'
+import glob, json, os, sys
+out, seeds, load = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+print('| scenario | succeeded | mean simulated time (s) | mean wall time (s) | mean path (m) | bumper contacts | max localization error (m) | failures |')
+print('|---|---|---|---|---|---|---|---|')
+for d in sorted(glob.glob(os.path.join(out, '*/'))):
+    name = os.path.basename(d.rstrip('/'))
+    reports = []
+    for s in range(1, seeds + 1):
+        try:
+            with open(os.path.join(d, 'seed-%d' % s, 'report.json')) as f:
+                reports.append((s, json.load(f)))
+        except (OSError, ValueError):
+            reports.append((s, None))
+    ok = [r for _, r in reports if r and r['outcome'] == 'succeeded']
+    done = [r for _, r in reports if r and r.get('totals')]
+    mean = lambda key: sum(r['totals'][key] for r in done) / len(done) if done else float('nan')
+    wall = sum(r['elapsed_wall_s'] for r in done) / len(done) if done else float('nan')
+    contacts = sum(r['totals']['bumper_hits'] for r in done)
+    err = max((r['totals']['max_position_error_m'] for r in done), default=float('nan'))
+    failed = ', '.join('seed %d (%s)' % (s, r['outcome'] if r else 'no report')
+                       for s, r in reports if not r or r['outcome'] != 'succeeded')
+    print('| %s | %d of %d | %.1f | %.1f | %.1f | %d | %.2f | %s |' % (
+        name, len(ok), len(reports), mean('sim_time_s'), wall, mean('path_length_m'), contacts,
+        err, failed or '-'))
+print()
+print('load average at the end: %s' % load)
+PY
+cat "$OUT/suite.md"
