@@ -123,14 +123,22 @@ void JudgeLeg(const std::string& refusal, const std::string& off_goal, Navigatio
   }
 }
 
+namespace {
+
+// "<claim>, but the robot is <where> 0.31 m from the <goal> (tolerance 0.25 m)".
+std::string OffBy(const char* claim, const char* where, const char* goal, double error_m,
+                  double tolerance_m) {
+  char why[240];
+  std::snprintf(why, sizeof(why), "%s, but the robot is %s%.2f m from the %s (tolerance %.2f m)",
+                claim, where, error_m, goal, tolerance_m);
+  return why;
+}
+
+}  // namespace
+
 std::string OffPlace(const NavigationLeg& leg, double tolerance_m) {
   if (leg.final_error_m <= tolerance_m) return "";
-  char why[160];
-  std::snprintf(why, sizeof(why),
-                "Navigate succeeded on the estimate, but the robot is %.2f m from the target "
-                "(tolerance %.2f m)",
-                leg.final_error_m, tolerance_m);
-  return why;
+  return OffBy("Navigate succeeded on the estimate", "", "target", leg.final_error_m, tolerance_m);
 }
 
 std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
@@ -156,12 +164,8 @@ std::string OffTaskGoal(const spott_map::World& world, const std::string& comman
   if (!leg.has_target || !region_error.empty())
     return region_error.empty() ? "no goal point" : region_error;
   if (in_region || leg.final_error_m <= tolerance_m) return "";
-  char why[200];
-  std::snprintf(why, sizeof(why),
-                "the controller says reached, but the robot is outside the goal region and "
-                "%.2f m from the goal point (tolerance %.2f m)",
-                leg.final_error_m, tolerance_m);
-  return why;
+  return OffBy("the controller says reached", "outside the goal region and ", "goal point",
+               leg.final_error_m, tolerance_m);
 }
 
 }  // namespace spott_launch

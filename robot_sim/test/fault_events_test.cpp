@@ -10,8 +10,8 @@
 namespace robot_sim {
 namespace {
 
-TEST(FaultScheduleTest, ParsesEveryKindSortedByTime) {
-  const auto r = ParseFaultSchedule(R"(
+// One event of every kind, out of time order.
+constexpr const char* kEveryKind = R"(
 faults:
   - {time: 30, kind: kidnap, pose: [0, 0, -1.22], relative: true}
   - {time: 5, kind: door, door: d1, state: open}
@@ -20,8 +20,10 @@ faults:
   - {time: 12, kind: slip, linear_scale: 0.8, duration: 3}
   - {time: 13, kind: add_obstacle, id: box, shape: cylinder, pose: [3, 2, 0], size: [0.5, 0.5, 1]}
   - {time: 14, kind: remove_obstacle, id: box}
-)",
-                                    "schedule.yaml");
+)";
+
+TEST(FaultScheduleTest, ParsesEveryKindSortedByTime) {
+  const auto r = ParseFaultSchedule(kEveryKind, "schedule.yaml");
   ASSERT_TRUE(r.ok()) << spott_map::FormatErrors(r.errors);
   ASSERT_EQ(r.events.size(), 7u);
   EXPECT_EQ(r.events[0].kind, FaultEvent::Kind::kDoor);
@@ -37,29 +39,20 @@ faults:
 }
 
 TEST(FaultScheduleTest, EveryEventIsDescribedInTheUsersWords) {
-  const auto r = ParseFaultSchedule(R"(
-faults:
-  - {time: 1, kind: kidnap, pose: [0, 0, -1.22], relative: true}
-  - {time: 2, kind: door, door: d1, state: closed}
-  - {time: 3, kind: sensor, sensor: sonar/3, fault: dropout, duration: 2}
-  - {time: 4, kind: sensor, sensor: laser, fault: noise, noise_stddev: 0.2}
-  - {time: 5, kind: slip, linear_scale: 0.8, duration: 3}
-  - {time: 6, kind: add_obstacle, id: box, shape: cylinder, pose: [3, 2, 0], size: [0.5, 0.5, 1]}
-  - {time: 7, kind: remove_obstacle, id: box}
-)",
-                                    "schedule.yaml");
+  const auto r = ParseFaultSchedule(kEveryKind, "schedule.yaml");
   ASSERT_TRUE(r.ok()) << spott_map::FormatErrors(r.errors);
   const std::vector<std::string> expected = {
-      "kidnap by (0.00 m, 0.00 m, -1.22 rad) in the robot frame",
-      "door d1 closed",
+      // in time order
+      "door d1 open",
       "sensor sonar/3 dropout for 2 s",
       "sensor laser noise (0.200 m) until cleared",
       "wheel slip x0.80 linear, x1.00 angular for 3.0 s",
       "cylinder box 0.50 x 0.50 x 1.00 m added at (3.00, 2.00)",
-      "obstacle box removed"};
+      "obstacle box removed",
+      "kidnap by (0.00 m, 0.00 m, -1.22 rad) in the robot frame"};
   ASSERT_EQ(r.events.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(Describe(r.events[i]), expected[i]);
-  EXPECT_STREQ(KindName(r.events[5].kind), "add_obstacle");
+  EXPECT_STREQ(KindName(r.events[4].kind), "add_obstacle");
 }
 
 TEST(FaultScheduleTest, ErrorsNameLineColumnAndTheProblem) {
