@@ -27,6 +27,7 @@
 #include <spott_msgs/TaskActionResult.h>
 
 #include "demo_report.h"
+#include "leg_messages.h"
 #include "spott_launch/leg_metrics.h"
 #include "spott_map/world_loader.h"
 #include "spott_move_base/conversions.h"
@@ -51,8 +52,8 @@ struct OpenLeg {
   double end_s = -1.0;  ///< Simulated time of the result (-1: still running).
   bool succeeded = false;
   std::string refusal;
-  std::string path_summary, first_path, last_path;
-  bool recovering = false;
+  spott_launch::NavigateFeedbackLog feedback;
+  std::string first_path, last_path;
 };
 
 class Replay {
@@ -80,23 +81,12 @@ class Replay {
   }
   void Path(const spott_msgs::GlobalPath& m) {
     if (!open_) return;
-    std::string text;
-    for (std::size_t i = 0; i < m.rooms.size(); ++i) {
-      text += (i == 0 ? "" : " -> ") + m.rooms[i];
-      if (i < m.doors.size()) text += " -> " + m.doors[i];
-    }
-    open_->last_path = text.empty() ? "(no path)" : text;
+    open_->last_path = spott_launch::GlobalPathText(m);
     if (open_->first_path.empty() && m.header.stamp.toSec() >= open_->leg.start_sim_s)
       open_->first_path = open_->last_path;
   }
   void Feedback(const spott_msgs::NavigateFeedback& fb) {
-    if (!open_) return;
-    if (open_->path_summary.empty() && !fb.global_path_summary.empty())
-      open_->path_summary = fb.global_path_summary;
-    const bool now = fb.state == spott_msgs::NavigateFeedback::RECOVERING;
-    if (now && !open_->recovering)
-      open_->leg.recoveries.push_back(fb.note.empty() ? "recovering" : fb.note);
-    open_->recovering = now;
+    if (open_) open_->feedback.On(fb);
   }
   void Open(double t, const std::string& goal_id, NavigationLeg leg) {
     if (open_) Close();
@@ -124,7 +114,8 @@ class Replay {
   void Close() {
     OpenLeg& o = *open_;
     NavigationLeg& leg = o.leg;
-    leg.global_path = o.path_summary;
+    leg.recoveries = o.feedback.recoveries;
+    leg.global_path = o.feedback.path_summary;
     if (leg.global_path.empty())
       leg.global_path = o.first_path.empty() ? o.last_path : o.first_path;
     metrics_.Measure(leg.target.Position(), leg);
@@ -230,10 +221,8 @@ int main(int argc, char** argv) {
         replay.Feedback(p->feedback);
     } else if (topic == "/sim/faults") {
       if (auto p = m.instantiate<diagnostic_msgs::DiagnosticArray>()) {
-        for (const auto& s : p->status) {
-          report.faults.push_back({p->header.stamp.toSec(), s.hardware_id, s.message,
-                                   s.level == diagnostic_msgs::DiagnosticStatus::OK});
-        }
+        const auto faults = spott_launch::FaultsFrom(*p);
+        report.faults.insert(report.faults.end(), faults.begin(), faults.end());
       }
     } else if (by_task && topic == "/task/goal") {
       if (auto p = m.instantiate<spott_msgs::TaskActionGoal>()) {
@@ -245,20 +234,9 @@ int main(int argc, char** argv) {
       auto p = m.instantiate<spott_msgs::TaskActionResult>();
       OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
       if (!leg) continue;
-      const auto& r = p->result;
       NavigationLeg& l = leg->leg;
-      l.interpretation = r.interpretation;
-      l.trace = r.trace;
-      const bool reached = r.outcome == "reached";
-      l.task_outcome = r.outcome + (r.message.empty() || reached ? "" : ": " + r.message);
+      const bool reached = spott_launch::ApplyTaskResult(p->result, features_before, l);
       l.navigate_outcome = l.task_outcome;
-      for (const std::string& id : r.features_added) {
-        if (std::find(features_before.begin(), features_before.end(), id) == features_before.end())
-          l.features_added.push_back(id);
-      }
-      features_before = r.features_added;
-      l.has_target = std::isfinite(r.goal.x) && std::isfinite(r.goal.y);
-      if (l.has_target) l.target = spott_map::Pose2{r.goal.x, r.goal.y, 0.0};
       leg->refusal = reached ? "" : "the controller says " + l.task_outcome;
       replay.End(*leg, p->header.stamp.toSec());
     } else if (!by_task && topic == "/harmonic_planner/navigate/goal") {

@@ -1,5 +1,7 @@
 #include "demo_navigation.h"
 
+#include "leg_messages.h"
+
 #include <actionlib/client/simple_action_client.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
@@ -67,30 +69,20 @@ struct LegWatcher {
         std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
   }
   void OnGlobalPath(const spott_msgs::GlobalPath& path) {
-    std::string text;
-    for (std::size_t i = 0; i < path.rooms.size(); ++i) {
-      text += (i == 0 ? "" : " -> ") + path.rooms[i];
-      if (i < path.doors.size()) text += " -> " + path.doors[i];
-    }
+    const std::string text = GlobalPathText(path);
     std::lock_guard<std::mutex> lock(mutex);
-    last_path = text.empty() ? "(no path)" : text;
+    last_path = text;
     if (global_path.empty() && path.header.stamp >= goal_time) global_path = last_path;
   }
 };
 
-// What Navigate's feedback told during a leg.
+// Navigate's feedback during a leg, from the action client's thread.
 struct FeedbackLog {
   std::mutex mutex;
-  std::string path_summary;
-  std::vector<std::string> recoveries;
-  bool recovering = false;
-  void On(const spott_msgs::NavigateFeedbackConstPtr& fb) {
+  NavigateFeedbackLog log;
+  void On(const spott_msgs::NavigateFeedback& fb) {
     std::lock_guard<std::mutex> lock(mutex);
-    if (path_summary.empty() && !fb->global_path_summary.empty())
-      path_summary = fb->global_path_summary;
-    const bool now = fb->state == spott_msgs::NavigateFeedback::RECOVERING;
-    if (now && !recovering) recoveries.push_back(fb->note.empty() ? "recovering" : fb->note);
-    recovering = now;
+    log.On(fb);
   }
 };
 
@@ -218,9 +210,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
   // What Navigate tells the TR+ controller (recoveries, the global path), overheard.
   watch.subscribers.push_back(watch.nh.subscribe<spott_msgs::NavigateActionFeedback>(
       "harmonic_planner/navigate/feedback", 20,
-      [&log](const spott_msgs::NavigateActionFeedback::ConstPtr& m) {
-        log.On(boost::make_shared<const spott_msgs::NavigateFeedback>(m->feedback));
-      }));
+      [&log](const spott_msgs::NavigateActionFeedback::ConstPtr& m) { log.On(m->feedback); }));
   watch.Start();
 
   TaskClient client(nh, "task", true);
@@ -240,9 +230,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     watcher.Reset(started);
     {
       std::lock_guard<std::mutex> lock(log.mutex);
-      log.path_summary.clear();
-      log.recoveries.clear();
-      log.recovering = false;
+      log.log = NavigateFeedbackLog{};
     }
     spott_msgs::TaskGoal goal;
     goal.command = command;
@@ -261,23 +249,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     }
     leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
     bool reached_by_controller = false;
-    if (result) {
-      leg.interpretation = result->interpretation;
-      leg.trace = result->trace;
-      reached_by_controller = result->outcome == "reached";
-      leg.task_outcome =
-          result->outcome +
-          (result->message.empty() || reached_by_controller ? "" : ": " + result->message);
-      for (const std::string& id : result->features_added) {
-        if (std::find(features_before.begin(), features_before.end(), id) ==
-            features_before.end()) {
-          leg.features_added.push_back(id);
-        }
-      }
-      features_before = result->features_added;
-      leg.has_target = std::isfinite(result->goal.x) && std::isfinite(result->goal.y);
-      if (leg.has_target) leg.target = spott_map::Pose2{result->goal.x, result->goal.y, 0.0};
-    }
+    if (result) reached_by_controller = ApplyTaskResult(*result, features_before, leg);
     if (!done) {
       leg.task_outcome = TimedOutText(leg_timeout_s);
     } else if (!result) {
@@ -286,8 +258,8 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     leg.navigate_outcome = leg.task_outcome;
     {
       std::lock_guard<std::mutex> lock(log.mutex);
-      leg.recoveries = log.recoveries;
-      leg.global_path = log.path_summary;
+      leg.recoveries = log.log.recoveries;
+      leg.global_path = log.log.path_summary;
     }
     Measure(watcher, leg.target.Position(), leg);
     // The goal region of the command from where the robot really started.
@@ -336,7 +308,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
         [&done_time](const actionlib::SimpleClientGoalState&,
                      const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
         NavigateClient::SimpleActiveCallback(),
-        [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(fb); });
+        [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(*fb); });
     const bool done = WaitForEnd(client, started, leg_timeout_s);
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     bool succeeded = false;
@@ -351,8 +323,8 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
     {
       std::lock_guard<std::mutex> lock(log.mutex);
-      leg.recoveries = log.recoveries;
-      leg.global_path = log.path_summary;
+      leg.recoveries = log.log.recoveries;
+      leg.global_path = log.log.path_summary;
     }
     Measure(watcher, place->pose.Position(), leg);
     const std::string off_goal = OffPlace(leg, goal_tolerance_m);

@@ -1,5 +1,7 @@
 #include "demo_report.h"
 
+#include "leg_messages.h"
+
 #include <algorithm>
 #include <iomanip>
 #include <mutex>
@@ -101,11 +103,9 @@ class FaultLog {
 
  private:
   void OnFault(const diagnostic_msgs::DiagnosticArray& msg) {
+    const auto faults = FaultsFrom(msg);
     std::lock_guard<std::mutex> lock(mutex_);
-    for (const auto& status : msg.status) {
-      faults_.push_back({msg.header.stamp.toSec(), status.hardware_id, status.message,
-                         status.level == diagnostic_msgs::DiagnosticStatus::OK});
-    }
+    faults_.insert(faults_.end(), faults.begin(), faults.end());
   }
   ros::NodeHandle nh_;
   ros::CallbackQueue queue_;

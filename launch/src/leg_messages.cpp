@@ -1,0 +1,52 @@
+#include "leg_messages.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace spott_launch {
+
+std::string GlobalPathText(const spott_msgs::GlobalPath& path) {
+  std::string text;
+  for (std::size_t i = 0; i < path.rooms.size(); ++i) {
+    text += (i == 0 ? "" : " -> ") + path.rooms[i];
+    if (i < path.doors.size()) text += " -> " + path.doors[i];
+  }
+  return text.empty() ? "(no path)" : text;
+}
+
+void NavigateFeedbackLog::On(const spott_msgs::NavigateFeedback& feedback) {
+  if (path_summary.empty() && !feedback.global_path_summary.empty())
+    path_summary = feedback.global_path_summary;
+  const bool now = feedback.state == spott_msgs::NavigateFeedback::RECOVERING;
+  if (now && !recovering)
+    recoveries.push_back(feedback.note.empty() ? "recovering" : feedback.note);
+  recovering = now;
+}
+
+bool ApplyTaskResult(const spott_msgs::TaskResult& result,
+                     std::vector<std::string>& features_before, NavigationLeg& leg) {
+  leg.interpretation = result.interpretation;
+  leg.trace = result.trace;
+  const bool reached = result.outcome == "reached";
+  leg.task_outcome =
+      result.outcome + (result.message.empty() || reached ? "" : ": " + result.message);
+  for (const std::string& id : result.features_added) {
+    if (std::find(features_before.begin(), features_before.end(), id) == features_before.end())
+      leg.features_added.push_back(id);
+  }
+  features_before = result.features_added;
+  leg.has_target = std::isfinite(result.goal.x) && std::isfinite(result.goal.y);
+  if (leg.has_target) leg.target = spott_map::Pose2{result.goal.x, result.goal.y, 0.0};
+  return reached;
+}
+
+std::vector<DemoReport::Fault> FaultsFrom(const diagnostic_msgs::DiagnosticArray& message) {
+  std::vector<DemoReport::Fault> faults;
+  for (const auto& status : message.status) {
+    faults.push_back({message.header.stamp.toSec(), status.hardware_id, status.message,
+                      status.level == diagnostic_msgs::DiagnosticStatus::OK});
+  }
+  return faults;
+}
+
+}  // namespace spott_launch
