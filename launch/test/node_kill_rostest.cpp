@@ -5,6 +5,7 @@
 #include <actionlib/client/simple_action_client.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
+#include <nav_msgs/Path.h>
 #include <ros/master.h>
 #include <ros/network.h>
 #include <ros/ros.h>
@@ -13,6 +14,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -87,15 +89,54 @@ class Estimate {
   ros::Subscriber sub_;
 };
 
+// How far the harmonic planner's own pose (the first pose of its predicted path) strays from the
+// truth: while the localization is dead it must go on with the odometry, not stay where the
+// robot was when the last map -> odom came (spott_ros/robot_pose.h).
+class PlannerPoseGap {
+ public:
+  PlannerPoseGap(ros::NodeHandle& nh, const Truth& truth)
+      : truth_(truth), sub_(nh.subscribe("/harmonic_planner/path", 5, &PlannerPoseGap::On, this)) {}
+  void Reset() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    max_gap_m_ = 0.0;
+    count_ = 0;
+  }
+  double max_gap_m() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return max_gap_m_;
+  }
+  int count() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return count_;
+  }
+
+ private:
+  void On(const nav_msgs::Path& m) {
+    if (m.poses.empty()) return;
+    const double gap =
+        truth_.DistanceTo(m.poses.front().pose.position.x, m.poses.front().pose.position.y);
+    std::lock_guard<std::mutex> lock(mutex_);
+    max_gap_m_ = std::max(max_gap_m_, gap);
+    ++count_;
+  }
+  const Truth& truth_;
+  std::mutex mutex_;
+  double max_gap_m_ = 0.0;
+  int count_ = 0;
+  ros::Subscriber sub_;
+};
+
 class NodeKill : public spott_launch::testing::StackTest {
  protected:
   static void SetUpTestSuite() {
     StackTest::SetUpTestSuite();
     estimate_ = new Estimate(*nh_);
+    planner_gap_ = new PlannerPoseGap(*nh_, *truth_);
   }
   static void TearDownTestSuite() {
     spinner_->stop();
     delete estimate_;
+    delete planner_gap_;
     StackTest::TearDownTestSuite();
   }
   // A leg along the west hallway; true when it SUCCEEDED within 0.3 m of the truth.
@@ -117,6 +158,7 @@ class NodeKill : public spott_launch::testing::StackTest {
     return ::testing::AssertionSuccess();
   }
   static inline Estimate* estimate_ = nullptr;
+  static inline PlannerPoseGap* planner_gap_ = nullptr;
 };
 
 TEST_F(NodeKill, TheStackFinishesALegBeforeAnyKill) {
@@ -134,8 +176,12 @@ TEST_F(NodeKill, TheLocalizationKilledWhileDrivingResumesNearTheTruth) {
   ros::Duration(3.0).sleep();  // simulated: on its way east
   ros::Duration(2.5).sleep();  // at least one save of map -> odom (every 2 s)
   const int before = estimate_->count();
+  planner_gap_->Reset();
   ASSERT_TRUE(KillAndWaitForRespawn("/markov_localization"));
   ASSERT_TRUE(client.waitForResult(ros::Duration(120.0)));
+  // The respawned node rebuilds its models for seconds: meanwhile the robot drove on odometry.
+  EXPECT_GT(planner_gap_->count(), 5);
+  EXPECT_LT(planner_gap_->max_gap_m(), 0.6) << "the planner's pose strayed from the truth";
   EXPECT_EQ(client.getResult()->outcome, spott_msgs::NavigateResult::SUCCEEDED)
       << client.getResult()->reason;
   EXPECT_LT(truth_->DistanceTo(8.0, 8.25), 0.3);

@@ -29,6 +29,7 @@
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/robot_geometry.h"
+#include "spott_ros/robot_pose.h"
 
 namespace spott_global_planner {
 namespace {
@@ -200,15 +201,16 @@ class GlobalPlannerNode {
 
   void Update() {
     if (!session_.has_graph()) return;
-    geometry_msgs::TransformStamped pose;
+    spott_ros::RobotPose pose;
     try {
-      pose = tf_buffer_.lookupTransform(params_.frame_id, params_.robot_frame, ros::Time(0));
+      pose = spott_ros::LookupRobotPose(
+          tf_buffer_, {params_.frame_id, params_.odom_frame, params_.robot_frame});
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "global_planner: no robot pose (%s -> %s): %s",
                         params_.frame_id.c_str(), params_.robot_frame.c_str(), e.what());
       return;
     }
-    const spott_map::Vec2 robot(pose.transform.translation.x, pose.transform.translation.y);
+    const spott_map::Vec2 robot(pose.pose.x, pose.pose.y);
     const SessionUpdate u = session_.Update(robot, local_window_ ? &*local_window_ : nullptr);
     const ros::Time now = ros::Time::now();
     const bool answer = !goal_id_.empty() && !answered_;  // a new goal id: send everything

@@ -4,6 +4,7 @@ namespace spott_global_planner::ros_parameters {
 
 void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("frame_id", p.frame_id);
+  r.Get("odom_frame", p.odom_frame);
   r.Get("robot_frame", p.robot_frame);
   r.Get("robot_description", p.robot_description);
   r.Get("update_rate_hz", p.update_rate_hz, "Hz");

@@ -37,6 +37,7 @@
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_geometry.h"
+#include "spott_ros/robot_pose.h"
 
 namespace spott_harmonic_planner {
 
@@ -342,14 +343,19 @@ class HarmonicPlannerNode {
 
   void Cycle(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
-    try {  // (b) the localization estimate, map -> base_link
-      const auto tf = tf_.lookupTransform(params_.frame_id, params_.base_frame, ros::Time(0));
-      if (const auto p = spott_ros::ToPose2D(tf.transform)) {
-        planner_.CorrectPose({p->x, p->y, p->theta});
-        if (!have_pose_) ROS_INFO("harmonic_planner: the robot has a pose");
-        have_pose_ = true;
-        if (session_) session_->PoseAvailable();
-      }
+    try {  // (b) the localization estimate, map -> odom -> base_link
+      const spott_ros::RobotPose r = spott_ros::LookupRobotPose(
+          tf_, {params_.frame_id, params_.odom_frame, params_.base_frame});
+      planner_.CorrectPose({r.pose.x, r.pose.y, r.pose.theta});
+      if (!have_pose_) ROS_INFO("harmonic_planner: the robot has a pose");
+      have_pose_ = true;
+      if (session_) session_->PoseAvailable();
+      if (r.map_to_odom_age_s > spott_ros::kSilentLocalizationS)
+        ROS_WARN_THROTTLE(5.0,
+                          "harmonic_planner: %s -> %s is %.1f s old (is the localization "
+                          "running?): driving on odometry",
+                          params_.frame_id.c_str(), params_.odom_frame.c_str(),
+                          r.map_to_odom_age_s);
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5.0, "harmonic_planner: no pose (%s)%s", e.what(),
                         have_pose_ ? "; dead-reckoning" : "");

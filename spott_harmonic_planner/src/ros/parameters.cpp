@@ -6,6 +6,7 @@ namespace spott_harmonic_planner {
 
 void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("frame_id", p.frame_id);
+  r.Get("odom_frame", p.odom_frame);
   r.Get("base_frame", p.base_frame);
   r.Get("robot_description", p.robot_description);
   r.Get("cycle_rate_hz", p.cycle_rate_hz, "Hz");

@@ -48,6 +48,7 @@
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_geometry.h"
+#include "spott_ros/robot_pose.h"
 #include "spott_tr_plus/checker.h"
 #include "spott_tr_plus/controller/navigation_controller.h"
 #include "spott_tr_plus/dot_export.h"
@@ -387,11 +388,10 @@ class ControllerNode : public ControllerIo {
 
   void UpdatePose() {
     try {
-      const auto tf = tf_.lookupTransform(params_.frame_id, params_.base_frame, ros::Time(0));
-      if (const auto p = spott_ros::ToPose2D(tf.transform)) {
-        core_->SetPose(Pose2{p->x, p->y, p->theta}, Now());
-        have_pose_ = true;
-      }
+      const spott_ros::RobotPose r = spott_ros::LookupRobotPose(
+          tf_, {params_.frame_id, params_.odom_frame, params_.base_frame});
+      core_->SetPose(Pose2{r.pose.x, r.pose.y, r.pose.theta}, Now());
+      have_pose_ = true;
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "tr_plus_controller: no pose yet (%s)", e.what());
     }

@@ -37,6 +37,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("program_file", p.program_file);
   r.Get("main", p.main);
   r.Get("frame_id", p.frame_id);
+  r.Get("odom_frame", p.odom_frame);
   r.Get("base_frame", p.base_frame);
   r.Get("robot_description", p.robot_description);
   r.Get("navigate_action", p.navigate_action);

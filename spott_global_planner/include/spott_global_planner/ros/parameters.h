@@ -12,7 +12,9 @@
 namespace spott_global_planner::ros_parameters {
 
 struct NodeParameters {
-  std::string frame_id = "map";           ///< frame of the graph, goals and outputs
+  std::string frame_id = "map";  ///< frame of the graph, goals and outputs
+  std::string odom_frame =
+      "odom";  ///< Empty: frame_id -> robot_frame directly (spott_ros/robot_pose.h).
   std::string robot_frame = "base_link";  ///< pose = tf frame_id -> robot_frame; its URDF link
   std::string robot_description = "robot_description";  ///< parameter holding the URDF
   double update_rate_hz = 5.0;                          ///< [0.01, 100]

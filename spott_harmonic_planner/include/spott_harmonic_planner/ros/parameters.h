@@ -16,6 +16,9 @@ struct NodeParameters {
   PlannerParameters planner;  ///< window.robot_radius_m is set from the robot description.
   NavigateSessionParameters navigate;
   std::string frame_id = "map";
+  /// The pose is map -> odom composed with odom -> base (spott_ros/robot_pose.h); empty: map
+  /// -> base directly.
+  std::string odom_frame = "odom";
   std::string base_frame = "base_link";  ///< Also the URDF link whose footprint pads obstacles.
   std::string robot_description = "robot_description";  ///< Parameter holding the URDF.
   double cycle_rate_hz = 20.0;                          ///< [0.01, 1000]

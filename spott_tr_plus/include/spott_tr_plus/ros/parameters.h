@@ -32,6 +32,7 @@ struct NodeParameters {
   std::string program_file;  ///< Required: programs/spott_navigation.tr.
   std::string main;          ///< Empty: the file's main program.
   std::string frame_id = "map";
+  std::string odom_frame = "odom";  ///< Empty: map -> base directly (spott_ros/robot_pose.h).
   std::string base_frame = "base_link";
   std::string robot_description = "robot_description";
   std::string navigate_action = "harmonic_planner/navigate";
