@@ -544,8 +544,14 @@ class LocalizationNode {
     const auto& modes = summary.modes;
     const ml::Pose2 estimate = localizer_->Estimate(reading_odom_);
     const ml::Pose2 map_to_odom = localizer_->map_to_odom();
-    tf_.sendTransform(conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame,
-                                        stamp + ros::Duration(params_.transform_tolerance_s)));
+    // The ring and the scan of one instant share a stamp: tf2 refuses (and logs,
+    // TF_REPEATED_DATA) a second transform at the same stamp in every listener.
+    const ros::Time tf_stamp = stamp + ros::Duration(params_.transform_tolerance_s);
+    if (tf_stamp != last_tf_stamp_) {
+      tf_.sendTransform(
+          conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame, tf_stamp));
+      last_tf_stamp_ = tf_stamp;
+    }
     if (step.updated) {
       Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
       for (const auto& m : modes)
@@ -649,7 +655,8 @@ class LocalizationNode {
   tf2_ros::TransformListener tf_listener_;
   spott_ros::InputRefusals refusals_;
   ros::Timer save_timer_;
-  bool resumed_ = false;  ///< Started from last_map_to_odom (once).
+  ros::Time last_tf_stamp_;  ///< Of the last map -> odom sent.
+  bool resumed_ = false;     ///< Started from last_map_to_odom (once).
 };
 
 }  // namespace
