@@ -32,7 +32,9 @@ json Leg(const NavigationLeg& leg) {
             {"final_position", {leg.final_position.x(), leg.final_position.y()}},
             {"min_wall_distance_m", leg.min_wall_distance_m},
             {"bumper_hits", leg.bumper_hits},
-            {"lost_reports", leg.lost_reports}};
+            {"lost_reports", leg.lost_reports},
+            {"lost_onsets_s", leg.lost_onsets_s},
+            {"contact_onsets_s", leg.contact_onsets_s}};
   if (leg.has_target) j["target"] = {leg.target.x, leg.target.y, leg.target.yaw};
   // Localization against the ground truth; none when the stack ran on the simulator's pose.
   if (leg.estimates > 0) {

@@ -17,6 +17,9 @@ void LegMetrics::Reset(double t) {
   path_length_m_ = 0.0;
   min_wall_distance_m_ = std::numeric_limits<double>::infinity();
   bumper_hits_ = estimates_ = lost_reports_ = 0;
+  lost_ = pressed_ = false;
+  lost_onsets_s_.clear();
+  contact_onsets_s_.clear();
   sum_position_error_m_ = max_position_error_m_ = 0.0;
   sum_heading_error_rad_ = max_heading_error_rad_ = 0.0;
   pending_.clear();
@@ -63,6 +66,8 @@ void LegMetrics::Evaluate(bool all) {
     const double h = std::abs(spott_map::NormalizeAngle(s.yaw - truth_yaw));
     ++estimates_;
     lost_reports_ += s.lost ? 1 : 0;
+    if (s.lost && !lost_) lost_onsets_s_.push_back(s.t);
+    lost_ = s.lost;
     sum_position_error_m_ += e;
     sum_heading_error_rad_ += h;
     max_position_error_m_ = std::max(max_position_error_m_, e);
@@ -74,6 +79,8 @@ void LegMetrics::Evaluate(bool all) {
 void LegMetrics::OnBumper(double t, bool any_pressed) {
   if (t < leg_start_ || t > leg_end_) return;
   bumper_hits_ += any_pressed ? 1 : 0;
+  if (any_pressed && !pressed_) contact_onsets_s_.push_back(t);
+  pressed_ = any_pressed;
 }
 
 void LegMetrics::Measure(const spott_map::Vec2& target, NavigationLeg& leg) {
@@ -85,6 +92,8 @@ void LegMetrics::Measure(const spott_map::Vec2& target, NavigationLeg& leg) {
   leg.bumper_hits = bumper_hits_;
   leg.estimates = estimates_;
   leg.lost_reports = lost_reports_;
+  leg.lost_onsets_s = lost_onsets_s_;
+  leg.contact_onsets_s = contact_onsets_s_;
   if (estimates_ > 0) {
     leg.mean_position_error_m = sum_position_error_m_ / estimates_;
     leg.mean_heading_error_rad = sum_heading_error_rad_ / estimates_;

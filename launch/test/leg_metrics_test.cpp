@@ -70,6 +70,28 @@ TEST(LegMetrics, OnlyMessagesStampedWithinTheLegCount) {
   EXPECT_GT(leg.min_wall_distance_m, 0.5);  // the corridor's centre line, 1 m from each wall
 }
 
+TEST(LegMetrics, OnsetsOfLostAndOfContactAreTimed) {
+  const spott_map::World world = Corridor();
+  LegMetrics m(world);
+  m.Reset(0.0);
+  const bool lost[] = {false, true, true, false, true};
+  const bool pressed[] = {false, true, true, false, true};
+  for (int i = 0; i < 5; ++i) {
+    m.OnTruth(i, 1.0 + 0.1 * i, 1.0, 0.0);
+    m.OnStatus(i, 1.0 + 0.1 * i, 1.0, 0.0, lost[i]);
+    m.OnBumper(i + 0.5, pressed[i]);
+  }
+  const NavigationLeg leg = Measured(m);
+  EXPECT_EQ(leg.lost_reports, 3);
+  EXPECT_EQ(leg.lost_onsets_s, (std::vector<double>{1.0, 4.0}));
+  EXPECT_EQ(leg.bumper_hits, 3);
+  EXPECT_EQ(leg.contact_onsets_s, (std::vector<double>{1.5, 4.5}));
+  m.Reset(10.0);  // a new leg starts unpressed and not lost
+  m.OnStatus(10.0, 1.0, 1.0, 0.0, true);
+  m.OnTruth(10.0, 1.0, 1.0, 0.0);
+  EXPECT_EQ(Measured(m).lost_onsets_s, (std::vector<double>{10.0}));
+}
+
 TEST(LegMetrics, AVerdictNeedsTheDriversWordTheGoalAndNoContact) {
   NavigationLeg leg;
   leg.final_error_m = 0.1;

@@ -47,6 +47,10 @@ struct NavigationLeg {
   double mean_heading_error_rad = 0.0;
   double max_heading_error_rad = 0.0;
   int lost_reports = 0;  ///< Statuses that said lost.
+  /// When (simulated s) the localization began to say lost, and a bumper began to be pressed:
+  /// a fault campaign measures detection latency and collisions against a fault's time.
+  std::vector<double> lost_onsets_s;
+  std::vector<double> contact_onsets_s;
 };
 
 struct NavigationReport {
@@ -110,6 +114,8 @@ class LegMetrics {
   double path_length_m_ = 0.0;
   double min_wall_distance_m_ = std::numeric_limits<double>::infinity();
   int bumper_hits_ = 0, estimates_ = 0, lost_reports_ = 0;
+  bool lost_ = false, pressed_ = false;  ///< The last status / bumper message in the leg.
+  std::vector<double> lost_onsets_s_, contact_onsets_s_;
   double sum_position_error_m_ = 0.0, max_position_error_m_ = 0.0;
   double sum_heading_error_rad_ = 0.0, max_heading_error_rad_ = 0.0;
   std::deque<Sample> history_;  ///< The last second of ground truth.
