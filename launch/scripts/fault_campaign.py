@@ -85,6 +85,9 @@ def judge(kind, fault, report, log_text):
         return row
     row['outcome'] = report['outcome']
     faults = report.get('faults', [])
+    if not faults:  # the tasks ended before the fault's time: nothing was tested
+        row['outcome'] = 'fault came after the tasks'
+        return row
     row['applied'] = bool(faults) and all(f['applied'] for f in faults)
     t = faults[0]['sim_time_s'] if faults else fault['time']
     onsets = [s for leg in report['legs'] for s in leg.get('lost_onsets_s', []) if s >= t]
@@ -149,7 +152,7 @@ def main():
         rs = [r for r in rows if r['kind'] == kind]
         det = [r for r in rs if r['detected'].startswith('yes')]
         lines.append('| %s | %d | %d | %s | %d | %d | %d |' % (
-            kind, len(rs), sum(r['applied'] for r in rs),
+            kind, len(rs), sum(r['applied'] for r in rs),  # runs the fault never reached: not applied
             ('%d' % len(det)) if kind == 'kidnap' else 'no monitor',
             sum(r['outcome'] == 'succeeded' for r in rs), sum(r['collisions'] for r in rs),
             sum(r['deaths'] for r in rs)))

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "spott_map/yaml_reader.h"
 
@@ -12,7 +14,49 @@ namespace robot_sim {
 using spott_map::NumberRule;
 using spott_map::YamlReader;
 
-bool ApplyFaultEvent(Simulator& sim, int robot, const FaultEvent& e, std::string* error) {
+namespace {
+
+// Whoever closes a door or puts a box down leaves the robot this much room (m): more than a
+// bumper's travel, so that the leaf does not brush it as it passes.
+constexpr double kKeepClearM = 0.1;
+
+std::vector<bool> Overlaps(const Simulator& sim) {
+  std::vector<bool> v;
+  for (int i = 0; i < sim.robot_count(); ++i) v.push_back(sim.Overlapped(i, kKeepClearM));
+  return v;
+}
+
+// The name of a robot the world overlaps now but did not `before`, or "".
+std::string NewlyOverlapped(const Simulator& sim, const std::vector<bool>& before) {
+  for (int i = 0; i < sim.robot_count(); ++i)
+    if (sim.Overlapped(i, kKeepClearM) && !before[i]) return sim.spec(i).name;
+  return "";
+}
+
+}  // namespace
+
+bool ApplyFaultEvent(Simulator& sim, int robot, const FaultEvent& e, std::string* error,
+                     bool* blocked) {
+  if (blocked) *blocked = false;
+  const bool closes = e.kind == FaultEvent::Kind::kDoor && e.closed &&
+                      sim.world().DoorClosed(e.name) == std::optional<bool>(false);
+  if (closes || e.kind == FaultEvent::Kind::kAddObstacle) {
+    const std::vector<bool> before = Overlaps(sim);
+    const bool added = closes ? sim.world().SetDoorClosed(e.name, true, error)
+                              : sim.world().AddObstacle(e.obstacle, error);
+    if (!added) return false;
+    const std::string in_the_way = NewlyOverlapped(sim, before);
+    if (in_the_way.empty()) return true;
+    if (closes)
+      sim.world().SetDoorClosed(e.name, false, nullptr);
+    else
+      sim.world().RemoveObstacle(e.obstacle.id, nullptr);
+    if (error)
+      *error = closes ? "robot " + in_the_way + " stands in the doorway"
+                      : "robot " + in_the_way + " stands where the obstacle would be";
+    if (blocked) *blocked = true;
+    return false;
+  }
   switch (e.kind) {
     case FaultEvent::Kind::kKidnap:
       return sim.Kidnap(robot, e.pose, e.relative, error);

@@ -60,6 +60,12 @@ bool Simulator::Collides(const Robot& r, double x, double y) const {
   return world_->CylinderCollides(x, y, r.spec.radius_m, r.spec.height_m, r.body);
 }
 
+bool Simulator::Overlapped(int robot, double margin_m) const {
+  const Robot& r = robots_.at(robot);
+  return world_->CylinderCollides(r.pose.x, r.pose.y, r.spec.radius_m + margin_m, r.spec.height_m,
+                                  r.body);
+}
+
 void Simulator::Step(double dt, Rng& rng) {
   for (Robot& r : robots_) {
     const double turret_step = r.spec.drive.max_turret_rps * dt;

@@ -103,9 +103,9 @@ TEST(FaultEventTest, AppliedEventsChangeTheSimulatorAndRefusalsChangeNothing) {
   FaultEvent add;
   add.kind = FaultEvent::Kind::kAddObstacle;
   add.obstacle.id = "box";
-  add.obstacle.pose = {2, 3, 0};  // on the robot: allowed (the robot is then stuck), as in life
+  add.obstacle.pose = {4, 3, 0};
   add.obstacle.size_x = add.obstacle.size_y = add.obstacle.height = 0.2;
-  EXPECT_TRUE(ApplyFaultEvent(sim, id, add, &error));
+  EXPECT_TRUE(ApplyFaultEvent(sim, id, add, &error)) << error;
   FaultEvent remove;
   remove.kind = FaultEvent::Kind::kRemoveObstacle;
   remove.name = "wall_1";
@@ -119,6 +119,48 @@ TEST(FaultEventTest, AppliedEventsChangeTheSimulatorAndRefusalsChangeNothing) {
   EXPECT_TRUE(ApplyFaultEvent(sim, id, sensor, &error));
   Rng rng(1);
   EXPECT_TRUE(std::isnan(sim.SenseRing(id, *sim.spec(id).FindRing("sonar"), rng)[0]));
+}
+
+// A door is not shut, nor a box put, through a robot standing there (node_kill's kin: the
+// fault campaign closed d_lab_e onto the Nomad in the doorway, which then pushed for 240 s).
+TEST(FaultEventTest, NoDoorClosesAndNoObstacleAppearsThroughARobot) {
+  SimWorldParameters p;
+  p.octomap_resolution_m = 0.1;
+  auto world = std::make_unique<SimWorld>(p);
+  world->Build(testing::TestWorld());
+  Simulator sim(std::move(world));
+  auto spec = LoadRobotSpec(testing::PackageFile("config/robots/b12.yaml"),
+                            testing::PackageFile("urdf/b12.urdf"));
+  ASSERT_TRUE(spec.ok());
+  std::string error;
+  ASSERT_TRUE(sim.world().SetDoorClosed("d1", false, &error));
+  const int id = *sim.AddRobot(*spec.spec, {10, 3, 0}, {}, nullptr);  // in the doorway
+  FaultEvent close;
+  close.kind = FaultEvent::Kind::kDoor;
+  close.name = "d1";
+  close.closed = true;
+  bool blocked = false;
+  EXPECT_FALSE(ApplyFaultEvent(sim, id, close, &error, &blocked));
+  EXPECT_TRUE(blocked);
+  EXPECT_NE(error.find("stands in the doorway"), std::string::npos) << error;
+  EXPECT_EQ(sim.world().DoorClosed("d1"), std::optional<bool>(false));
+  EXPECT_FALSE(sim.Overlapped(id));
+
+  FaultEvent box;
+  box.kind = FaultEvent::Kind::kAddObstacle;
+  box.obstacle.id = "box";
+  box.obstacle.pose = {10, 3, 0};
+  box.obstacle.size_x = box.obstacle.size_y = box.obstacle.height = 0.2;
+  EXPECT_FALSE(ApplyFaultEvent(sim, id, box, &error, &blocked));
+  EXPECT_TRUE(blocked);
+  box.obstacle.pose = {8, 3, 0};  // beside it: there
+  EXPECT_TRUE(ApplyFaultEvent(sim, id, box, &error, &blocked)) << error;
+  EXPECT_FALSE(blocked);
+
+  ASSERT_TRUE(sim.Kidnap(id, {6, 3, 0}, false, &error)) << error;  // the robot moved on
+  EXPECT_TRUE(ApplyFaultEvent(sim, id, close, &error, &blocked)) << error;
+  EXPECT_FALSE(blocked);
+  EXPECT_EQ(sim.world().DoorClosed("d1"), std::optional<bool>(true));
 }
 
 }  // namespace

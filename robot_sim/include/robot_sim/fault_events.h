@@ -39,8 +39,11 @@ struct FaultEvent {
 };
 
 /// Applies `event` to robot `robot` now; false with a message (and nothing changed) when the
-/// simulator refuses it.
-bool ApplyFaultEvent(Simulator& sim, int robot, const FaultEvent& event, std::string* error);
+/// simulator refuses it. A door does not close, nor an obstacle appear, through a robot
+/// standing there: refused, and `*blocked` (when given) set, so that a schedule can wait
+/// until the place is clear (a real door cannot be shut on a robot in the doorway).
+bool ApplyFaultEvent(Simulator& sim, int robot, const FaultEvent& event, std::string* error,
+                     bool* blocked = nullptr);
 
 struct FaultScheduleResult {
   std::vector<FaultEvent> events;  ///< Sorted by time (stable).

@@ -83,6 +83,9 @@ class Simulator {
   const Odometry& odometry(int robot) const { return robots_.at(robot).odometry; }
   const RobotSpec& spec(int robot) const { return robots_.at(robot).spec; }
   double turret_yaw(int robot) const { return robots_.at(robot).turret_yaw; }
+  /// True when the robot's body, grown by `margin_m`, overlaps a solid of the world (a door
+  /// leaf or an obstacle just put where it stands).
+  bool Overlapped(int robot, double margin_m = 0.0) const;
   /// True when the last step was cut short by a contact.
   bool Stalled(int robot) const { return robots_.at(robot).stalled; }
   int robot_count() const { return static_cast<int>(robots_.size()); }

@@ -306,19 +306,39 @@ class SimNode {
   }
 
   void RunSchedule(double now_s) {
+    // Doors and obstacles that waited for a robot to clear the place, first.
+    for (auto it = waiting_.begin(); it != waiting_.end();) {
+      std::string error;
+      bool blocked = false;
+      if (!ApplyFaultEvent(*sim_, robot_, *it, &error, &blocked) && blocked) {
+        ++it;
+        continue;
+      }
+      const std::string what = Describe(*it);
+      ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) applied %.2f s late (%s): %s",
+               it->time, it->where.line, now_s - it->time,
+               error.empty() ? "the place is clear" : error.c_str(), what.c_str());
+      PublishFault(now_s, *it, what, error);
+      it = waiting_.erase(it);
+    }
     while (next_event_ < schedule_.size() && schedule_[next_event_].time <= now_s) {
       const FaultEvent& e = schedule_[next_event_++];
       std::string error;
-      const bool applied = ApplyFaultEvent(*sim_, robot_, e, &error);
+      bool blocked = false;
+      const bool applied = ApplyFaultEvent(*sim_, robot_, e, &error, &blocked);
       const std::string what = Describe(e);
-      if (applied) {
+      if (blocked) {  // as a person closing a door waits for the robot to pass
+        ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) waits: %s: %s", e.time,
+                 e.where.line, what.c_str(), error.c_str());
+        waiting_.push_back(e);
+      } else if (applied) {
         ROS_INFO("robot_sim: scheduled fault at %.2f s (line %d) applied: %s", e.time, e.where.line,
                  what.c_str());
       } else {
         ROS_ERROR("robot_sim: scheduled fault at %.2f s (line %d) refused: %s: %s", e.time,
                   e.where.line, what.c_str(), error.c_str());
       }
-      PublishFault(now_s, e, what, applied ? "" : error);
+      if (!blocked) PublishFault(now_s, e, what, applied ? "" : error);
     }
   }
 
@@ -433,6 +453,7 @@ class SimNode {
   std::vector<FaultEvent> schedule_;
   ros::Publisher faults_pub_;
   std::size_t next_event_ = 0;
+  std::vector<FaultEvent> waiting_;  ///< Scheduled, blocked by a robot standing there.
   Rng rng_;
   bool have_command_ = false;
   double last_command_s_ = 0.0;
