@@ -83,16 +83,28 @@ TEST(FaultScheduleTest, EmptyScheduleAndSyntaxError) {
   EXPECT_EQ(r.errors[0].where.file, "broken.yaml");
 }
 
-TEST(FaultEventTest, AppliedEventsChangeTheSimulatorAndRefusalsChangeNothing) {
-  SimWorldParameters p;
-  p.octomap_resolution_m = 0.1;
-  auto world = std::make_unique<SimWorld>(p);
-  world->Build(testing::TestWorld());
-  Simulator sim(std::move(world));
-  auto spec = LoadRobotSpec(testing::PackageFile("config/robots/b12.yaml"),
-                            testing::PackageFile("urdf/b12.urdf"));
-  ASSERT_TRUE(spec.ok());
-  const int id = *sim.AddRobot(*spec.spec, {2, 3, 0}, {}, nullptr);
+// The test world with a B-12 in it.
+class FaultEventTest : public ::testing::Test {
+ protected:
+  FaultEventTest() : sim(MakeWorld()) {}
+  static std::unique_ptr<SimWorld> MakeWorld() {
+    SimWorldParameters p;
+    p.octomap_resolution_m = 0.1;
+    auto world = std::make_unique<SimWorld>(p);
+    world->Build(testing::TestWorld());
+    return world;
+  }
+  int AddB12(const spott_map::Pose2& at) {
+    auto spec = LoadRobotSpec(testing::PackageFile("config/robots/b12.yaml"),
+                              testing::PackageFile("urdf/b12.urdf"));
+    EXPECT_TRUE(spec.ok());
+    return *sim.AddRobot(*spec.spec, at, {}, nullptr);
+  }
+  Simulator sim;
+};
+
+TEST_F(FaultEventTest, AppliedEventsChangeTheSimulatorAndRefusalsChangeNothing) {
+  const int id = AddB12({2, 3, 0});
   FaultEvent door;
   door.kind = FaultEvent::Kind::kDoor;
   door.name = "d1";
@@ -123,18 +135,10 @@ TEST(FaultEventTest, AppliedEventsChangeTheSimulatorAndRefusalsChangeNothing) {
 
 // A door is not shut, nor a box put, through a robot standing there (node_kill's kin: the
 // fault campaign closed d_lab_e onto the Nomad in the doorway, which then pushed for 240 s).
-TEST(FaultEventTest, NoDoorClosesAndNoObstacleAppearsThroughARobot) {
-  SimWorldParameters p;
-  p.octomap_resolution_m = 0.1;
-  auto world = std::make_unique<SimWorld>(p);
-  world->Build(testing::TestWorld());
-  Simulator sim(std::move(world));
-  auto spec = LoadRobotSpec(testing::PackageFile("config/robots/b12.yaml"),
-                            testing::PackageFile("urdf/b12.urdf"));
-  ASSERT_TRUE(spec.ok());
+TEST_F(FaultEventTest, NoDoorClosesAndNoObstacleAppearsThroughARobot) {
   std::string error;
   ASSERT_TRUE(sim.world().SetDoorClosed("d1", false, &error));
-  const int id = *sim.AddRobot(*spec.spec, {10, 3, 0}, {}, nullptr);  // in the doorway
+  const int id = AddB12({10, 3, 0});  // in the doorway
   FaultEvent close;
   close.kind = FaultEvent::Kind::kDoor;
   close.name = "d1";
