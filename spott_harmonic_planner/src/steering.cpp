@@ -93,17 +93,23 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
     const auto c = field.CellOf(at);
     if (!c) {
       cmd.reason = "the robot is outside the planning window";
-    } else if (field.cell(c->first, c->second) == FieldCell::kObstacle) {
+    } else if (const FieldCell kind = field.cell(c->first, c->second);
+               kind == FieldCell::kObstacle || kind == FieldCell::kUnreachable) {
+      // In the padding, or in a free pocket the padding cuts off from the goal (a doorway
+      // whose jambs' padding meets behind the robot): out by the nearest connected cell.
       const auto escape = BestEscape(field, at, params.escape_radius_m);
       if (!escape) {
-        cmd.reason = "the robot is inside a padded obstacle";
+        cmd.reason = kind == FieldCell::kObstacle
+                         ? "the robot is inside a padded obstacle"
+                         : "the goal cannot be reached from the robot's position";
         return cmd;
       }
       // Out of the padding towards the goal, slowly.
       const Vec2 d = (*escape - at).normalized();
       cmd.valid = true;
       cmd.escaping = true;
-      cmd.reason = "escaping the padding of an obstacle";
+      cmd.reason = kind == FieldCell::kObstacle ? "escaping the padding of an obstacle"
+                                                : "escaping a pocket cut off from the goal";
       cmd.descent = d;
       cmd.heading = std::atan2(d.y(), d.x());
       const double error = WrapAngle(cmd.heading - pose.yaw);

@@ -85,6 +85,32 @@ TEST(Steering, ARobotEstimatedInsideThePaddingHeadsForTheNearestFreeCell) {
           .valid);
 }
 
+TEST(Steering, ARobotInAPocketCutOffFromTheGoalLeavesItByTheNearestConnectedCell) {
+  // 4 x 4 m at 0.1 m; a one-cell ring of padding around a 0.3 m pocket at (2, 1); goal above.
+  auto raster = spott_map::OccupancyRaster(Vec2(0.0, 0.0), 40, 40, 0.1);
+  for (int y = 8; y <= 12; ++y)
+    for (int x = 18; x <= 22; ++x)
+      if (y == 8 || y == 12 || x == 18 || x == 22) raster.Mark(x, y, spott_map::Cell::kObstacle);
+  PotentialField field(FieldOptions{});
+  field.SetOccupancy(raster);
+  ASSERT_TRUE(field.SetGoalPoint(Vec2(2.0, 3.5)));
+  field.ColdStart();
+  field.Solve(5000);
+  ASSERT_EQ(field.cell(20, 10), FieldCell::kUnreachable);
+  SteeringParameters p;  // escape_radius 0.4 m
+  const SteeringCommand c =
+      ComputeSteering(field, Pose2{2.05, 1.05, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 2.5, p);
+  ASSERT_TRUE(c.valid) << c.reason;
+  EXPECT_EQ(c.reason, "escaping a pocket cut off from the goal");
+  EXPECT_GT(c.descent.y(), 0.7);  // towards the goal's side of the ring
+  EXPECT_GT(c.linear, 0.0);
+  p.escape_radius_m = 0.0;  // no escape: said as before
+  const SteeringCommand stuck =
+      ComputeSteering(field, Pose2{2.05, 1.05, M_PI / 2}, SpeedMode::kNormal, std::nullopt, 2.5, p);
+  EXPECT_FALSE(stuck.valid);
+  EXPECT_EQ(stuck.reason, "the goal cannot be reached from the robot's position");
+}
+
 // A goal on the inner edge of the window (HILARE's corridor_north at y = 7.0 with the window
 // ending at 7.1) lies in a border cell: it is aimed at from the inner cell beside it, not
 // refused as "in a padded obstacle".
