@@ -544,10 +544,12 @@ class LocalizationNode {
     const auto& modes = summary.modes;
     const ml::Pose2 estimate = localizer_->Estimate(reading_odom_);
     const ml::Pose2 map_to_odom = localizer_->map_to_odom();
-    // The ring and the scan of one instant share a stamp: tf2 refuses (and logs,
-    // TF_REPEATED_DATA) a second transform at the same stamp in every listener.
+    // Only newer stamps: the ring's and the profiles' readings interleave, and tf2 refuses (and
+    // logs, TF_REPEATED_DATA) a second transform at a stamp it holds, in every listener. A clock
+    // that went back (a bag replayed again) starts over.
     const ros::Time tf_stamp = stamp + ros::Duration(params_.transform_tolerance_s);
-    if (tf_stamp != last_tf_stamp_) {
+    if (last_tf_stamp_.toSec() > tf_stamp.toSec() + 1.0) last_tf_stamp_ = ros::Time();
+    if (tf_stamp > last_tf_stamp_) {
       tf_.sendTransform(
           conv::ToTransform(map_to_odom, params_.map_frame, params_.odom_frame, tf_stamp));
       last_tf_stamp_ = tf_stamp;
