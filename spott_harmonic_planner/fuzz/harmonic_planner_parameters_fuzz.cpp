@@ -78,6 +78,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("navigate/backoff_distance_m", n.backoff_distance_m, "(0, 2]");
   ExpectIn("navigate/backoff_speed_mps", n.backoff_speed_mps, "(0, 1]");
   ExpectIn("navigate/arrival_stall_s", n.arrival_stall_s, "(0, inf)");
+  ExpectIn("navigate/planner_patience_s", n.planner_patience_s, "[0, 600]");
 
   // The cores the node builds at start: what the reader accepted, they must take.
   try {

@@ -41,6 +41,8 @@ std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p) 
     v.push_back("navigate/backoff_speed_mps must be in (0, 1]");
   if (!(p.arrival_stall_s > 0.0 && p.arrival_stall_s <= 60.0))
     v.push_back("navigate/arrival_stall_s must be in (0, 60]");
+  if (!(p.planner_patience_s >= 0.0 && p.planner_patience_s <= 600.0))
+    v.push_back("navigate/planner_patience_s must be in [0, 600]");
   return v;
 }
 
@@ -51,12 +53,27 @@ NavigateSession::NavigateSession(const NavigateSessionParameters& params, double
 
 void NavigateSession::Answer(const GlobalAnswer& answer) {
   if (finished()) return;
+  const bool driving = phase_ == NavigatePhase::kDriving || phase_ == NavigatePhase::kRecovering;
+  const bool had_way = answer_ && answer_->state == GlobalAnswer::State::kPlanned;
   answer_ = answer;
   switch (answer.state) {
     case GlobalAnswer::State::kPlanned:
       path_summary_ = answer.path_summary;
+      if (lost_way_) {  // the way is back
+        lost_way_.reset();
+        lost_way_since_s_.reset();
+        note_.clear();
+        bad_cycles_ = 0;
+        if (!backoff_) SetPhase(NavigatePhase::kDriving);
+      }
       break;
     case GlobalAnswer::State::kFailed:
+      if (driving && had_way && params_.planner_patience_s > 0.0) {
+        lost_way_ = answer;  // waited for in Update
+        note_ = "the global planner finds no way (" + answer.message + "): waiting for one";
+        SetPhase(NavigatePhase::kRecovering);
+        break;
+      }
       Finish(NavigateOutcome::kUnreachable, answer.message);
       break;
     case GlobalAnswer::State::kRefused:
@@ -66,6 +83,15 @@ void NavigateSession::Answer(const GlobalAnswer& answer) {
 }
 
 void NavigateSession::Update(double now_s) {
+  if (lost_way_ && !finished()) {
+    if (!lost_way_since_s_) lost_way_since_s_ = now_s;
+    if (now_s - *lost_way_since_s_ >= params_.planner_patience_s) {
+      std::ostringstream why;
+      why << lost_way_->message << " (no way for " << params_.planner_patience_s << " s)";
+      Finish(NavigateOutcome::kUnreachable, why.str());
+    }
+    return;
+  }
   if (phase_ != NavigatePhase::kPlanning) return;
   const bool global_ready =
       !params_.use_global_planner ||
@@ -121,7 +147,7 @@ std::optional<double> NavigateSession::BackOff(const spott_map::Pose2& odom) {
     backoff_.reset();
     bad_cycles_ = 0;
     note_.clear();
-    if (!finished()) SetPhase(NavigatePhase::kDriving);
+    if (!finished()) SetPhase(lost_way_ ? NavigatePhase::kRecovering : NavigatePhase::kDriving);
     return std::nullopt;
   }
   return backoff_->direction * params_.backoff_speed_mps;

@@ -75,6 +75,61 @@ TEST(NavigateSession, AFailedGlobalPlanIsUnreachableAtOnceWithItsReason) {
   EXPECT_EQ(s.reason(), a.message);
 }
 
+GlobalAnswer Failed(const std::string& message) {
+  GlobalAnswer a;
+  a.state = GlobalAnswer::State::kFailed;
+  a.message = message;
+  return a;
+}
+
+TEST(NavigateSession, AWayLostWhileDrivingIsWaitedForThePatience) {
+  NavigateSessionParameters p;
+  p.planner_patience_s = 5.0;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Answer(Planned("corridor_e -> room_b"));
+  s.ProjectionArrived();
+  s.Update(1.0);
+  ASSERT_EQ(s.phase(), NavigatePhase::kDriving);
+  // The estimate jumps into a closed room for a moment: no way from there.
+  s.Answer(Failed("no path from node 'room_s5' to node 'room_b': door door_s5 is closed"));
+  EXPECT_FALSE(s.finished());
+  EXPECT_TRUE(s.waiting_for_way());
+  EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
+  EXPECT_NE(s.note().find("door_s5"), std::string::npos) << s.note();
+  s.Update(2.0);
+  s.Update(5.9);
+  EXPECT_FALSE(s.finished());
+  s.Answer(Planned("corridor_e -> room_b"));  // back in the corridor
+  EXPECT_FALSE(s.waiting_for_way());
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+  s.Update(20.0);
+  EXPECT_FALSE(s.finished());
+  // Lost again, for good this time: UNREACHABLE once the patience is over, with the reason.
+  s.Answer(Failed("no path from node 'corridor_e' to node 'room_b': door door_b is closed"));
+  s.Update(21.0);
+  s.Update(25.9);
+  EXPECT_FALSE(s.finished());
+  s.Update(26.0);
+  ASSERT_TRUE(s.finished());
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
+  EXPECT_NE(s.reason().find("door_b is closed"), std::string::npos) << s.reason();
+  EXPECT_NE(s.reason().find("no way for 5 s"), std::string::npos) << s.reason();
+}
+
+TEST(NavigateSession, WithoutPatienceAWayLostWhileDrivingIsUnreachableAtOnce) {
+  NavigateSessionParameters p;
+  p.planner_patience_s = 0.0;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Answer(Planned("a -> b"));
+  s.ProjectionArrived();
+  s.Update(1.0);
+  s.Answer(Failed("door d is closed"));
+  ASSERT_TRUE(s.finished());
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
+}
+
 TEST(NavigateSession, ARefusedGoalFails) {
   NavigateSession s({}, 0.0);
   GlobalAnswer a;

@@ -5,9 +5,11 @@
 //   DRIVING    down the harmonic field;
 //   RECOVERING while the steering escapes the padding (a localization error beside a jamb),
 //              the border goal had to be widened, or the robot backs off a bumper contact;
-//   the result as soon as it is known: UNREACHABLE the moment the global planner fails (with
-//   its reason: the closed doors, the blocked passages) or after unreachable_cycles without a
-//   descent, FAILED for a refused goal or a planning timeout (saying what was missing).
+//   the result as soon as it is known: UNREACHABLE the moment the global planner's first answer
+//   is a failure (with its reason: the closed doors, the blocked passages), or when it fails
+//   while driving and finds no way within planner_patience_s (the robot stopped meanwhile), or
+//   after unreachable_cycles without a descent; FAILED for a refused goal or a planning timeout
+//   (saying what was missing).
 #pragma once
 
 #include <optional>
@@ -59,6 +61,11 @@ struct NavigateSessionParameters {
   double backoff_speed_mps = 0.1;    ///< (m/s), (0, 1].
   /// Within the tolerance but no closer for this long counts as arrived (s), > 0.
   double arrival_stall_s = 2.0;
+  /// A way lost while driving (the global planner failing after it had planned) is waited for
+  /// this long, the robot stopped, before UNREACHABLE (move_base's planner_patience): an
+  /// estimate that jumps for a moment into a room behind a closed door (bonn_kidnap: 2 s after
+  /// a 70-degree turn) made the planner fail from there. [0, 600] s; 0: at once.
+  double planner_patience_s = 5.0;
 };
 
 std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p);
@@ -86,7 +93,8 @@ class NavigateSession {
   /// frame): the robot backs off along its axis, away from the contact.
   void Contact(double angle_rad, const spott_map::Pose2& odom);
 
-  /// Planning: leaves PLANNING when ready, or finishes on a timeout. Call every cycle.
+  /// Planning: leaves PLANNING when ready, or finishes on a timeout; driving: ends the patience
+  /// with a way lost (UNREACHABLE). Call every cycle.
   void Update(double now_s);
   /// Driving: the steering answer of this cycle (`valid`, and whether it escapes the padding)
   /// and whether the border goal had to be widened. Counts cycles without a descent.
@@ -95,6 +103,8 @@ class NavigateSession {
   /// the back-off distance is covered (the session is DRIVING again).
   std::optional<double> BackOff(const spott_map::Pose2& odom);
   bool backing_off() const { return backoff_.has_value(); }
+  /// The global planner failed while driving: the robot waits for a way (planner_patience_s).
+  bool waiting_for_way() const { return lost_way_.has_value(); }
 
   /// Arrival, judged on the estimate: the robot aims at the target itself and has arrived within
   /// half the tolerance, or within the tolerance once it has come no closer for arrival_stall_s
@@ -128,6 +138,8 @@ class NavigateSession {
   bool have_pose_ = false;
   bool have_projection_ = false;
   std::optional<GlobalAnswer> answer_;
+  std::optional<GlobalAnswer> lost_way_;  ///< The failure waited out while driving.
+  std::optional<double> lost_way_since_s_;
   NavigatePhase phase_ = NavigatePhase::kPlanning;
   NavigateOutcome outcome_ = NavigateOutcome::kFailed;
   std::string note_, reason_, path_summary_;

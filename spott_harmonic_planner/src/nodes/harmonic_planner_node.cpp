@@ -417,6 +417,16 @@ class HarmonicPlannerNode {
       Drive(*v, 0.0);
       return planner_.DistanceToGoal();
     }
+    if (session_->waiting_for_way()) {  // stopped until the global planner finds a way again
+      if (!waiting_said_) {
+        waiting_said_ = true;
+        ROS_WARN("harmonic_planner: %s (at most %.1f s)", session_->note().c_str(),
+                 params_.navigate.planner_patience_s);
+      }
+      Drive(0.0, 0.0);
+      return planner_.DistanceToGoal();
+    }
+    waiting_said_ = false;
     const double to_target = (planner_.pose().Position() - request_.target).norm();
     if (turning_ || session_->Arrived(to_target, request_.tolerance_m, now.toSec())) {
       turning_ = true;  // arrived: only the final heading is left
@@ -465,8 +475,9 @@ class HarmonicPlannerNode {
   std::string goal_id_;
   long goal_count_ = 0;
   bool have_pose_ = false;
-  bool turning_ = false;    ///< Arrived at the position; turning to the final heading.
-  bool snap_said_ = false;  ///< The goal's snap out of the padding was logged.
+  bool turning_ = false;       ///< Arrived at the position; turning to the final heading.
+  bool snap_said_ = false;     ///< The goal's snap out of the padding was logged.
+  bool waiting_said_ = false;  ///< The wait for a way was logged.
   spott_map::Pose2 odom_;
   double travelled_ = 0.0;
   Vec2 last_position_{0.0, 0.0};

@@ -55,6 +55,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("navigate/backoff_distance_m", n.backoff_distance_m, "m");
   r.Get("navigate/backoff_speed_mps", n.backoff_speed_mps, "m/s");
   r.Get("navigate/arrival_stall_s", n.arrival_stall_s, "s");
+  r.Get("navigate/planner_patience_s", n.planner_patience_s, "s");
   r.Get("navigate/contact_memory_s", p.contact_memory_s, "s");
   r.Get("navigate/contact_size_m", p.contact_size_m, "m");
   r.Get("navigate/bumper_backoff", p.bumper_backoff);
