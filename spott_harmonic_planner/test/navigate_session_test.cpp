@@ -9,11 +9,17 @@
 namespace spott_harmonic_planner {
 namespace {
 
-GlobalAnswer Planned(const std::string& summary) {
+GlobalAnswer AnswerOf(GlobalAnswer::State state, const std::string& text) {
   GlobalAnswer a;
-  a.state = GlobalAnswer::State::kPlanned;
-  a.path_summary = summary;
+  a.state = state;
+  (state == GlobalAnswer::State::kPlanned ? a.path_summary : a.message) = text;
   return a;
+}
+GlobalAnswer Planned(const std::string& summary) {
+  return AnswerOf(GlobalAnswer::State::kPlanned, summary);
+}
+GlobalAnswer Failed(const std::string& message) {
+  return AnswerOf(GlobalAnswer::State::kFailed, message);
 }
 
 TEST(NavigateSession, PlansUntilThePoseAndTheGlobalPlannersAnswerAreThereInAnyOrder) {
@@ -73,13 +79,6 @@ TEST(NavigateSession, AFailedGlobalPlanIsUnreachableAtOnceWithItsReason) {
   ASSERT_TRUE(s.finished());
   EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
   EXPECT_EQ(s.reason(), a.message);
-}
-
-GlobalAnswer Failed(const std::string& message) {
-  GlobalAnswer a;
-  a.state = GlobalAnswer::State::kFailed;
-  a.message = message;
-  return a;
 }
 
 TEST(NavigateSession, AWayLostWhileDrivingIsWaitedForThePatience) {
