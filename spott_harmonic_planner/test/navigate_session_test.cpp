@@ -81,14 +81,20 @@ TEST(NavigateSession, AFailedGlobalPlanIsUnreachableAtOnceWithItsReason) {
   EXPECT_EQ(s.reason(), a.message);
 }
 
-TEST(NavigateSession, AWayLostWhileDrivingIsWaitedForThePatience) {
+// A session driving since t = 1 s on the path `summary`, with the given planner patience.
+NavigateSession DrivingWithPatience(double patience_s, const std::string& summary) {
   NavigateSessionParameters p;
-  p.planner_patience_s = 5.0;
+  p.planner_patience_s = patience_s;
   NavigateSession s(p, 0.0);
   s.PoseAvailable();
-  s.Answer(Planned("corridor_e -> room_b"));
+  s.Answer(Planned(summary));
   s.ProjectionArrived();
   s.Update(1.0);
+  return s;
+}
+
+TEST(NavigateSession, AWayLostWhileDrivingIsWaitedForThePatience) {
+  NavigateSession s = DrivingWithPatience(5.0, "corridor_e -> room_b");
   ASSERT_EQ(s.phase(), NavigatePhase::kDriving);
   // The estimate jumps into a closed room for a moment: no way from there.
   s.Answer(Failed("no path from node 'room_s5' to node 'room_b': door door_s5 is closed"));
@@ -117,13 +123,8 @@ TEST(NavigateSession, AWayLostWhileDrivingIsWaitedForThePatience) {
 }
 
 TEST(NavigateSession, WithoutPatienceAWayLostWhileDrivingIsUnreachableAtOnce) {
-  NavigateSessionParameters p;
-  p.planner_patience_s = 0.0;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Answer(Planned("a -> b"));
-  s.ProjectionArrived();
-  s.Update(1.0);
+  NavigateSession s = DrivingWithPatience(0.0, "a -> b");
+  ASSERT_EQ(s.phase(), NavigatePhase::kDriving);
   s.Answer(Failed("door d is closed"));
   ASSERT_TRUE(s.finished());
   EXPECT_EQ(s.outcome(), NavigateOutcome::kUnreachable);
