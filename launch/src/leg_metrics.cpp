@@ -33,11 +33,12 @@ void LegMetrics::OnTruth(double t, double x, double y, double yaw) {
   position_ = p;
   yaw_ = yaw;
   have_pose_ = true;
-  // The last second of ground truth: at 4x real time the robot turns up to 15 degrees between
-  // a reading and the status computed from it.
+  // The last kTruthHistoryS of ground truth: a status computed on a loaded machine can come
+  // seconds (simulated) after its reading, and must still meet the truth of its stamp, or the
+  // live run and its bag pair it differently.
   if (!history_.empty() && t < history_.back().t) history_.clear();
   history_.push_back(Sample{t, p, yaw});
-  while (history_.size() > 2 && t - history_.front().t > 1.0) history_.pop_front();
+  while (history_.size() > 2 && t - history_.front().t > kTruthHistoryS) history_.pop_front();
   if (in_leg)
     min_wall_distance_m_ = std::min(min_wall_distance_m_, DistanceToNearestSolid(*world_, p));
   Evaluate(false);
@@ -53,14 +54,24 @@ void LegMetrics::OnStatus(double t, double estimate_x, double estimate_y, double
 void LegMetrics::Evaluate(bool all) {
   while (!pending_.empty() && have_pose_ && (all || history_.back().t >= pending_.front().t)) {
     const Status& s = pending_.front();
+    // The truth at the status' stamp, interpolated between the samples around it: a sample
+    // dropped by the live subscriber or by the recorder then hardly changes the pairing.
     spott_map::Vec2 truth = history_.front().position;
     double truth_yaw = history_.front().yaw;
+    const Sample* after = nullptr;
     for (auto it = history_.rbegin(); it != history_.rend(); ++it) {
-      if (it->t <= s.t) {  // the newest truth not after the status' stamp
-        truth = it->position;
-        truth_yaw = it->yaw;
-        break;
+      if (it->t > s.t) {
+        after = &*it;
+        continue;
       }
+      truth = it->position;
+      truth_yaw = it->yaw;
+      if (after != nullptr && after->t > it->t) {
+        const double f = (s.t - it->t) / (after->t - it->t);
+        truth = truth + f * (after->position - truth);
+        truth_yaw += f * spott_map::NormalizeAngle(after->yaw - truth_yaw);
+      }
+      break;
     }
     const double e = (spott_map::Vec2(s.x, s.y) - truth).norm();
     const double h = std::abs(spott_map::NormalizeAngle(s.yaw - truth_yaw));

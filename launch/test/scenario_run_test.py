@@ -116,18 +116,20 @@ class ScenarioRun(unittest.TestCase):
                 self.assertAlmostEqual(bag_leg['start_sim_s'], live['start_sim_s'], delta=0.05)
                 self.assertAlmostEqual(bag_leg['sim_time_s'], live['sim_time_s'], delta=0.1)
                 self.assertAlmostEqual(bag_leg['path_length_m'], live['path_length_m'],
-                                       delta=0.01 * live['path_length_m'] + 0.02, msg=name)
+                                       delta=0.01 * live['path_length_m'] + 0.02,
+                                       msg=name + ': path')
                 self.assertAlmostEqual(bag_leg['min_wall_distance_m'],
-                                       live['min_wall_distance_m'], delta=0.01, msg=name)
+                                       live['min_wall_distance_m'], delta=0.01,
+                                       msg=name + ': clearance')
                 for a, c in zip(bag_leg['final_position'], live['final_position']):
-                    self.assertAlmostEqual(a, c, delta=0.01, msg=name)
+                    self.assertAlmostEqual(a, c, delta=0.01, msg=name + ': final position')
                 bl, ll = bag_leg['localization'], live['localization']
                 self.assertAlmostEqual(bl['estimates'], ll['estimates'],
-                                       delta=0.02 * ll['estimates'] + 1, msg=name)
+                                       delta=0.02 * ll['estimates'] + 1, msg=name + ': estimates')
                 self.assertAlmostEqual(bl['mean_position_error_m'], ll['mean_position_error_m'],
-                                       delta=0.005, msg=name)
+                                       delta=0.005, msg=name + ': mean error')
                 self.assertAlmostEqual(bl['max_position_error_m'], ll['max_position_error_m'],
-                                       delta=0.01, msg=name)
+                                       delta=0.01, msg=name + ': max error')
 
 
 if __name__ == '__main__':

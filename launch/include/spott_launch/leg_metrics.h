@@ -74,15 +74,18 @@ class LegMetrics {
   /// The leg's window closes at `t` (the result's time plus kSettleS): later stamps are ignored.
   void EndAt(double t) { leg_end_ = t; }
   void OnTruth(double t, double x, double y, double yaw);
-  /// A localization status stamped `t`, compared with the newest ground truth not after `t`
-  /// (the status comes some time after the reading it was computed from) once the truth has
-  /// passed `t`: the pairing does not depend on the order the two topics arrive in.
+  /// A localization status stamped `t`, compared with the ground truth at `t` (interpolated
+  /// between the samples around it; the status comes some time after the reading it was
+  /// computed from) once the truth has passed `t`: the pairing does not depend on the order the
+  /// two topics arrive in, nor much on a dropped truth message.
   void OnStatus(double t, double estimate_x, double estimate_y, double estimate_yaw, bool lost);
   void OnBumper(double t, bool any_pressed);
 
   /// After a leg's result the last ground truth and bumper messages still count for this long
   /// (simulated s): the robot stops.
   static constexpr double kSettleS = 0.8;
+  /// How late (simulated s) a status may come and still meet the truth of its stamp.
+  static constexpr double kTruthHistoryS = 10.0;
 
   bool has_pose() const { return have_pose_; }
   spott_map::Pose2 pose() const { return {position_.x(), position_.y(), yaw_}; }
@@ -118,7 +121,7 @@ class LegMetrics {
   std::vector<double> lost_onsets_s_, contact_onsets_s_;
   double sum_position_error_m_ = 0.0, max_position_error_m_ = 0.0;
   double sum_heading_error_rad_ = 0.0, max_heading_error_rad_ = 0.0;
-  std::deque<Sample> history_;  ///< The last second of ground truth.
+  std::deque<Sample> history_;  ///< The last kTruthHistoryS of ground truth.
   std::deque<Status> pending_;  ///< Statuses newer than the newest truth.
 };
 
