@@ -144,6 +144,23 @@ TEST_F(Controller, GoInRoomIsDoneOnceTheRobotsBodyIsInsideTheRoom) {
   EXPECT_EQ(io_.cancels, 1);  // Navigate to the room's centre is called off: the robot stops
 }
 
+TEST_F(Controller, GoToAPointIsDoneEarlyOnlyWellInsideItsRegion) {
+  // teleop_bumper.test: stopped on an estimate at the edge of the 0.3 m region of (24, 8.25),
+  // the robot really was 0.36-0.37 m from the point. Done early only `arrival_margin_m` (0.1)
+  // inside the region; else Navigate's success (within half its tolerance) ends the task.
+  At(27.0, 8.25, M_PI, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go to point(24, 8.25)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  At(24.28, 8.25, M_PI, 20.0, 0.3);
+  c_->Tick(20.0);
+  EXPECT_TRUE(io_.results.empty()) << "0.28 m from the point: within 0.3 but not 0.1 inside";
+  At(24.15, 8.25, M_PI, 21.0, 0.2);
+  c_->Tick(21.0);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "reached");
+  EXPECT_EQ(io_.results[0].message, "in the goal region");
+}
+
 TEST_F(Controller, MalformedTaskIsRefusedWithItsColumnAndTheRunningTaskGoesOn) {
   At(1.2, 8.25, 0.0, 0.1);
   ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);

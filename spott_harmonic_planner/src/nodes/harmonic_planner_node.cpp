@@ -180,10 +180,12 @@ class HarmonicPlannerNode {
   }
 
   // A contact while driving: remembered as an obstacle, and the robot backs off (the arbiter
-  // has already stopped the motion towards it) unless ~navigate/bumper_backoff is false (the TR+
-  // controller's reflex does it).
+  // has already stopped the motion towards it) unless ~navigate/bumper_backoff is false: then
+  // the TR+ controller owns the bumper (its reflex moves the robot away, its map records the
+  // contact and takes it back before a retry; a copy kept here outlived that clearing and cut
+  // the robot off beside a box in teleop_bumper.test).
   void OnBumper(const spott_msgs::BumperRing& ring) {
-    if (!session_ || session_->phase() == NavigatePhase::kPlanning ||
+    if (!params_.bumper_backoff || !session_ || session_->phase() == NavigatePhase::kPlanning ||
         ring.pressed.size() != ring.segment_angles.size()) {
       return;
     }
@@ -198,10 +200,6 @@ class HarmonicPlannerNode {
       any = true;
     }
     if (!any) return;
-    if (!params_.bumper_backoff) {  // the TR+ controller's reflex moves the robot away
-      ApplyMap();
-      return;
-    }
     if (!session_->backing_off()) {
       ROS_WARN(
           "harmonic_planner: bumper contact at %.0f deg: backing off, remembered as an "

@@ -81,6 +81,8 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
     v.push_back(Violation("tasks/retry_delay_s", ">= 0", t.retry_delay_s));
   if (!(t.clear_radius_m >= 0 && t.clear_radius_m <= 10))
     v.push_back(Violation("tasks/clear_radius_m", "in [0, 10]", t.clear_radius_m));
+  if (!(t.arrival_margin_m >= 0 && t.arrival_margin_m <= 2))
+    v.push_back(Violation("tasks/arrival_margin_m", "in [0, 2]", t.arrival_margin_m));
   if (!(t.stop_speed_mps > 0))
     v.push_back(Violation("tasks/stop_speed_mps", "> 0", t.stop_speed_mps));
   if (!(t.stop_timeout_s > 0))
@@ -1185,9 +1187,12 @@ void NavigationController::Tick(double now) {
 
 bool NavigationController::InGoalRegion(const GoalRegion& region, const Vec2& p) const {
   if (!region.Contains(p.x(), p.y())) return false;
-  if (region.kind != GoalRegion::Kind::kInside) return true;
-  // In a room (or any footprint): the whole body, with a margin of `at`.
-  const double r = params_.robot_radius_m + params_.interpretation.at_distance_m;
+  // In a room (or any footprint): the whole body, with a margin of `at`; elsewhere the
+  // estimate's error: a margin inside the region.
+  const double r = region.kind == GoalRegion::Kind::kInside
+                       ? params_.robot_radius_m + params_.interpretation.at_distance_m
+                       : params_.tasks.arrival_margin_m;
+  if (r <= 0.0) return true;
   for (int k = 0; k < 8; ++k) {
     const double a = k * M_PI / 4;
     if (!region.Contains(p.x() + r * std::cos(a), p.y() + r * std::sin(a))) return false;

@@ -131,6 +131,10 @@ struct TaskParameters {
   /// sensors put back. When the goal then still cannot be fitted in the free space, every
   /// sensed feature is taken back (move_base's aggressive reset) before the task fails.
   double clear_radius_m = 1.5;
+  /// A GO task is done early (before Navigate's success) only when the estimate lies this far
+  /// inside its goal region (m), >= 0: the estimate is some cm off, and a robot stopped at the
+  /// region's edge on its estimate was 0.36-0.37 m from a point whose region was 0.3 m.
+  double arrival_margin_m = 0.1;
   double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
   double stop_timeout_s = 3.0;     ///< Longest wait for the robot to stop (s), > 0.
   double pose_timeout_s = 60.0;    ///< Longest wait for a pose before interpreting (s), > 0.
