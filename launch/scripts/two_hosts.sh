@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Two ROS hosts on this machine (./spott run --two-hosts): two network namespaces joined by a
-# veth pair, host A at 10.77.0.1 and host B at 10.77.0.2, with an sshd on B that lets roslaunch
-# (paramiko) start B's nodes. Runs COMMAND on host A with the ROS environment of a two-host
-# launch; removes everything when COMMAND ends. Needs root (namespaces) and openssh-server.
-#   two_hosts.sh COMMAND [ARGS...]
-# COMMAND sees ROS_MASTER_URI=http://10.77.0.1:11311, ROS_IP=10.77.0.1, SPOTT_HOST_A/B, and a
-# HOME whose ~/.ssh knows B; with SPOTT_HOSTS_NODES=FILE the script writes there, once the
-# stack is up, every node with the URI it serves on (`rosnode list -a`).
+# veth pair, host A at $SPOTT_HOST_A and host B at $SPOTT_HOST_B (default 10.77.0.1 and
+# 10.77.0.2, a /24), with an sshd on B that lets roslaunch (paramiko) start B's nodes. Runs
+# COMMAND on host A with the ROS environment of a two-host launch; removes everything when
+# COMMAND ends. Needs root (namespaces) and openssh-server.
+#   [SPOTT_HOST_A=.. SPOTT_HOST_B=..] two_hosts.sh COMMAND [ARGS...]
+# COMMAND sees ROS_MASTER_URI=http://A:11311, ROS_IP=A and a HOME whose ~/.ssh knows B; with
+# SPOTT_HOSTS_NODES=FILE the script writes there, once the stack is up, every node with the URI
+# it serves on (`rosnode list -a`).
 set -u
-readonly A=10.77.0.1 B=10.77.0.2 NS_A=spott_host_a NS_B=spott_host_b
+readonly A=${SPOTT_HOST_A:-10.77.0.1} B=${SPOTT_HOST_B:-10.77.0.2} NS_A=spott_host_a NS_B=spott_host_b
 die() { echo "two_hosts: $*" >&2; exit 2; }
 
 [[ $# -ge 1 ]] || die "usage: two_hosts.sh COMMAND [ARGS...]"
@@ -63,7 +64,7 @@ for _ in $(seq 50); do [[ -s "$tmp/sshd.pid" ]] && break; sleep 0.1; done
 # Logs stay where ROS keeps them; only ssh's files come from the temporary HOME.
 run_a() {
   ip netns exec "$NS_A" env -u ROS_HOSTNAME HOME="$tmp/home" ROS_HOME="${ROS_HOME:-$HOME/.ros}" \
-    ROS_MASTER_URI="http://$A:11311" ROS_IP="$A" SPOTT_HOST_A="$A" SPOTT_HOST_B="$B" "$@"
+    ROS_MASTER_URI="http://$A:11311" ROS_IP="$A" "$@"
 }
 if [[ -n "${SPOTT_HOSTS_NODES:-}" ]]; then
   # Once nodes of both hosts are up, what each serves from.
