@@ -12,6 +12,17 @@ endif()
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE RelWithDebInfo)
 endif()
+# RelWithDebInfo keeps line tables only (-g1): backtraces, perf and gdb breakpoints still name
+# file and line, and the build takes a third less time than with -g (measured on the 2-core CI
+# machine: 33.5 s -> 23.6 s for tr_plus_controller_node.cpp). -DSPOTT_FULL_DEBUG_INFO=ON brings
+# back -g for a session in gdb that needs local variables.
+option(SPOTT_FULL_DEBUG_INFO "RelWithDebInfo with -g (variables) instead of -g1 (lines)" OFF)
+if(NOT SPOTT_FULL_DEBUG_INFO)
+  string(REGEX REPLACE "(^| )-g( |$)" "\\1-g1\\2" CMAKE_CXX_FLAGS_RELWITHDEBINFO
+         "${CMAKE_CXX_FLAGS_RELWITHDEBINFO}")
+  string(REGEX REPLACE "(^| )-g( |$)" "\\1-g1\\2" CMAKE_C_FLAGS_RELWITHDEBINFO
+         "${CMAKE_C_FLAGS_RELWITHDEBINFO}")
+endif()
 
 # spott_catkin_package(CORE <core library target> <catkin_package arguments>...)
 # catkin_package() plus an export of the ROS-free core library alone: a consumer that must not
