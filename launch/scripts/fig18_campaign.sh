@@ -34,7 +34,8 @@ run_one() {  # seed start_pose
     sleep 3
     rosbag record -q -O "$OUT/run-$1.bag" /sim/ground_truth /amcl_pose /localization_status \
       /belief_modes /map_updates /bumper /harmonic_planner/steering /harmonic_planner/status \
-      /tr_plus_controller/state /projected_goal /global_path /cmd_vel __name:=fig18_bag \
+      /tr_plus_controller/state /projected_goal /global_path /cmd_vel /infrared \
+      /cmd_vel/reflex __name:=fig18_bag \
       > /dev/null 2>&1 &
     bag=$!
   fi

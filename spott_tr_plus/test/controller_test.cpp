@@ -607,6 +607,49 @@ TEST(MoveAway, AContactAheadBacksOffAndOneAtTheSideTurnsFirst) {
   EXPECT_TRUE(side.timed_out());
 }
 
+// Fig. 18 seed 2 (2026-12-04): an infrared reflex in d_104's doorway moved the robot into the
+// doorway's jamb. With the map's known structure the reflex never drives the body into it.
+TEST(MoveAway, NeverDrivesTheBodyIntoTheKnownStructure) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  KnownStructure known;
+  known.Build(db);
+  ReflexParameters p;
+  // In hall_w, 0.0965 m between the body and the south wall's face (y = 7.075), facing east.
+  const Pose2 at{5.0, 7.4, 0.0};
+  // A source at the robot's north side puts "away" straight into that wall: without the map
+  // the reflex turns to go there; with it, it stays where it is.
+  MoveAway blind(Vec2(5.0, 7.4 + kRadius), 0.2, at, 0.0, p);
+  auto v = blind.Step(at, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_NE(v->angular_rps, 0.0);
+  MoveAway seeing(Vec2(5.0, 7.4 + kRadius), 0.2, at, 0.0, p, &known, kRadius);
+  EXPECT_FALSE(seeing.Step(at, 0.0));
+  EXPECT_TRUE(seeing.blocked());
+  EXPECT_FALSE(seeing.timed_out());
+  // North and a little ahead: turning to "away" (south-south-west) is not clear; backing
+  // straight west along the axis is, and still moves away.
+  MoveAway ahead(Vec2(5.1, 7.75), 0.2, at, 0.0, p, &known, kRadius);
+  v = ahead.Step(at, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_DOUBLE_EQ(v->linear_mps, -p.speed_mps);
+  EXPECT_DOUBLE_EQ(v->angular_rps, 0.0);
+  // In d_104 (x 15.55 .. 16.45), heading south, touching the east jamb: west across the
+  // doorway is clear, the reflex turns to go there.
+  const Pose2 door{16.21, 6.90, -M_PI / 2};
+  MoveAway jamb(Vec2(16.45, 6.93), 0.2, door, 0.0, p, &known, kRadius);
+  v = jamb.Step(door, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_NE(v->angular_rps, 0.0);
+  EXPECT_FALSE(jamb.blocked());
+  // Touching the wall it faces (a bumper contact): backing off it stays possible.
+  const Pose2 touching{5.0, 7.075 + kRadius - 0.005, -M_PI / 2};
+  MoveAway off(Vec2(5.0, 7.075), 0.3, touching, 0.0, p, &known, kRadius);
+  v = off.Step(touching, 0.0);
+  ASSERT_TRUE(v);
+  EXPECT_DOUBLE_EQ(v->linear_mps, -p.speed_mps);
+  EXPECT_FALSE(off.blocked());
+}
+
 TEST(Teleop, ANewObstacleAheadIsAvoidedAndTheCommandedDirectionKeptOtherwise) {
   const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   KnownStructure known;

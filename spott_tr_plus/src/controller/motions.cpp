@@ -53,16 +53,29 @@ std::vector<std::string> ValidateParameters(const TeleopParameters& p) {
 // --- MoveAway ------------------------------------------------------------------------------------
 
 MoveAway::MoveAway(const Vec2& source, double distance_m, const Pose2& start, double now_s,
-                   const ReflexParameters& params)
+                   const ReflexParameters& params, const KnownStructure* known, double radius_m)
     : source_(source),
       target_distance_m_((start.Position() - source).norm() + std::max(0.0, distance_m)),
       started_s_(now_s),
-      params_(params) {}
+      params_(params),
+      known_(known),
+      radius_m_(radius_m) {}
+
+bool MoveAway::Clear(const Vec2& at, double heading, double length_m) const {
+  if (!known_) return true;
+  // A body already touching (the contact's own wall, or one the estimate puts it into) is
+  // checked with the radius it has room for: moving off the structure stays possible, moving
+  // further into it does not.
+  const double radius = std::min(radius_m_, known_->Clearance(at, radius_m_ + 0.1) - 0.01);
+  if (radius <= 0.0) return true;  // the centre on the structure: the estimate is no help
+  return known_->FreeRun(at, heading, radius, length_m) >= length_m;
+}
 
 std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
   const Vec2 away = pose.Position() - source_;
   const double d = away.norm();
   if (d >= target_distance_m_) return std::nullopt;
+  if (blocked_) return std::nullopt;
   if (now_s - started_s_ > params_.timeout_s) {
     timed_out_ = true;
     return std::nullopt;
@@ -73,8 +86,24 @@ std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
   const double backward_error = Wrap(want - (pose.yaw + M_PI));
   const bool forwards = std::abs(forward_error) <= std::abs(backward_error);
   const double error = forwards ? forward_error : backward_error;
+  const bool aligned = std::abs(error) <= params_.align_rad;
+  const double axis = pose.yaw + (forwards ? 0.0 : M_PI);
+  // The way still to go (plus a step) must be clear of the known structure, on the heading the
+  // robot will drive: "away" itself when it turns first.
+  const double run = std::max(0.05, target_distance_m_ - d + 0.02);
   Velocity v;
-  if (std::abs(error) > params_.align_rad) {
+  if (!Clear(pose.Position(), aligned ? axis : want, run)) {
+    // Turning towards "away" is what is not clear: straight along the axis, which still moves
+    // away while "away" is less than 90 degrees off it, if that is clear.
+    if (!aligned && std::abs(error) < M_PI / 2 - 0.05 &&
+        Clear(pose.Position(), axis, std::min(1.0, run / std::cos(error)))) {
+      v.linear_mps = (forwards ? 1.0 : -1.0) * params_.speed_mps;
+      return v;
+    }
+    blocked_ = true;
+    return std::nullopt;
+  }
+  if (!aligned) {
     v.angular_rps = std::copysign(params_.turn_rps, error);  // turn in place first
     return v;
   }
@@ -95,6 +124,16 @@ void KnownStructure::Build(const spott_map::MapDatabase& db) {
     structure_.AddFeature(spott_map::MakeSegment("door:" + door.id, door.opening, "door", 0.05));
   }
   built_ = true;
+}
+
+double KnownStructure::Clearance(const Vec2& at, double max_m) const {
+  double best = max_m;
+  if (!built_) return best;
+  for (const spott_map::MapFeature* f :
+       structure_.FeaturesIn({at - Vec2(max_m, max_m), at + Vec2(max_m, max_m)})) {
+    best = std::min(best, f->DistanceTo(at));
+  }
+  return best;
 }
 
 double KnownStructure::FreeRun(const Vec2& from, double heading, double radius_m,

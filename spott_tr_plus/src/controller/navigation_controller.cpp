@@ -382,8 +382,9 @@ void NavigationController::Bind(Registry& r) {
           Complete(c.ticket, false);
           return;
         }
-        auto reflex = std::make_unique<Reflex>(
-            Reflex{c.ticket, MoveAway(*p, dist, *pose_, c.now, params_.reflex)});
+        auto reflex = std::make_unique<Reflex>(Reflex{
+            c.ticket,
+            MoveAway(*p, dist, *pose_, c.now, params_.reflex, &known_, params_.robot_radius_m)});
         // The first command at once (the latency that matters), then the valve.
         if (const auto v = reflex->motion.Step(*pose_, c.now)) io_->Drive("reflex", *v);
         if (!wheels_taken_) {

@@ -36,25 +36,40 @@ struct ReflexParameters {
 
 std::vector<std::string> ValidateParameters(const ReflexParameters& p);
 
+class KnownStructure;
+
 /// SPOTT Figs. 7-8, "move away from the source of collision": drives the robot along its own
 /// axis (forwards or backwards, whichever moves it away; turning in place first when the
 /// source is at its side) until its centre is `distance` farther from the source than at the
-/// start, or the timeout.
+/// start, or the timeout. With the map's known structure it never drives the body into it:
+/// in a doorway "away" from one jamb can be straight at the other, and a misplaced source can
+/// put "away" into a wall; it then takes the other end of its axis if that still moves away,
+/// or stops where it is (`blocked`).
 class MoveAway {
  public:
+  /// `known` (may be null: no check) must outlive the motion; `radius_m` is the body's.
   MoveAway(const Vec2& source, double distance_m, const Pose2& start, double now_s,
-           const ReflexParameters& params);
-  /// The command at `pose` (map frame); nullopt once moved away (or timed out: `timed_out`).
+           const ReflexParameters& params, const KnownStructure* known = nullptr,
+           double radius_m = 0.0);
+  /// The command at `pose` (map frame); nullopt once moved away, or timed out (`timed_out`),
+  /// or with no way away that is clear of the known structure (`blocked`).
   std::optional<Velocity> Step(const Pose2& pose, double now_s);
   bool timed_out() const { return timed_out_; }
+  bool blocked() const { return blocked_; }
   const Vec2& source() const { return source_; }
 
  private:
+  /// The body can drive `length_m` from `at` along `heading` without meeting known structure.
+  bool Clear(const Vec2& at, double heading, double length_m) const;
+
   Vec2 source_;
   double target_distance_m_;
   double started_s_;
   ReflexParameters params_;
+  const KnownStructure* known_;
+  double radius_m_;
   bool timed_out_ = false;
+  bool blocked_ = false;
 };
 
 struct TeleopParameters {
@@ -76,6 +91,8 @@ class KnownStructure {
   /// Distance (m) the robot's centre can travel from `from` along `heading` before its body
   /// (a disc of `radius_m`) meets a known structure, to 1 mm; `max_m` when none within it.
   double FreeRun(const Vec2& from, double heading, double radius_m, double max_m) const;
+  /// Distance (m) from `at` to the nearest known structure; `max_m` when none within it.
+  double Clearance(const Vec2& at, double max_m) const;
   bool built() const { return built_; }
 
  private:
