@@ -79,7 +79,11 @@ class SimNode {
           nh.advertise<sensor_msgs::Range>(ring.name + "/range", ring.mounts.size() * 2));
     }
     if (spec.laser) scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
-    if (spec.bumper) bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
+    if (spec.bumper) {
+      bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
+      bumper_markers_pub_ =
+          nh.advertise<visualization_msgs::MarkerArray>("bumper_markers", 1, true);
+    }
     if (!spec.profilers.empty()) {
       profile_pub_ = nh.advertise<spott_msgs::RangeProfile>("range_profile", 10);
       head_sub_ = nh.subscribe("range_profile/point_head", 10, &SimNode::OnPointHead, this);
@@ -239,7 +243,8 @@ class SimNode {
     for (std::size_t r = 0; r < spec.rings.size(); ++r) {
       const RangeRingSpec& ring = spec.rings[r];
       const std::vector<double> ranges = sim_->SenseRing(robot_, ring, rng_);
-      ring_pubs_[r].publish(conv::ToRangeRing(ring, ranges, params_.base_frame, stamp));
+      ring_pubs_[r].publish(
+          conv::ToRangeRing(ring, ranges, params_.base_frame, stamp, sim_->turret_yaw(robot_)));
       if (range_pubs_[r].getNumSubscribers() > 0) {
         for (std::size_t i = 0; i < ranges.size(); ++i) {
           range_pubs_[r].publish(conv::ToRange(ring, i, ranges[i], stamp));
@@ -247,8 +252,13 @@ class SimNode {
       }
     }
     if (spec.bumper) {
-      bumper_pub_.publish(
-          conv::ToBumperRing(*spec.bumper, sim_->Bumper(robot_), params_.base_frame, stamp));
+      const std::vector<bool> pressed = sim_->Bumper(robot_);
+      bumper_pub_.publish(conv::ToBumperRing(*spec.bumper, pressed, params_.base_frame, stamp));
+      if (pressed != last_pressed_) {  // on change: rviz keeps the last
+        last_pressed_ = pressed;
+        bumper_markers_pub_.publish(
+            conv::ToBumperMarkers(*spec.bumper, spec.radius_m, pressed, params_.base_frame, stamp));
+      }
     }
   }
 
@@ -461,8 +471,9 @@ class SimNode {
   double last_command_s_ = 0.0;
   int markers_revision_ = -1;
   int obstacle_counter_ = 0;
+  std::vector<bool> last_pressed_;  ///< The bumper markers are published on change.
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
-      markers_pub_, profile_pub_;
+      bumper_markers_pub_, markers_pub_, profile_pub_;
   std::vector<ros::Publisher> ring_pubs_, range_pubs_;
   ros::Subscriber cmd_sub_, turret_sub_, head_sub_;
   ConsumerPacer pacer_;

@@ -7,6 +7,8 @@
 #include <spott_msgs/Door.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "spott_ros/markers.h"
+
 namespace robot_sim::ros_conversions {
 
 namespace {
@@ -23,7 +25,8 @@ geometry_msgs::Quaternion YawToQuaternion(double yaw) {
 Twist2 FromMsg(const geometry_msgs::Twist& msg) { return {msg.linear.x, msg.angular.z}; }
 
 spott_msgs::RangeRing ToRangeRing(const RangeRingSpec& ring, const std::vector<double>& ranges,
-                                  const std::string& base_frame, const ros::Time& stamp) {
+                                  const std::string& base_frame, const ros::Time& stamp,
+                                  double turret_yaw) {
   spott_msgs::RangeRing msg;
   msg.header.frame_id = base_frame;
   msg.header.stamp = stamp;
@@ -32,11 +35,12 @@ spott_msgs::RangeRing ToRangeRing(const RangeRingSpec& ring, const std::vector<d
   msg.field_of_view = ring.field_of_view;
   msg.min_range = ring.min_range;
   msg.max_range = ring.max_range;
+  const double c = std::cos(turret_yaw), s = std::sin(turret_yaw);
   for (const Mount& m : ring.mounts) {
     geometry_msgs::Pose2D p;
-    p.x = m.x;
-    p.y = m.y;
-    p.theta = m.yaw;
+    p.x = c * m.x - s * m.y;
+    p.y = s * m.x + c * m.y;
+    p.theta = std::atan2(std::sin(m.yaw + turret_yaw), std::cos(m.yaw + turret_yaw));
     msg.mounts.push_back(p);
     msg.frame_ids.push_back(m.frame_id);
   }
@@ -114,6 +118,29 @@ spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<
   }
   msg.pressed.assign(pressed.begin(), pressed.end());
   return msg;
+}
+
+visualization_msgs::MarkerArray ToBumperMarkers(const BumperSpec& bumper, double radius_m,
+                                                const std::vector<bool>& pressed,
+                                                const std::string& base_frame,
+                                                const ros::Time& stamp) {
+  visualization_msgs::MarkerArray out;
+  visualization_msgs::Marker m = spott_ros::MakeMarker(
+      "bumper", 0, visualization_msgs::Marker::SPHERE_LIST, base_frame, stamp);
+  m.scale.x = m.scale.y = m.scale.z = 0.08;
+  m.color = spott_ros::Colour(1.0f, 0.1f, 0.1f);
+  const double width = 2 * M_PI / bumper.segments;
+  for (std::size_t i = 0; i < pressed.size() && static_cast<int>(i) < bumper.segments; ++i) {
+    if (!pressed[i]) continue;
+    geometry_msgs::Point p;
+    p.x = radius_m * std::cos(i * width);
+    p.y = radius_m * std::sin(i * width);
+    p.z = 0.1;
+    m.points.push_back(p);
+  }
+  if (m.points.empty()) m.action = visualization_msgs::Marker::DELETEALL;
+  out.markers.push_back(m);
+  return out;
 }
 
 sensor_msgs::BatteryState ToBatteryState(const Battery& battery, const std::string& frame,

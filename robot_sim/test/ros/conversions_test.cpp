@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "robot_sim/range_sensors.h"
 #include "robot_sim/ros/conversions.h"
 
 namespace robot_sim {
@@ -27,6 +28,22 @@ TEST(ConversionsTest, RangeRingKeepsMountsFramesAndDropouts) {
   EXPECT_TRUE(std::isnan(msg.ranges[1]));
   EXPECT_EQ(msg.frame_ids[1], "sonar_2");
   EXPECT_DOUBLE_EQ(msg.mounts[1].theta, M_PI / 2);
+}
+
+// The sensors ride on the Nomad's turret (PlaceMount): with the turret turned the mounts the
+// stack reads in base_link turn with it, or every echo lands in the wrong place.
+TEST(ConversionsTest, RangeRingMountsTurnWithTheTurret) {
+  const auto msg =
+      conv::ToRangeRing(TwoSonars(), {1.5, 2.0}, "base_link", ros::Time(3.0), M_PI / 2);
+  ASSERT_EQ(msg.mounts.size(), 2u);
+  const robot_sim::TransducerPose placed =
+      robot_sim::PlaceMount(TwoSonars().mounts[1], {0.0, 0.0, 0.0}, M_PI / 2);
+  EXPECT_NEAR(msg.mounts[1].x, placed.origin.x(), 1e-9);
+  EXPECT_NEAR(msg.mounts[1].y, placed.origin.y(), 1e-9);
+  EXPECT_NEAR(msg.mounts[1].theta, placed.yaw, 1e-9);
+  EXPECT_NEAR(msg.mounts[0].x, 0.0, 1e-9);
+  EXPECT_NEAR(msg.mounts[0].y, 0.2, 1e-9);
+  EXPECT_NEAR(msg.mounts[0].theta, M_PI / 2, 1e-9);
 }
 
 TEST(ConversionsTest, RangeWithoutEchoIsInfinityPerRep117) {
@@ -102,6 +119,22 @@ TEST(ConversionsTest, VoxelMarkersGroupLeavesBySize) {
   ASSERT_EQ(m.markers.size(), 3u);  // DELETEALL + two sizes
   EXPECT_EQ(m.markers[1].points.size(), 2u);
   EXPECT_DOUBLE_EQ(m.markers[2].scale.x, 0.1);
+}
+
+TEST(ConversionsTest, BumperMarkersShowThePressedSegmentsOnTheShell) {
+  BumperSpec b;  // 20 segments, 18 degrees apart
+  std::vector<bool> pressed(20, false);
+  pressed[5] = true;  // 90 degrees: the robot's left
+  auto msg = conv::ToBumperMarkers(b, 0.2285, pressed, "base_link", ros::Time(1));
+  ASSERT_EQ(msg.markers.size(), 1u);
+  const auto& m = msg.markers[0];
+  EXPECT_EQ(m.header.frame_id, "base_link");
+  EXPECT_EQ(m.action, visualization_msgs::Marker::ADD);
+  ASSERT_EQ(m.points.size(), 1u);
+  EXPECT_NEAR(m.points[0].x, 0.0, 1e-9);
+  EXPECT_NEAR(m.points[0].y, 0.2285, 1e-9);
+  msg = conv::ToBumperMarkers(b, 0.2285, std::vector<bool>(20, false), "base_link", ros::Time(2));
+  EXPECT_EQ(msg.markers[0].action, visualization_msgs::Marker::DELETEALL);  // none pressed
 }
 
 }  // namespace

@@ -28,9 +28,11 @@ namespace robot_sim::ros_conversions {
 
 Twist2 FromMsg(const geometry_msgs::Twist& msg);
 
-/// A whole ring (NaN stays NaN: a dropped-out transducer).
+/// A whole ring (NaN stays NaN: a dropped-out transducer). The rings ride on the turret
+/// (`PlaceMount`): their mounts are given in `base_frame`, turned by `turret_yaw` (rad).
 spott_msgs::RangeRing ToRangeRing(const RangeRingSpec& ring, const std::vector<double>& ranges,
-                                  const std::string& base_frame, const ros::Time& stamp);
+                                  const std::string& base_frame, const ros::Time& stamp,
+                                  double turret_yaw = 0.0);
 /// One transducer for rviz; no echo (max range) and dropouts become +inf / NaN (REP-117).
 sensor_msgs::Range ToRange(const RangeRingSpec& ring, std::size_t index, double range,
                            const ros::Time& stamp);
@@ -42,6 +44,12 @@ spott_msgs::RangeProfile ToRangeProfile(const ProfilerSpec& profiler, bool horiz
                                         const std::vector<double>& ranges, const ros::Time& stamp);
 spott_msgs::BumperRing ToBumperRing(const BumperSpec& bumper, const std::vector<bool>& pressed,
                                     const std::string& base_frame, const ros::Time& stamp);
+/// rviz: the pressed segments as red spheres on the body's shell (`radius_m`, in `base_frame`),
+/// or a DELETEALL when none is pressed.
+visualization_msgs::MarkerArray ToBumperMarkers(const BumperSpec& bumper, double radius_m,
+                                                const std::vector<bool>& pressed,
+                                                const std::string& base_frame,
+                                                const ros::Time& stamp);
 nav_msgs::Odometry ToOdometry(const spott_map::Pose2& pose, const Twist2& twist,
                               const std::string& frame, const std::string& child,
                               const ros::Time& stamp);
