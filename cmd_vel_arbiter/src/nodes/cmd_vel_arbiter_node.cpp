@@ -4,7 +4,8 @@
 //
 // Subscribes: cmd_vel/<source> (geometry_msgs/Twist) for every configured source, bumper
 // (spott_msgs/BumperRing), clearance/topics (spott_msgs/RangeRing: sonar, infrared). Publishes:
-// cmd_vel (geometry_msgs/Twist), ~status (spott_msgs/ArbiterStatus, latched). Services:
+// cmd_vel (geometry_msgs/Twist), ~status (spott_msgs/ArbiterStatus, latched), ~driver_marker
+// (visualization_msgs/Marker, latched: who drives, as text over the robot for rviz). Services:
 // ~take_wheels, ~release_wheels, ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
 #include <ros/ros.h>
 #include <spott_msgs/ReleaseWheels.h>
@@ -35,6 +36,7 @@ class ArbiterNode {
         refusals_(nh, "cmd_vel_arbiter") {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
+    marker_pub_ = pnh.advertise<visualization_msgs::Marker>("driver_marker", 1, true);
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     for (const SourceParameters& s : p.arbiter.sources) {
       const std::string name = s.name;
@@ -86,6 +88,7 @@ class ArbiterNode {
   }
 
   void OnBumper(const spott_msgs::BumperRing& ring) {
+    if (!ring.header.frame_id.empty()) base_frame_ = ring.header.frame_id;  // for the marker
     std::string error;
     const auto angles = conv::PressedAngles(ring, &error);
     if (!angles) {
@@ -179,7 +182,9 @@ class ArbiterNode {
 
   void PublishStatus() {
     published_revision_ = arbiter_.revision();
-    status_pub_.publish(conv::ToStatus(arbiter_, ros::Time::now()));
+    const spott_msgs::ArbiterStatus status = conv::ToStatus(arbiter_, ros::Time::now());
+    status_pub_.publish(status);
+    marker_pub_.publish(conv::ToDriverMarker(status, base_frame_));
   }
 
   Arbiter arbiter_;
@@ -187,7 +192,8 @@ class ArbiterNode {
   RingBoundsSet rings_;  ///< The clearance rings' latest bounds.
   spott_ros::InputRefusals refusals_;
   std::uint64_t published_revision_ = ~std::uint64_t{0};
-  ros::Publisher cmd_pub_, status_pub_;
+  ros::Publisher cmd_pub_, status_pub_, marker_pub_;
+  std::string base_frame_ = "base_link";  ///< The bumper ring's frame once one came (REP-105).
   std::vector<ros::Subscriber> inputs_;
   ros::Subscriber bumper_sub_;
   std::vector<ros::Subscriber> ring_subs_;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "spott_ros/markers.h"
+
 namespace cmd_vel_arbiter::ros_conversions {
 
 Velocity FromTwist(const geometry_msgs::Twist& t, bool* ignored) {
@@ -82,6 +84,23 @@ spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stam
   s.bumper_stops = arbiter.bumper_stops();
   s.refused = arbiter.refused();
   return s;
+}
+
+visualization_msgs::Marker ToDriverMarker(const spott_msgs::ArbiterStatus& status,
+                                          const std::string& base_frame) {
+  visualization_msgs::Marker m =
+      spott_ros::MakeMarker("cmd_vel_arbiter", 0, visualization_msgs::Marker::TEXT_VIEW_FACING,
+                            base_frame, status.header.stamp);
+  m.pose.position.z = 1.0;  // below the TR+ controller's firing rule
+  m.scale.z = 0.25;
+  std::string text = "wheels: " + (status.driver.empty() ? std::string("nobody") : status.driver);
+  if (!status.exclusive_holder.empty()) text += " (held by " + status.exclusive_holder + ")";
+  if (status.bumper_stop) text += "; bumper stop";
+  if (!status.limits_reason.empty()) text += "; limits: " + status.limits_reason;
+  m.text = text;
+  m.color = status.bumper_stop ? spott_ros::Colour(1.0f, 0.2f, 0.2f)
+                               : spott_ros::Colour(0.6f, 0.9f, 1.0f);
+  return m;
 }
 
 }  // namespace cmd_vel_arbiter::ros_conversions

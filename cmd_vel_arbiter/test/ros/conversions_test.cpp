@@ -91,5 +91,22 @@ TEST(Conversions, ARangeRingGivesTheClearanceBoundsOrIsRefusedNamingTheField) {
   EXPECT_FALSE(RingBounds(r, p, &error));
 }
 
+TEST(Conversions, TheDriverMarkerSaysWhoDrivesOverTheRobot) {
+  spott_msgs::ArbiterStatus s;
+  s.header.stamp = ros::Time(5.0);
+  auto m = ToDriverMarker(s, "base_link");
+  EXPECT_EQ(m.header.frame_id, "base_link");
+  EXPECT_EQ(m.type, visualization_msgs::Marker::TEXT_VIEW_FACING);
+  EXPECT_EQ(m.text, "wheels: nobody");
+  s.driver = "reflex";
+  s.exclusive_holder = "reflex";
+  s.bumper_stop = true;
+  s.limits_reason = "office: slow";
+  m = ToDriverMarker(s, "b21/base_link");
+  EXPECT_EQ(m.header.frame_id, "b21/base_link");
+  EXPECT_EQ(m.text, "wheels: reflex (held by reflex); bumper stop; limits: office: slow");
+  EXPECT_GT(m.color.r, m.color.g);  // red on a bumper stop
+}
+
 }  // namespace
 }  // namespace cmd_vel_arbiter::ros_conversions

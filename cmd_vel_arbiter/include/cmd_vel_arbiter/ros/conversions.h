@@ -10,6 +10,7 @@
 #include <spott_msgs/ArbiterStatus.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/RangeRing.h>
+#include <visualization_msgs/Marker.h>
 
 #include "cmd_vel_arbiter/arbiter.h"
 #include "cmd_vel_arbiter/clearance.h"
@@ -33,5 +34,10 @@ std::optional<SpeedBounds> RingBounds(const spott_msgs::RangeRing& ring,
                                       const ClearanceParameters& p, std::string* error);
 
 spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp);
+
+/// rviz text over the robot (in `base_frame`): who drives ("wheels: planner"), whether it holds
+/// them exclusively, a bumper stop (red) and run-time limits with their reason.
+visualization_msgs::Marker ToDriverMarker(const spott_msgs::ArbiterStatus& status,
+                                          const std::string& base_frame);
 
 }  // namespace cmd_vel_arbiter::ros_conversions
