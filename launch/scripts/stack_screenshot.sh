@@ -10,10 +10,6 @@ OUT=${2:?usage: stack_screenshot.sh STACK OUT.png [SECONDS]}
 SECONDS_TO_RUN=${3:-40}
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 export PATH="/usr/bin:$PATH"
-set +u  # catkin's setup scripts read unset variables
-# shellcheck disable=SC1091
-source "$ROOT/.ws/devel/setup.bash"
-set -u
 [[ -f "$ROOT/launch/launch/$STACK.launch" ]] || { echo "no stack '$STACK'" >&2; exit 2; }
 OUT=$(realpath -m "$OUT")
 FB=$(mktemp -d)
@@ -28,7 +24,8 @@ case "$STACK" in
   noreils_chatila_hilare)
     send=(rostopic pub -1 /mission/goal spott_msgs/MissionActionGoal "{goal: {language: 1, name: example1_wall_following}}");;
 esac
-xvfb-run -a -s "-screen 0 1280x800x24 -fbdir $FB" bash -c '
+# env.sh: the workspace sourced, then the command.
+"$ROOT/launch/scripts/env.sh" xvfb-run -a -s "-screen 0 1280x800x24 -fbdir $FB" bash -c '
   roslaunch -p 11411 spott_launch "$0.launch" real_time_factor:=4.0 > "$1/launch.log" 2>&1 &
   launch=$!
   sleep 15
