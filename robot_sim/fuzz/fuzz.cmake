@@ -12,3 +12,15 @@ spott_add_parameter_fuzzer(robot_sim_parameters_fuzz
   CONFIG "${SPOTT_ROOT}/robot_sim/config/robot_sim.yaml"
   SOURCES "${SPOTT_ROOT}/robot_sim/src/ros/parameters.cpp"
   CORES robot_sim)
+
+# The service requests and velocity commands as the node takes them (conversions, then
+# ApplyFaultEvent / SetCommand on a simulator): needs a built workspace for spott_msgs' headers.
+spott_ros_fuzzcore(robot_sim_ros HEADER spott_msgs/Kidnap.h
+                   SOURCES "${SPOTT_ROOT}/robot_sim/src/ros/conversions.cpp"
+                           "${SPOTT_ROOT}/spott_ros/src/markers.cpp"
+                   INCLUDES "${SPOTT_ROOT}/spott_ros/include" /usr/include/bullet CORES robot_sim)
+if(TARGET robot_sim_ros_fuzzcore)
+  spott_add_fuzzer(sim_requests_fuzz "${CMAKE_CURRENT_LIST_DIR}/sim_requests_fuzz.cpp"
+                   CORES robot_sim_ros)
+  target_compile_definitions(sim_requests_fuzz PRIVATE SPOTT_ROOT="${SPOTT_ROOT}")
+endif()

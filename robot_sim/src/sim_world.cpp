@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "spott_map/geometry.h"
+#include "spott_map/world_loader.h"
 
 namespace robot_sim {
 
@@ -367,9 +368,16 @@ bool SimWorld::AddObstacle(const Solid& solid, std::string* error) {
   const bool sizes_ok = solid.size_x > 0 && solid.size_x < 100 && solid.height > 0 &&
                         solid.height < 100 &&
                         (solid.cylinder || (solid.size_y > 0 && solid.size_y < 100));
-  if (!sizes_ok || !Finite(solid.pose.x) || !Finite(solid.pose.y) || !Finite(solid.pose.yaw)) {
+  // Within a world file's bounds: an obstacle 1e185 m away sent the OctoMap insertion into an
+  // endless loop (sim_requests_fuzz), and no indoor floor reaches that far.
+  const double bound = spott_map::kWorldMaxCoordinate;
+  const bool pose_ok =
+      Finite(solid.pose.yaw) && std::abs(solid.pose.x) <= bound && std::abs(solid.pose.y) <= bound;
+  if (!sizes_ok || !pose_ok) {
     if (error)
-      *error = "obstacle '" + solid.id + "': sizes must be in (0, 100) m and the pose finite";
+      *error = "obstacle '" + solid.id +
+               "': sizes must be in (0, 100) m and the pose finite, x and y within " +
+               std::to_string(static_cast<int>(bound)) + " m of the origin";
     return false;
   }
   Solid s = solid;

@@ -101,6 +101,23 @@ TEST_F(SimWorldTest, ObstacleWithBadSizeIsRefused) {
   EXPECT_FALSE(error.empty());
 }
 
+// sim_requests_fuzz: /sim/add_obstacle at y = -4.7e185 (finite) never returned: the OctoMap
+// insertion of a solid that far from the origin did not end. Beyond a world file's bounds the
+// obstacle is refused at once.
+TEST_F(SimWorldTest, ObstacleFarOutsideAnyWorldIsRefused) {
+  Solid box;
+  box.id = "far";
+  box.size_x = box.size_y = box.height = 3.0;
+  box.pose = {1.68, -4.7e185, 0.0};
+  std::string error;
+  EXPECT_FALSE(world_.AddObstacle(box, &error));
+  EXPECT_NE(error.find("within 500 m"), std::string::npos) << error;
+  box.pose = {600.0, 1.0, 0.0};
+  EXPECT_FALSE(world_.AddObstacle(box, &error));
+  box.pose = {5.0, 5.0, NAN};
+  EXPECT_FALSE(world_.AddObstacle(box, &error));
+}
+
 TEST_F(SimWorldTest, LowObjectsLetHigherRaysPass) {
   // The crate is 0.5 m tall: a ray at 0.3 m hits it, one at 0.7 m passes over.
   auto low = world_.CastRay(Vector3d(7, 3, 0.3), Vector3d(7, -1, 0.3));
