@@ -5,6 +5,8 @@
 # The stacks (launch/launch/*.launch) and their topics: launch/README.md, "Stacks".
 import os
 
+import yaml
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 RVIZ = os.path.join(HERE, '..', 'rviz')
 
@@ -116,42 +118,10 @@ STACKS = {
 }
 
 
-def emit(value, indent):
-    """A small YAML writer in rviz's own layout (block mappings, flow for the empty ones)."""
-    pad = ' ' * indent
-    out = []
-    if isinstance(value, dict):
-        for k, v in value.items():
-            if isinstance(v, dict) and v and not all(isinstance(x, (int, float)) for x in v.values()):
-                out.append(f'{pad}{k}:')
-                out += emit(v, indent + 2)
-            elif isinstance(v, dict) and v:
-                out.append(f'{pad}{k}: {{' + ', '.join(f'{a}: {b}' for a, b in v.items()) + '}')
-            elif isinstance(v, dict):
-                out.append(f'{pad}{k}: {{}}')
-            elif isinstance(v, list):
-                out.append(f'{pad}{k}:')
-                for item in v:
-                    lines = emit(item, indent + 4)
-                    out.append(f'{pad}  - ' + lines[0].lstrip())
-                    out += lines[1:]
-            else:
-                out.append(f'{pad}{k}: {scalar(v)}')
-    return out
-
-
-def scalar(v):
-    if isinstance(v, bool):
-        return 'true' if v else 'false'
-    if v == '':
-        return '""'
-    return str(v)
-
-
 def config(displays, centre, scale):
     return {
         'Panels': [{'Class': 'rviz/Displays', 'Help Height': 0, 'Name': 'Displays',
-                    'Property Tree Widget': {'Expanded': '~', 'Splitter Ratio': 0.5},
+                    'Property Tree Widget': {'Expanded': None, 'Splitter Ratio': 0.5},
                     'Tree Height': 500}],
         'Visualization Manager': {
             'Class': '',
@@ -171,7 +141,7 @@ def config(displays, centre, scale):
                                   'Name': 'Current View', 'Near Clip Distance': 0.01,
                                   'Scale': scale, 'Target Frame': '<Fixed Frame>',
                                   'X': centre[0], 'Y': centre[1]},
-                      'Saved': '~'},
+                      'Saved': None},
         },
         'Window Geometry': {'Displays': {'collapsed': False}, 'Height': 800,
                             'Hide Left Dock': False, 'Hide Right Dock': True, 'Width': 1280,
@@ -183,7 +153,8 @@ def main():
     for name, (displays, centre, scale) in STACKS.items():
         path = os.path.join(RVIZ, name + '.rviz')
         with open(path, 'w') as f:
-            f.write('\n'.join(emit(config(displays, centre, scale), 0)) + '\n')
+            yaml.safe_dump(config(displays, centre, scale), f, sort_keys=False,
+                           default_flow_style=False)
         print('wrote', os.path.relpath(path))
 
 
