@@ -122,6 +122,7 @@ void Controller(FuzzedDataProvider& in) {
   ExpectIn("tasks/goal_tolerance_m", k.goal_tolerance_m, "(0, inf)");
   Expect(k.navigate_retries >= 0, "tasks/navigate_retries < 0 accepted");
   ExpectIn("tasks/retry_delay_s", k.retry_delay_s, "[0, inf)");
+  ExpectIn("tasks/localized_wait_s", k.localized_wait_s, "(0, inf)");
   ExpectIn("tasks/stop_speed_mps", k.stop_speed_mps, "(0, inf)");
   ExpectIn("tasks/stop_timeout_s", k.stop_timeout_s, "(0, inf)");
   ExpectIn("tasks/pose_timeout_s", k.pose_timeout_s, "(0, inf)");

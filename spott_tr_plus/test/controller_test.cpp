@@ -68,9 +68,11 @@ class Controller : public ::testing::Test {
     c_->SetPlaces(world_.places);
   }
   void At(double x, double y, double yaw, double t, double v = 0.0) {
+    // Odometry first, as a moved robot's odometry comes with its pose: the fake robot's pose
+    // and odometry move together, the estimate does not jump.
     pose_ = Pose2{x, y, yaw};
-    c_->SetPose(pose_, t);
     c_->SetOdometry(pose_, v, 0.0, t);
+    c_->SetPose(pose_, t);
     c_->SetLocalization(true, t);
   }
   // Runs the controller's clock from t0 to t1, moving the fake robot with the commands of
@@ -115,6 +117,7 @@ TEST_F(Controller, GoInRoomSendsNavigateToAFreePointOfTheRoomAndReportsReached) 
   ASSERT_FALSE(io_.feedback.empty());
   EXPECT_EQ(io_.feedback.back().state, "driving");
   EXPECT_EQ(c_->firing_rule(), "APRIORI_MAP_TASK[2]: target_known(STATUS) -> set_goal(STATUS)");
+  c_->SetLocalization(true, 4.95);  // markov_localization's status, at 10 Hz: certain
   c_->NavigateDone(g.seq, NavigateOutcome::kSucceeded, "", 5.0);
   c_->Tick(5.05);
   ASSERT_EQ(io_.results.size(), 1u);
@@ -159,6 +162,86 @@ TEST_F(Controller, GoToAPointIsDoneEarlyOnlyWellInsideItsRegion) {
   ASSERT_EQ(io_.results.size(), 1u);
   EXPECT_EQ(io_.results[0].outcome, "reached");
   EXPECT_EQ(io_.results[0].message, "in the goal region");
+}
+
+// cim_office demo, lab -> meeting room: the localization lost the robot, relocalized 12 m off,
+// and the task was reported reached there. Reached is judged on a trusted estimate only.
+TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheckedAgain) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  const NavigateGoal g = io_.navigates[0];
+  // The estimate says "in the lab", but markov_localization is lost.
+  At(g.x, g.y, 0.0, 30.0);
+  c_->SetLocalization(false, 30.0);
+  c_->Tick(30.0);
+  EXPECT_TRUE(io_.results.empty()) << "in the goal region on a lost estimate";
+  c_->NavigateDone(g.seq, NavigateOutcome::kSucceeded, "", 30.1);
+  c_->Tick(30.2);
+  EXPECT_TRUE(io_.results.empty()) << "Navigate's success on a lost estimate";
+  ASSERT_FALSE(io_.feedback.empty());
+  EXPECT_EQ(io_.feedback.back().state, "waiting for the localization");
+  EXPECT_EQ(io_.navigates.size(), 1u) << "nothing is sent while the pose is unknown";
+  // Certain again, 6 m away in the hallway: the goal is sent anew and the task goes on.
+  At(g.x - 6.0, 8.25, 0.0, 35.0);
+  c_->Tick(35.0);
+  EXPECT_TRUE(io_.results.empty());
+  ASSERT_EQ(io_.navigates.size(), 2u);
+  EXPECT_EQ(io_.navigates[1].x, g.x);
+  EXPECT_EQ(io_.navigates[1].y, g.y);
+  EXPECT_EQ(io_.feedback.back().state, "driving");
+  // There, certain: reached.
+  At(g.x, g.y, 0.0, 60.0);
+  c_->NavigateDone(io_.navigates[1].seq, NavigateOutcome::kSucceeded, "", 60.0);
+  c_->Tick(60.05);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "reached");
+}
+
+TEST_F(Controller, ArrivalRightAfterAnEstimateJumpIsNotReachedBeforeItSettles) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  const NavigateGoal g = io_.navigates[0];
+  At(g.x - 4.0, g.y, 0.0, 20.0);
+  pose_ = Pose2{g.x, g.y, 0.0};  // certain, but the estimate jumped 4 m (odometry did not move)
+  c_->SetPose(pose_, 20.1);
+  c_->SetLocalization(true, 20.1);
+  c_->NavigateDone(g.seq, NavigateOutcome::kSucceeded, "", 20.1);
+  c_->Tick(20.2);
+  EXPECT_TRUE(io_.results.empty()) << "reached on an estimate that jumped 0.1 s ago";
+  const double settled = 20.2 + params_.localization.settle_s + 0.1;
+  c_->SetPose(pose_, settled);
+  c_->SetLocalization(true, settled);
+  c_->Tick(settled);
+  ASSERT_EQ(io_.results.size(), 1u) << "settled, in the goal region: reached";
+  EXPECT_EQ(io_.results[0].outcome, "reached");
+}
+
+TEST_F(Controller, ALocalizationThatStaysUncertainAtTheGoalCountsAsANavigateFailure) {
+  At(1.2, 8.25, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+  const NavigateGoal g = io_.navigates.at(0);
+  double t = 30.0;
+  At(g.x, g.y, 0.0, t);
+  c_->SetLocalization(false, t);
+  c_->NavigateDone(g.seq, NavigateOutcome::kSucceeded, "", t);
+  // Lost until the wait is over (the status keeps coming, saying lost).
+  for (; t < 30.0 + params_.tasks.localized_wait_s + 0.5; t += 0.5) {
+    c_->SetPose(pose_, t);
+    c_->SetLocalization(false, t);
+    c_->Tick(t);
+  }
+  EXPECT_TRUE(io_.results.empty()) << "one failure of navigate_retries + 1";
+  // Certain again, in the hallway: nothing is sent before retry_delay_s (a failure's retry,
+  // not the confirmation of an arrival), then the goal is sent again.
+  At(g.x - 6.0, 8.25, 0.0, t);
+  c_->Tick(t);
+  EXPECT_EQ(io_.navigates.size(), 1u);
+  Run(t, t + params_.tasks.retry_delay_s + 0.5, "none");
+  ASSERT_EQ(io_.navigates.size(), 2u);
+  EXPECT_EQ(io_.navigates[1].x, g.x);
+  EXPECT_TRUE(io_.results.empty());
 }
 
 TEST_F(Controller, MalformedTaskIsRefusedWithItsColumnAndTheRunningTaskGoesOn) {

@@ -83,6 +83,8 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
     v.push_back(Violation("tasks/clear_radius_m", "in [0, 10]", t.clear_radius_m));
   if (!(t.arrival_margin_m >= 0 && t.arrival_margin_m <= 2))
     v.push_back(Violation("tasks/arrival_margin_m", "in [0, 2]", t.arrival_margin_m));
+  if (!(t.localized_wait_s > 0))
+    v.push_back(Violation("tasks/localized_wait_s", "> 0", t.localized_wait_s));
   if (!(t.stop_speed_mps > 0))
     v.push_back(Violation("tasks/stop_speed_mps", "> 0", t.stop_speed_mps));
   if (!(t.stop_timeout_s > 0))
@@ -443,6 +445,7 @@ void NavigationController::Bind(Registry& r) {
           nav_owner_ = 0;
         }
         delayed_.erase(t);
+        if (unconfirmed_ && unconfirmed_->first == t) unconfirmed_.reset();
       });
   // Figs. 11-12 with no goal region: tele-operation (a direction), or heading toward the task's
   // direction while searching.
@@ -640,10 +643,12 @@ std::vector<Vec2> NavigationController::NewObstaclesNear(const Vec2& at, double 
 
 // --- Map -------------------------------------------------------------------------------------
 
-bool NavigationController::MappingAllowed(double now) const {
+bool NavigationController::PoseTrusted(double now) const {
   return pose_ && certain_ && now - localization_time_ <= params_.localization.max_age_s &&
          now >= mapping_resumes_;
 }
+
+bool NavigationController::MappingAllowed(double now) const { return PoseTrusted(now); }
 
 // The estimate jumped: the features sensed in the seconds before were placed where the robot
 // was believed to be, not where it was. Take them back (those near the robot move with it: the
@@ -918,7 +923,14 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
   nav_owner_ = 0;
   const bool goal_of_task = task_ && task_->phase == Task::Phase::kRunning && task_->in &&
                             task_->in->mode != TaskInterpretation::Mode::kSearch;
-  if (outcome == NavigateOutcome::kSucceeded) {
+  if (outcome == NavigateOutcome::kSucceeded && goal_of_task && !PoseTrusted(now)) {
+    // Navigate judged on an estimate the localization does not vouch for (lost, or jumped a
+    // moment ago): where the robot is, is not known. Stand and look again once it is.
+    unconfirmed_ = std::make_pair(owner, now);
+    task_->state = "waiting for the localization";
+    task_->message = "Navigate succeeded on an uncertain estimate: checked again once certain";
+    dirty_ = true;
+  } else if (outcome == NavigateOutcome::kSucceeded) {
     if (goal_of_task) {
       task_->phase = Task::Phase::kDone;
       task_->distance_remaining = 0.0;
@@ -926,31 +938,58 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
     }
     Complete(owner, true);
   } else if (goal_of_task) {
-    ++task_->failures;
     const std::string what = outcome == NavigateOutcome::kUnreachable ? "unreachable"
                              : outcome == NavigateOutcome::kPreempted ? "preempted"
                                                                       : "failed";
-    task_->message = "Navigate " + what + (reason.empty() ? "" : ": " + reason);
-    if (task_->failures > params_.tasks.navigate_retries) {
-      task_->phase = Task::Phase::kFailed;
-      dirty_ = true;
-      Complete(owner, false);
-    } else {
-      if (pose_ && params_.tasks.clear_radius_m > 0.0) {
-        const int cleared = ClearSensedNear(pose_->Position(), params_.tasks.clear_radius_m, now);
-        if (cleared > 0) {
-          std::ostringstream note;
-          note << "; " << cleared << " sensed features within " << params_.tasks.clear_radius_m
-               << " m taken back before the retry";
-          task_->message += note.str();
-        }
-      }
-      delayed_[owner] = now + params_.tasks.retry_delay_s;  // retried when set_goal restarts
-    }
+    NavigateFailed(owner, "Navigate " + what + (reason.empty() ? "" : ": " + reason), now);
   } else {
     Complete(owner, outcome == NavigateOutcome::kSucceeded);
   }
   Settle(now);
+}
+
+void NavigationController::NavigateFailed(Ticket owner, const std::string& message, double now) {
+  ++task_->failures;
+  task_->message = message;
+  if (task_->failures > params_.tasks.navigate_retries) {
+    task_->phase = Task::Phase::kFailed;
+    dirty_ = true;
+    Complete(owner, false);
+    return;
+  }
+  if (pose_ && params_.tasks.clear_radius_m > 0.0) {
+    const int cleared = ClearSensedNear(pose_->Position(), params_.tasks.clear_radius_m, now);
+    if (cleared > 0) {
+      std::ostringstream note;
+      note << "; " << cleared << " sensed features within " << params_.tasks.clear_radius_m
+           << " m taken back before the retry";
+      task_->message += note.str();
+    }
+  }
+  delayed_[owner] = now + params_.tasks.retry_delay_s;  // retried when set_goal restarts
+}
+
+// An arrival Navigate reported on an untrusted estimate: once the estimate is trusted again the
+// goal is sent anew (Navigate succeeds at once if the robot is there, else drives there).
+void NavigationController::ConfirmArrival(double now) {
+  if (!unconfirmed_) return;
+  const auto [ticket, since] = *unconfirmed_;
+  const bool running = task_ && task_->phase == Task::Phase::kRunning && !task_->ended &&
+                       task_->in && task_->in->goal;
+  if (!running) {
+    unconfirmed_.reset();
+    Complete(ticket, task_ && task_->phase == Task::Phase::kDone);
+  } else if (PoseTrusted(now)) {
+    unconfirmed_.reset();
+    task_->state = "driving";
+    SendGoalFor(ticket, *task_->in->goal, *task_->in, task_->command.speed, now);
+  } else if (now - since >= params_.tasks.localized_wait_s) {
+    unconfirmed_.reset();
+    std::ostringstream why;
+    why << "the localization stayed uncertain for " << params_.tasks.localized_wait_s
+        << " s after Navigate's arrival";
+    NavigateFailed(ticket, why.str(), now);
+  }
 }
 
 // --- Tasks -----------------------------------------------------------------------------------
@@ -1176,11 +1215,13 @@ void NavigationController::Tick(double now) {
   // in the region (`go along hallway(h)` from inside it) goes on to the goal point.
   if (task_ && task_->phase == Task::Phase::kRunning && !task_->ended && task_->in &&
       task_->in->goal && task_->in->mode == TaskInterpretation::Mode::kGoTo &&
-      task_->started_outside && pose_ && InGoalRegion(*task_->in->goal, pose_->Position())) {
+      task_->started_outside && PoseTrusted(now) &&
+      InGoalRegion(*task_->in->goal, pose_->Position())) {
     task_->phase = Task::Phase::kDone;
     task_->message = "in the goal region";
     dirty_ = true;
   }
+  ConfirmArrival(now);
   DriveMotions(now);
   Settle(now);
   SendFeedback(now);

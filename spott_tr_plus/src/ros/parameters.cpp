@@ -116,6 +116,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("tasks/retry_delay_s", k.retry_delay_s, "s");
   r.Get("tasks/clear_radius_m", k.clear_radius_m, "m");
   r.Get("tasks/arrival_margin_m", k.arrival_margin_m, "m");
+  r.Get("tasks/localized_wait_s", k.localized_wait_s, "s");
   r.Get("tasks/stop_speed_mps", k.stop_speed_mps, "m/s");
   r.Get("tasks/stop_timeout_s", k.stop_timeout_s, "s");
   r.Get("tasks/pose_timeout_s", k.pose_timeout_s, "s");

@@ -66,8 +66,9 @@ struct MapChange {
 
 struct TaskFeedback {
   std::int64_t id = 0;
-  std::string state;              ///< parsing | interpreting | driving | searching | teleoperating
-  std::string firing_rule;        ///< "PROGRAM[index]: condition -> action" (index 0-based)
+  std::string state;        ///< parsing | interpreting | driving | searching | teleoperating |
+                            ///< waiting for the localization
+  std::string firing_rule;  ///< "PROGRAM[index]: condition -> action" (index 0-based)
   double distance_remaining = 0;  ///< (m); NaN when unknown
   Pose2 pose;
 };
@@ -135,6 +136,11 @@ struct TaskParameters {
   /// inside its goal region (m), >= 0: the estimate is some cm off, and a robot stopped at the
   /// region's edge on its estimate was 0.36-0.37 m from a point whose region was 0.3 m.
   double arrival_margin_m = 0.1;
+  /// A GO is reached only on a trusted estimate (markov_localization certain, fresh, settled
+  /// after a jump): Navigate's success while it is not is checked again once it is, and counts
+  /// as a Navigate failure after this long (s), > 0. In cim_office's lab a relocalization once
+  /// put the estimate 12 m away and the task was reported reached there.
+  double localized_wait_s = 30.0;
   double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
   double stop_timeout_s = 3.0;     ///< Longest wait for the robot to stop (s), > 0.
   double pose_timeout_s = 60.0;    ///< Longest wait for a pose before interpreting (s), > 0.
@@ -251,6 +257,12 @@ class NavigationController {
   /// Takes back the sensed features within `radius` of `at`; returns how many.
   int ClearSensedNear(const Vec2& at, double radius, double now);
   bool MappingAllowed(double now) const;
+  /// The estimate may be acted on: certain, fresh and settled after the last jump.
+  bool PoseTrusted(double now) const;
+  /// A Navigate failure of the task's goal: retried after retry_delay_s, or the task fails.
+  void NavigateFailed(Ticket owner, const std::string& message, double now);
+  /// See `unconfirmed_`.
+  void ConfirmArrival(double now);
   void MapChanged();
   void UpdateFiringRule();
   void SendFeedback(double now);
@@ -305,7 +317,9 @@ class NavigationController {
   std::vector<std::unique_ptr<Task>> finishing_;  ///< Ended: reported once their scan settled.
   std::vector<std::pair<Ticket, bool>> completions_;
   std::map<Ticket, double> delayed_;  ///< Completions due later (retries).
-  bool dirty_ = false;                ///< A model change the conditions must see: scan.
+  /// Navigate succeeded on an estimate not trusted: (ticket, since), re-sent once it is.
+  std::optional<std::pair<Ticket, double>> unconfirmed_;
+  bool dirty_ = false;  ///< A model change the conditions must see: scan.
 
   std::uint64_t nav_seq_ = 0;
   Ticket nav_owner_ = 0;
