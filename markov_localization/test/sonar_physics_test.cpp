@@ -106,9 +106,19 @@ TEST(LostDetector, ACertaintyDropWhileTheFitDropsIsLost) {
     d.Update(1.0);
     EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
   }
-  // A scan at 0.4 x the usual fit (fast 0.7 x: above lost_ratio, below certainty_drop_ratio
-  // 0.7 once slow has moved) with the certainty falling: lost.
-  d.Update(1.0 + std::log(0.35));
+  // The fit at 0.65 x with the certainty falling (cim_office's lab: the Nomad turning by the
+  // partition dipped at 0.70 x, twice, each followed by a relocalization 4.5 m off): not lost.
+  d.Update(1.0 + std::log(0.25));  // fast 0.625, slow 0.9625 of the usual: 0.65 x
+  EXPECT_FALSE(d.OnCertainty(0.5, 0.8));
+  for (int i = 0; i < 20; ++i) {  // back to the usual fit, certain for a while
+    d.Update(1.0);
+    EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  }
+  // Two scans at 0.4 x the usual fit (fast 0.55 x slow: above lost_ratio 0.3, below
+  // certainty_drop_ratio 0.6), the certainty falling at the second: lost.
+  d.Update(1.0 + std::log(0.4));
+  EXPECT_FALSE(d.OnCertainty(0.95, 0.8));
+  d.Update(1.0 + std::log(0.4));
   EXPECT_TRUE(d.OnCertainty(0.5, 0.8));
 }
 
