@@ -284,7 +284,7 @@ class NavigationController {
   spott_map::MapDatabase db_;
   bool have_graph_ = false, have_features_ = false;
   std::vector<spott_map::Place> places_;
-  SensorMapper sonar_mapper_, quadris_mapper_;
+  SensorMapper sonar_mapper_, quadris_mapper_, infrared_mapper_;
   bool profiles_seen_ = false;  ///< QUADRIS profiles arrived: they sense the doors.
   KnownStructure known_;
   std::map<int, SensedBatch> batches_;
