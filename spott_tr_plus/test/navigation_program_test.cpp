@@ -53,10 +53,10 @@ TEST_F(Navigation, TaskWithAPrioriMapSetsTheGoalAndBumperReactionRunsAlongside) 
   const Value task = std::string("go near door(3.2, 1.0)");
   in_->Start(0.0);
   // No task yet: localize, map with sonar and QUADRIS, monitor bumper and infrared (the last
-  // rule of main), nothing else.
+  // rule of main; with nothing close the infrared maps what it sees), nothing else.
   const std::vector<std::string> monitors{
-      "SPOTT",        "LOCALIZE_THE_ROBOT", "MAP_OBJECTS_WITH_SONAR", "MAP_OBJECTS_WITH_QUADRIS",
-      "BUMPER_CHECK", "INFRARED_CHECK"};
+      "SPOTT",        "LOCALIZE_THE_ROBOT", "MAP_OBJECTS_WITH_SONAR",   "MAP_OBJECTS_WITH_QUADRIS",
+      "BUMPER_CHECK", "INFRARED_CHECK",     "MAP_OBJECTS_WITH_INFRARED"};
   EXPECT_EQ(Chain(), monitors);
   in_->SetCondition("apriori_map", true, 0.1);
   in_->SetCondition("target_known", true, 0.1, {}, {task});
