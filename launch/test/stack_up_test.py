@@ -31,7 +31,7 @@ class StackUp(unittest.TestCase):
         rospy.init_node('stack_up_test')
         cls.timeout = rospy.get_param('~timeout_s', 60.0)
 
-    def wait(self, what, ok):
+    def wait(self, ok):
         """Wall seconds, not sim: the stack's clock may not run yet."""
         deadline = time.time() + self.timeout
         while time.time() < deadline:
@@ -43,7 +43,7 @@ class StackUp(unittest.TestCase):
     def test_every_node_is_up_and_answers(self):
         for node in param_list('nodes'):
             name = node if node.startswith('/') else '/' + node
-            self.assertTrue(self.wait(name, lambda: name in rosnode.get_node_names()),
+            self.assertTrue(self.wait(lambda: name in rosnode.get_node_names()),
                             'node %s never registered (up: %s)' %
                             (name, ', '.join(sorted(rosnode.get_node_names()))))
             self.assertTrue(rosnode.rosnode_ping(name, max_count=1, verbose=False),
@@ -53,10 +53,10 @@ class StackUp(unittest.TestCase):
         for topic in param_list('topics'):
             received = []
             # The type is looked up from the master once the topic is advertised.
-            self.assertTrue(self.wait(topic, lambda: rostopic.get_topic_type(topic)[0]),
+            self.assertTrue(self.wait(lambda: rostopic.get_topic_type(topic)[0]),
                             'nobody advertises %s' % topic)
             sub = rospy.Subscriber(topic, rospy.AnyMsg, lambda m: received.append(m))
-            ok = self.wait(topic, lambda: received)
+            ok = self.wait(lambda: received)
             sub.unregister()
             self.assertTrue(ok, '%s is advertised but delivered nothing in %.0f s' %
                             (topic, self.timeout))
@@ -65,7 +65,7 @@ class StackUp(unittest.TestCase):
         for action in param_list('actions'):
             # An actionlib server advertises <action>/status and publishes it periodically.
             status = action.rstrip('/') + '/status'
-            self.assertTrue(self.wait(status, lambda: rostopic.get_topic_type(status)[0]),
+            self.assertTrue(self.wait(lambda: rostopic.get_topic_type(status)[0]),
                             'no action server on %s' % action)
 
     def test_the_nodes_talk_to_each_other(self):
@@ -78,7 +78,7 @@ class StackUp(unittest.TestCase):
                 pubs, subs, _ = master.getSystemState()
                 return (pub in dict(pubs).get(topic, []) and sub in dict(subs).get(topic, []))
 
-            ok = self.wait(edge, connected)
+            ok = self.wait(connected)
             pubs, subs, _ = master.getSystemState()
             self.assertTrue(ok, '%s: expected %s -> %s; publishers %s, subscribers %s' %
                             (topic, pub, sub, dict(pubs).get(topic, []), dict(subs).get(topic, [])))

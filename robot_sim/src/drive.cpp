@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spott_map/geometry.h"
+
 namespace robot_sim {
 
 namespace {
@@ -11,7 +13,7 @@ double Approach(double current, double target, double max_step) {
   return current + std::clamp(target - current, -max_step, max_step);
 }
 
-double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using spott_map::NormalizeAngle;
 
 }  // namespace
 
@@ -52,7 +54,7 @@ spott_map::Pose2 Integrate(const spott_map::Pose2& pose, const Twist2& t, double
     out.x += r * (std::sin(pose.yaw + dtheta) - std::sin(pose.yaw));
     out.y -= r * (std::cos(pose.yaw + dtheta) - std::cos(pose.yaw));
   }
-  out.yaw = WrapAngle(pose.yaw + dtheta);
+  out.yaw = NormalizeAngle(pose.yaw + dtheta);
   return out;
 }
 
@@ -89,7 +91,7 @@ void Odometry::Update(double distance, double rotation, Rng& rng, double slip_li
   // Midpoint rule: the heading halfway through the step.
   pose_.x += ds * std::cos(pose_.yaw + dth / 2);
   pose_.y += ds * std::sin(pose_.yaw + dth / 2);
-  pose_.yaw = WrapAngle(pose_.yaw + dth);
+  pose_.yaw = NormalizeAngle(pose_.yaw + dth);
 }
 
 }  // namespace robot_sim

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spott_map/geometry.h"
+
 namespace robot_sim {
 
 namespace {
@@ -19,7 +21,7 @@ double Incidence(const Eigen::Vector3d& dir, const Eigen::Vector3d& normal) {
   return std::acos(std::clamp(-dir.dot(n), -1.0, 1.0));
 }
 
-double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using spott_map::NormalizeAngle;
 
 double Noisy(double range, const RangeRingSpec& ring, double unit_normal) {
   return range + unit_normal * (ring.noise_stddev + ring.noise_per_metre * range);
@@ -32,7 +34,7 @@ TransducerPose PlaceMount(const Mount& mount, const spott_map::Pose2& robot, dou
   const double c = std::cos(a), s = std::sin(a);
   TransducerPose t;
   t.origin = {robot.x + c * mount.x - s * mount.y, robot.y + s * mount.x + c * mount.y, mount.z};
-  t.yaw = WrapAngle(a + mount.yaw);
+  t.yaw = NormalizeAngle(a + mount.yaw);
   return t;
 }
 
@@ -87,7 +89,7 @@ std::vector<double> SenseRangeRing(const SimWorld& world, const RangeRingSpec& r
           const double range = (p.path_m + back_m) / 2;
           if (range >= heard[i]) continue;
           const double bearing = std::atan2(back.y(), back.x());
-          if (std::abs(WrapAngle(bearing - poses[i].yaw)) > ring.field_of_view / 2) continue;
+          if (std::abs(NormalizeAngle(bearing - poses[i].yaw)) > ring.field_of_view / 2) continue;
           const auto blocked = world.CastRay(poses[i].origin, p.point - back / back_m * 0.01, self);
           if (blocked) continue;
           heard[i] = range;

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "spott_map/geometry.h"
+
 namespace robot_sim {
 
 namespace {
 
-double WrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using spott_map::NormalizeAngle;
 
 // Bisection steps when a move collides: the contact is found to 1/2^10 of a step.
 constexpr int kContactBisections = 10;
@@ -69,8 +71,9 @@ bool Simulator::Overlapped(int robot, double margin_m) const {
 void Simulator::Step(double dt, Rng& rng) {
   for (Robot& r : robots_) {
     const double turret_step = r.spec.drive.max_turret_rps * dt;
-    r.turret_yaw = WrapAngle(r.turret_yaw + std::clamp(WrapAngle(r.turret_target - r.turret_yaw),
-                                                       -turret_step, turret_step));
+    r.turret_yaw =
+        NormalizeAngle(r.turret_yaw + std::clamp(NormalizeAngle(r.turret_target - r.turret_yaw),
+                                                 -turret_step, turret_step));
     r.twist = LimitVelocity(r.twist, r.command, r.spec.drive, dt);
     spott_map::Pose2 next = Integrate(r.pose, r.twist, dt);
     r.stalled = false;
@@ -83,15 +86,15 @@ void Simulator::Step(double dt, Rng& rng) {
         (Collides(r, p.x, p.y) ? hi : lo) = mid;
       }
       next = Integrate(r.pose, r.twist, dt * lo);
-      next.yaw = WrapAngle(r.pose.yaw + r.twist.w * dt);  // a cylinder turns freely
+      next.yaw = NormalizeAngle(r.pose.yaw + r.twist.w * dt);  // a cylinder turns freely
       r.twist.v = 0.0;  // pushing against the obstacle: the motors stall
       r.stalled = true;
     }
     // What the wheels turned: the distance along the heading and the rotation.
     const double dx = next.x - r.pose.x, dy = next.y - r.pose.y;
-    const double mid_yaw = r.pose.yaw + WrapAngle(next.yaw - r.pose.yaw) / 2;
+    const double mid_yaw = r.pose.yaw + NormalizeAngle(next.yaw - r.pose.yaw) / 2;
     const double distance = dx * std::cos(mid_yaw) + dy * std::sin(mid_yaw);
-    const double rotation = WrapAngle(next.yaw - r.pose.yaw);
+    const double rotation = NormalizeAngle(next.yaw - r.pose.yaw);
     const bool slipping = time_ < r.slip_until;
     r.odometry.Update(distance, rotation, rng, slipping ? r.slip_linear : 1.0,
                       slipping ? r.slip_angular : 1.0);
@@ -104,7 +107,7 @@ void Simulator::Step(double dt, Rng& rng) {
     if (!r.spec.bumper) continue;
     std::vector<double> angles = world_->ContactAngles(
         r.pose.x, r.pose.y, r.spec.radius_m, r.spec.height_m, r.spec.bumper->travel_m, r.body);
-    for (double& a : angles) a = WrapAngle(a - r.pose.yaw);
+    for (double& a : angles) a = NormalizeAngle(a - r.pose.yaw);
     r.bumper = BumperSegments(*r.spec.bumper, angles);
   }
   time_ += dt;
@@ -173,7 +176,7 @@ std::vector<double> Simulator::SenseProfile(int robot, int index, bool horizonta
   const ProfilerSpec& p = r.spec.profilers.at(index);
   // The heads ride on the turret; pan turns the head about its own vertical axis.
   TransducerPose head = PlaceMount(p.mount, r.pose, r.turret_yaw);
-  head.yaw = WrapAngle(head.yaw + r.heads[index].first);
+  head.yaw = NormalizeAngle(head.yaw + r.heads[index].first);
   std::vector<double> ranges = robot_sim::SenseProfile(*world_, p, head, r.heads[index].second,
                                                        horizontal, r.body, rng, angles);
   ApplyFaults(r, p.name, ranges, rng);
@@ -186,7 +189,7 @@ bool Simulator::PointHead(int robot, int index, double pan, double tilt) {
       !std::isfinite(tilt) || std::abs(tilt) > M_PI / 2) {
     return false;
   }
-  r.heads[index] = {WrapAngle(pan), tilt};
+  r.heads[index] = {NormalizeAngle(pan), tilt};
   return true;
 }
 
@@ -212,9 +215,9 @@ bool Simulator::Kidnap(int robot, const spott_map::Pose2& target, bool relative,
   if (relative) {
     const double c = std::cos(r.pose.yaw), s = std::sin(r.pose.yaw);
     p = {r.pose.x + c * target.x - s * target.y, r.pose.y + s * target.x + c * target.y,
-         WrapAngle(r.pose.yaw + target.yaw)};
+         NormalizeAngle(r.pose.yaw + target.yaw)};
   }
-  p.yaw = WrapAngle(p.yaw);
+  p.yaw = NormalizeAngle(p.yaw);
   auto where = [&] { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; };
   if (!world_->InsideMap(p.x, p.y)) {
     if (error) *error = "kidnap target " + where() + " is outside every room of the map";
@@ -326,7 +329,7 @@ bool Simulator::ReplaceWorld(const spott_map::World& world, std::string* error) 
 }
 
 void Simulator::SetTurretYaw(int robot, double yaw) {
-  if (std::isfinite(yaw)) robots_.at(robot).turret_target = WrapAngle(yaw);
+  if (std::isfinite(yaw)) robots_.at(robot).turret_target = NormalizeAngle(yaw);
 }
 
 }  // namespace robot_sim

@@ -7,6 +7,7 @@
 #include <spott_msgs/Door.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "spott_map/geometry.h"
 #include "spott_ros/markers.h"
 
 namespace robot_sim::ros_conversions {
@@ -40,7 +41,7 @@ spott_msgs::RangeRing ToRangeRing(const RangeRingSpec& ring, const std::vector<d
     geometry_msgs::Pose2D p;
     p.x = c * m.x - s * m.y;
     p.y = s * m.x + c * m.y;
-    p.theta = std::atan2(std::sin(m.yaw + turret_yaw), std::cos(m.yaw + turret_yaw));
+    p.theta = spott_map::NormalizeAngle(m.yaw + turret_yaw);
     msg.mounts.push_back(p);
     msg.frame_ids.push_back(m.frame_id);
   }

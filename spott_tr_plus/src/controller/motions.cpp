@@ -4,13 +4,14 @@
 #include <cmath>
 #include <sstream>
 
+#include "spott_map/geometry.h"
 #include "spott_map/local_map.h"
 
 namespace spott_tr_plus::controller {
 
 namespace {
 
-double Wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using spott_map::NormalizeAngle;
 
 std::string Violation(const std::string& name, const std::string& rule, double value) {
   std::ostringstream out;
@@ -82,8 +83,8 @@ std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
   }
   const double want = d > 1e-6 ? std::atan2(away.y(), away.x()) : pose.yaw + M_PI;
   // Forwards or backwards, whichever axis direction is closer to "away".
-  const double forward_error = Wrap(want - pose.yaw);
-  const double backward_error = Wrap(want - (pose.yaw + M_PI));
+  const double forward_error = NormalizeAngle(want - pose.yaw);
+  const double backward_error = NormalizeAngle(want - (pose.yaw + M_PI));
   const bool forwards = std::abs(forward_error) <= std::abs(backward_error);
   const double error = forwards ? forward_error : backward_error;
   const bool aligned = std::abs(error) <= params_.align_rad;
@@ -171,7 +172,7 @@ double KnownStructure::FreeRun(const Vec2& from, double heading, double radius_m
 
 Teleop::Teleop(double direction_rad, bool reverse, double speed_mps, double max_angular_rps,
                double robot_radius_m, const TeleopParameters& params, double now_s)
-    : direction_(Wrap(direction_rad)),
+    : direction_(NormalizeAngle(direction_rad)),
       reverse_(reverse),
       speed_(speed_mps),
       max_angular_(max_angular_rps),
@@ -214,7 +215,7 @@ Teleop::Step Teleop::Update(const Pose2& pose, const KnownStructure& known,
   for (double off = 0.0; off <= p_.max_deviation_rad + 1e-9 && !chosen; off += step_rad) {
     for (const double sign : {1.0, -1.0}) {
       if (off == 0.0 && sign < 0) continue;
-      const double h = Wrap(direction_ + sign * off);
+      const double h = NormalizeAngle(direction_ + sign * off);
       if (!Clear(at, h, obstacles)) continue;
       if (off > 0.0 && known.FreeRun(at, h, radius_, p_.lookahead_m) < p_.lookahead_m) continue;
       chosen = h;
@@ -232,7 +233,7 @@ Teleop::Step Teleop::Update(const Pose2& pose, const KnownStructure& known,
   last_progress_s_ = now_s;
   step.heading = *chosen;
   const double facing = reverse_ ? pose.yaw + M_PI : pose.yaw;
-  const double error = Wrap(*chosen - facing);
+  const double error = NormalizeAngle(*chosen - facing);
   step.command.angular_rps = std::clamp(p_.heading_gain_per_s * error, -max_angular_, max_angular_);
   if (std::abs(error) < 0.6) {
     // Slow down as the structure ahead comes near.

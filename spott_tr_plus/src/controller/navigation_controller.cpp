@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double Wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using spott_map::NormalizeAngle;
 
 std::string Violation(const std::string& name, const std::string& rule, double value) {
   std::ostringstream out;
@@ -267,7 +267,7 @@ void NavigationController::Bind(Registry& r) {
   });
   r.Condition("obstacle_ahead", [this](const ConditionCall& c, Outputs&) {
     for (std::size_t i = 0; i < sonar_.mounts.size() && i < sonar_.ranges.size(); ++i) {
-      if (std::abs(Wrap(sonar_.mounts[i].yaw)) > M_PI / 6) continue;
+      if (std::abs(NormalizeAngle(sonar_.mounts[i].yaw)) > M_PI / 6) continue;
       const double r = sonar_.ranges[i];
       if (std::isfinite(r) && r < params_.tasks.obstacle_ahead_m && c.now - sonar_time_ < 1.0) {
         return true;
@@ -667,7 +667,8 @@ void NavigationController::EstimateJumped(const Pose2& before, const Pose2& afte
   infrared_mapper_.Forget();
   batches_.clear();  // found, not yet added: placed with the old pose as well
   // after * before^-1: a point at the old pose's offset lands at the same offset from the new.
-  const double turn = Wrap(after.yaw - before.yaw), c = std::cos(turn), sn = std::sin(turn);
+  const double turn = NormalizeAngle(after.yaw - before.yaw), c = std::cos(turn),
+               sn = std::sin(turn);
   const auto move = [&](const Vec2& p) {
     const Vec2 d = p - before.Position();
     return Vec2(after.x + c * d.x() - sn * d.y(), after.y + sn * d.x() + c * d.y());
@@ -683,7 +684,7 @@ void NavigationController::EstimateJumped(const Pose2& before, const Pose2& afte
     spott_map::MapFeature moved = *f;
     for (Vec2& p : moved.points) p = move(p);
     const Vec2 centre = move(moved.pose.Position());
-    moved.pose = Pose2{centre.x(), centre.y(), Wrap(moved.pose.yaw + turn)};
+    moved.pose = Pose2{centre.x(), centre.y(), NormalizeAngle(moved.pose.yaw + turn)};
     change.added.push_back(std::move(moved));
   }
   recent_ids_.clear();  // older ones were placed before the estimate went wrong: they stay
@@ -786,7 +787,7 @@ void NavigationController::SetPose(const Pose2& pose, double now) {
   // map->odom: where odometry's frame lies in the map. It moves smoothly while the estimate
   // tracks; a jump means the localization changed its mind about where the robot is.
   if (odom_) {
-    const double yaw = Wrap(pose.yaw - odom_->yaw);
+    const double yaw = NormalizeAngle(pose.yaw - odom_->yaw);
     const double c = std::cos(yaw), sn = std::sin(yaw);
     const Pose2 correction{pose.x - (c * odom_->x - sn * odom_->y),
                            pose.y - (sn * odom_->x + c * odom_->y), yaw};
@@ -796,9 +797,9 @@ void NavigationController::SetPose(const Pose2& pose, double now) {
       const Vec2 predicted(correction_->x + cy * odom_->x - sy * odom_->y,
                            correction_->y + sy * odom_->x + cy * odom_->y);
       const double moved = (predicted - pose.Position()).norm();
-      const double turned = std::abs(Wrap(correction.yaw - correction_->yaw));
+      const double turned = std::abs(NormalizeAngle(correction.yaw - correction_->yaw));
       if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad) {
-        const double yaw_before = Wrap(correction_->yaw + odom_->yaw);
+        const double yaw_before = NormalizeAngle(correction_->yaw + odom_->yaw);
         EstimateJumped(Pose2{predicted.x(), predicted.y(), yaw_before}, pose, now);
       }
     }
@@ -892,7 +893,10 @@ bool NavigationController::SendGoalFor(Ticket ticket, const GoalRegion& goal,
     case DirectionBias::Kind::kNone:
       break;
     case DirectionBias::Kind::kRelativeHeading:  // the robot's frame when the task was given
-      g.heading = Wrap((task_ ? task_->start_pose.yaw : pose_ ? pose_->yaw : 0.0) + b.angle);
+      g.heading = NormalizeAngle((task_   ? task_->start_pose.yaw
+                                  : pose_ ? pose_->yaw
+                                          : 0.0) +
+                                 b.angle);
       break;
     case DirectionBias::Kind::kAbsoluteHeading:
       g.heading = b.angle;
@@ -1155,7 +1159,7 @@ void NavigationController::DriveMotions(double now) {
         break;
       }
       case Drive::Kind::kLookAround: {
-        d->turned += std::abs(Wrap(pose_->yaw - d->last_yaw));
+        d->turned += std::abs(NormalizeAngle(pose_->yaw - d->last_yaw));
         d->last_yaw = pose_->yaw;
         if (d->turned >= 2 * M_PI) {
           io_->Drive(d->source, Velocity{});
@@ -1168,7 +1172,7 @@ void NavigationController::DriveMotions(double now) {
         break;
       }
       case Drive::Kind::kTurnTo: {
-        const double e = Wrap(d->target_yaw - pose_->yaw);
+        const double e = NormalizeAngle(d->target_yaw - pose_->yaw);
         if (std::abs(e) < 0.1) {
           io_->Drive(d->source, Velocity{});
           done.push_back(ticket);
