@@ -17,6 +17,7 @@
 #include <actionlib/client/simple_action_client.h>
 #include <actionlib/server/action_server.h>
 #include <geometry_msgs/Twist.h>
+#include <message_filters/subscriber.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
@@ -34,6 +35,7 @@
 #include <spott_msgs/TaskAction.h>
 #include <spott_msgs/WorldPlaces.h>
 #include <std_msgs/String.h>
+#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/Marker.h>
 
@@ -109,7 +111,13 @@ class ControllerNode : public ControllerIo {
     sonar_sub_ = nh.subscribe("sonar", 5, &ControllerNode::OnSonar, this, hints);
     infrared_sub_ = nh.subscribe("infrared", 5, &ControllerNode::OnInfrared, this, hints);
     bumper_sub_ = nh.subscribe("bumper", 10, &ControllerNode::OnBumper, this, hints);
-    profile_sub_ = nh.subscribe("range_profile", 5, &ControllerNode::OnProfile, this);
+    // A profile waits until tf has its head's pose at its stamp (the heads pan while it travels:
+    // taken at the latest pose, points swing across doorways; phantoms beside d_meeting_lab and
+    // d_202 shut them on a busy machine).
+    profile_sub_.subscribe(nh, "range_profile", 5);
+    profile_filter_ = std::make_unique<tf2_ros::MessageFilter<spott_msgs::RangeProfile>>(
+        profile_sub_, tf_, ProfileFixedFrame(), 5, nh);
+    profile_filter_->registerCallback(&ControllerNode::OnProfile, this);
     odom_sub_ = nh.subscribe("odom", 10, &ControllerNode::OnOdom, this);
     status_sub_ = nh.subscribe("localization_status", 5, &ControllerNode::OnStatus, this);
     parse_srv_ =
@@ -418,11 +426,20 @@ class ControllerNode : public ControllerIo {
     if (!pressed.empty()) AfterEvent();
   }
 
-  void OnProfile(const spott_msgs::RangeProfile& msg) {
+  // The frame that stays put while a profile travels: odometry's (smooth), else the map.
+  std::string ProfileFixedFrame() const {
+    return params_.odom_frame.empty() ? params_.frame_id : params_.odom_frame;
+  }
+
+  void OnProfile(const spott_msgs::RangeProfileConstPtr& profile) {
+    const spott_msgs::RangeProfile& msg = *profile;
     if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
     geometry_msgs::TransformStamped t;
     try {
-      t = tf_.lookupTransform(params_.base_frame, msg.header.frame_id, ros::Time(0));
+      // The head at the profile's stamp, into the robot's frame now (through the fixed frame):
+      // the points are placed with the pose the controller holds now.
+      t = tf_.lookupTransform(params_.base_frame, ros::Time(0), msg.header.frame_id,
+                              msg.header.stamp, ProfileFixedFrame());
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "tr_plus_controller: range profile frame: %s", e.what());
       return;
@@ -580,7 +597,9 @@ class ControllerNode : public ControllerIo {
   ros::Publisher updates_pub_, heads_pub_, state_pub_, dot_pub_, marker_pub_;
   std::map<std::string, ros::Publisher> cmd_pubs_;
   ros::Subscriber graph_sub_, features_sub_, places_sub_, sonar_sub_, infrared_sub_, bumper_sub_,
-      profile_sub_, odom_sub_, status_sub_;
+      odom_sub_, status_sub_;
+  message_filters::Subscriber<spott_msgs::RangeProfile> profile_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<spott_msgs::RangeProfile>> profile_filter_;
   ros::ServiceServer parse_srv_;
   ros::ServiceClient take_, release_;
   ros::Timer tick_, wake_;
