@@ -92,6 +92,13 @@ class Controller : public ::testing::Test {
     }
     return t;
   }
+  // `go in room(lab)` from hall_w: the Navigate goal it sends.
+  NavigateGoal GoInLab() {
+    At(1.2, 8.25, 0.0, 0.1);
+    EXPECT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
+    EXPECT_EQ(io_.navigates.size(), 1u);
+    return io_.navigates.empty() ? NavigateGoal{} : io_.navigates[0];
+  }
   spott_map::World world_;
   spott_map::MapDatabase db_;
   ControllerParameters params_;
@@ -167,10 +174,7 @@ TEST_F(Controller, GoToAPointIsDoneEarlyOnlyWellInsideItsRegion) {
 // cim_office demo, lab -> meeting room: the localization lost the robot, relocalized 12 m off,
 // and the task was reported reached there. Reached is judged on a trusted estimate only.
 TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheckedAgain) {
-  At(1.2, 8.25, 0.0, 0.1);
-  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
-  ASSERT_EQ(io_.navigates.size(), 1u);
-  const NavigateGoal g = io_.navigates[0];
+  const NavigateGoal g = GoInLab();
   // The estimate says "in the lab", but markov_localization is lost.
   At(g.x, g.y, 0.0, 30.0);
   c_->SetLocalization(false, 30.0);
@@ -199,10 +203,7 @@ TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheck
 }
 
 TEST_F(Controller, ArrivalRightAfterAnEstimateJumpIsNotReachedBeforeItSettles) {
-  At(1.2, 8.25, 0.0, 0.1);
-  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
-  ASSERT_EQ(io_.navigates.size(), 1u);
-  const NavigateGoal g = io_.navigates[0];
+  const NavigateGoal g = GoInLab();
   At(g.x - 4.0, g.y, 0.0, 20.0);
   pose_ = Pose2{g.x, g.y, 0.0};  // certain, but the estimate jumped 4 m (odometry did not move)
   c_->SetPose(pose_, 20.1);
@@ -219,9 +220,7 @@ TEST_F(Controller, ArrivalRightAfterAnEstimateJumpIsNotReachedBeforeItSettles) {
 }
 
 TEST_F(Controller, ALocalizationThatStaysUncertainAtTheGoalCountsAsANavigateFailure) {
-  At(1.2, 8.25, 0.0, 0.1);
-  ASSERT_TRUE(c_->StartTask(1, "go in room(lab)", 0.2).accepted);
-  const NavigateGoal g = io_.navigates.at(0);
+  const NavigateGoal g = GoInLab();
   double t = 30.0;
   At(g.x, g.y, 0.0, t);
   c_->SetLocalization(false, t);
