@@ -653,8 +653,6 @@ bool NavigationController::PoseTrusted(double now) const {
          now >= mapping_resumes_;
 }
 
-bool NavigationController::MappingAllowed(double now) const { return PoseTrusted(now); }
-
 // The estimate jumped: the features sensed in the seconds before were placed where the robot
 // was believed to be, not where it was. Take them back (those near the robot move with it: the
 // sensor measured them from the robot), drop the evidence not yet confirmed, and map nothing
@@ -831,7 +829,7 @@ void NavigationController::Sonar(const RangeRing& ring, double now) {
   sonar_pose_ = *pose_;
   // All incoming sensor information is taken as valid for the map (III-C.3), but only while
   // the pose it is placed with is certain: a lost estimate would draw the walls again elsewhere.
-  if (MappingAllowed(now)) sonar_mapper_.AddRing(ring, *pose_);
+  if (PoseTrusted(now)) sonar_mapper_.AddRing(ring, *pose_);
 }
 
 void NavigationController::Infrared(const RangeRing& ring, double now) {
@@ -839,12 +837,12 @@ void NavigationController::Infrared(const RangeRing& ring, double now) {
   infrared_time_ = now;
   if (!pose_) return;
   infrared_pose_ = *pose_;
-  if (MappingAllowed(now)) infrared_mapper_.AddRing(ring, *pose_);
+  if (PoseTrusted(now)) infrared_mapper_.AddRing(ring, *pose_);
 }
 
 void NavigationController::RangeProfile(const Vec2& origin, const std::vector<Vec2>& points,
                                         double now) {
-  if (!MappingAllowed(now)) return;
+  if (!PoseTrusted(now)) return;
   if (!params_.doors.sonar_with_profiles && !profiles_seen_) {
     profiles_seen_ = true;  // doors from the profiles from now on (DoorSensingParameters)
     sonar_mapper_.SetSenseDoors(false);

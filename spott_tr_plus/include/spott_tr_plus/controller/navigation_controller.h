@@ -256,8 +256,8 @@ class NavigationController {
   void EstimateJumped(const Pose2& before, const Pose2& after, double now);
   /// Takes back the sensed features within `radius` of `at`; returns how many.
   int ClearSensedNear(const Vec2& at, double radius, double now);
-  bool MappingAllowed(double now) const;
-  /// The estimate may be acted on: certain, fresh and settled after the last jump.
+  /// The estimate may be acted on (sensed features placed with it, a GO judged reached on it):
+  /// certain, fresh and settled after the last jump.
   bool PoseTrusted(double now) const;
   /// A Navigate failure of the task's goal: retried after retry_delay_s, or the task fails.
   void NavigateFailed(Ticket owner, const std::string& message, double now);
