@@ -94,6 +94,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("grid/floor_fraction", grid.floor_fraction, "[0, 1)");
   Expect(grid.floor_fraction < grid.threshold_fraction, "grid/floor_fraction >= threshold");
   ExpectIn("grid/distance_filter_max_fraction", grid.distance_filter_max_fraction, "[0, 1]");
+  ExpectIn("grid/distance_filter_confirm_ratio", grid.distance_filter_confirm_ratio, "[0, 1)");
   ExpectIn("grid/distance_filter_probability", grid.distance_filter_probability, "(0.5, 1]");
   ExpectIn("grid/distance_filter_sigmas", grid.distance_filter_sigmas, "[0, inf)");
   Expect(grid.distance_filter_max_parts >= 1, "grid/distance_filter_max_parts < 1");

@@ -54,6 +54,8 @@ std::vector<std::string> ValidateParameters(const MarkovGridParameters& p) {
   if (p.distance_filter_max_parts < 1) errors.push_back("distance_filter_max_parts must be >= 1");
   if (!(p.distance_filter_max_fraction >= 0.0 && p.distance_filter_max_fraction <= 1.0))
     errors.push_back("distance_filter_max_fraction must be in [0, 1]");
+  if (!(p.distance_filter_confirm_ratio >= 0.0 && p.distance_filter_confirm_ratio < 1.0))
+    errors.push_back("distance_filter_confirm_ratio must be in [0, 1)");
   const bool threshold_valid = p.threshold_fraction > 0.0 && p.threshold_fraction < 1.0;
   if (p.lost.enabled && p.selective_update && threshold_valid &&
       !(p.lost.relocalization_mass > p.threshold_fraction))
@@ -482,10 +484,81 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   }
   SensorUpdateStats stats;
   stats.beam_used.assign(beams.size(), 1);
-  DistanceFilter(
-      beams.size(), [&](std::size_t i) { return beams[i].model; },
-      [&](std::size_t i) { return beams[i].b; }, [&](std::size_t i) { return beams[i].z; },
-      &stats.beam_used);
+  // The most likely state before the update, found once when the surprise or the distance
+  // filter's confirmation needs it.
+  const bool position_known = ActiveParts() <= params_.distance_filter_max_parts;
+  int best_j = -1;
+  std::size_t best_c = 0;
+  bool best_found = false;
+  auto find_best = [&] {
+    if (best_found) return;
+    best_found = true;
+    float best = -1.0f;
+    for (int j = 0; j < nt_; ++j) {
+      if (!active_[j]) continue;
+      const float* data = LayerData(j);
+      for (std::size_t sp = 0; sp + 1 < spans_.size(); sp += 2)
+        for (std::uint32_t c = spans_[sp]; c < spans_[sp + 1]; ++c)
+          if (data[c] > best) best = data[c], best_j = j, best_c = c;
+    }
+  };
+  // The mean surprise per judged beam (LostDetectorParameters::surprise) of the beams `use`
+  // keeps, at the least surprising of the most likely state and its 26 neighbours: the cells
+  // and heading bins quantize the pose, and in a doorway the cell next to the true one sees the
+  // jambs differently (a single-scan "collapse" at every door at 10 cm otherwise). NaN when no
+  // beam is judged.
+  auto surprise_of = [&](const std::vector<std::uint8_t>& use) {
+    double surprise = std::numeric_limits<double>::quiet_NaN();
+    find_best();
+    if (best_j < 0) return surprise;
+    const int k0 = HeadingOfLayer(best_j);
+    const int cx = static_cast<int>(best_c % static_cast<std::size_t>(nx()));
+    const int cy = static_cast<int>(best_c / static_cast<std::size_t>(nx()));
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = cx + dx, y = cy + dy;
+          if (!map_.Contains(x, y) || !map_.IsState(x, y)) continue;
+          const int k = ((k0 + dk) % nt_ + nt_) % nt_;
+          const std::size_t c = map_.Index(x, y);
+          double sum = 0.0;
+          int judged = 0;
+          for (std::size_t i = 0; i < beams.size(); ++i) {
+            const Beam& b = beams[i];
+            if (!use[i] || b.dropped || !b.judged) continue;
+            const SensorModel& s = *b.model;
+            const int e = s.BeamRow(b.b, (k + s.beam_offset(b.b)) % nt_)[c];
+            sum += std::log(s.Likelihood(e, b.z)) - s.ExpectedLogLikelihood(e);
+            ++judged;
+          }
+          if (judged == 0) continue;  // no judged beam: the detector waits (NaN)
+          const double mean = sum / static_cast<double>(judged);
+          if (!(surprise >= mean)) surprise = mean;
+        }
+    return surprise;
+  };
+  {
+    std::vector<std::uint8_t> unexpected(beams.size(), 0);
+    const std::size_t left_out = DistanceFilter(
+        beams.size(), [&](std::size_t i) { return beams[i].model; },
+        [&](std::size_t i) { return beams[i].b; }, [&](std::size_t i) { return beams[i].z; },
+        &unexpected);
+    bool leave_out = left_out <= params_.distance_filter_max_fraction * beams.size();
+    if (!leave_out && left_out > 0 && params_.distance_filter_confirm_ratio > 0.0 &&
+        detector_.slow() > 0.0) {
+      // More unexpected short readings than a passer-by makes: an object the map lacks (a
+      // partition, a crate) or a wrong belief. The other beams decide: they fit as usual only
+      // where the robot is.
+      std::vector<std::uint8_t> rest(beams.size());
+      for (std::size_t i = 0; i < beams.size(); ++i) rest[i] = !unexpected[i];
+      const double confirmed = surprise_of(rest);
+      leave_out = confirmed >= std::log(params_.distance_filter_confirm_ratio * detector_.slow());
+      stats.distance_filter_confirmed = leave_out;
+    }
+    if (leave_out)
+      for (std::size_t i = 0; i < beams.size(); ++i)
+        if (unexpected[i]) stats.beam_used[i] = 0;
+  }
   {
     std::vector<Beam> kept;
     for (std::size_t i = 0; i < beams.size(); ++i) {
@@ -497,54 +570,17 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       }
     }
     stats.beams_filtered = static_cast<int>(beams.size() - kept.size()) - stats.beams_dropped;
+    // The lost detector's surprise at the most likely state before the update, of the beams
+    // the update uses (see LostDetectorParameters::surprise).
+    if (!kept.empty())
+      stats.surprise_per_beam = params_.lost.surprise && position_known
+                                    ? surprise_of(stats.beam_used)
+                                    : std::numeric_limits<double>::quiet_NaN();
     beams.swap(kept);
   }
   stats.beams = static_cast<int>(beams.size());
   if (beams.empty()) return stats;
-  // The lost detector's surprise at the most likely state before the update (see
-  // LostDetectorParameters::surprise).
-  double surprise = std::numeric_limits<double>::quiet_NaN();
-  if (params_.lost.surprise && ActiveParts() <= params_.distance_filter_max_parts) {
-    int best_j = -1;
-    std::size_t best_c = 0;
-    float best = -1.0f;
-    for (int j = 0; j < nt_; ++j) {
-      if (!active_[j]) continue;
-      const float* data = LayerData(j);
-      for (std::size_t sp = 0; sp + 1 < spans_.size(); sp += 2)
-        for (std::uint32_t c = spans_[sp]; c < spans_[sp + 1]; ++c)
-          if (data[c] > best) best = data[c], best_j = j, best_c = c;
-    }
-    if (best_j >= 0) {
-      // The least surprising of the most likely state and its 26 neighbours: the cells and
-      // heading bins quantize the pose, and in a doorway the cell next to the true one sees
-      // the jambs differently (a single-scan "collapse" at every door at 10 cm otherwise).
-      const int k0 = HeadingOfLayer(best_j);
-      const int cx = static_cast<int>(best_c % static_cast<std::size_t>(nx()));
-      const int cy = static_cast<int>(best_c / static_cast<std::size_t>(nx()));
-      for (int dk = -1; dk <= 1; ++dk)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int x = cx + dx, y = cy + dy;
-            if (!map_.Contains(x, y) || !map_.IsState(x, y)) continue;
-            const int k = ((k0 + dk) % nt_ + nt_) % nt_;
-            const std::size_t c = map_.Index(x, y);
-            double sum = 0.0;
-            int judged = 0;
-            for (const Beam& b : beams) {
-              if (!b.judged) continue;
-              const SensorModel& s = *b.model;
-              const int e = s.BeamRow(b.b, (k + s.beam_offset(b.b)) % nt_)[c];
-              sum += std::log(s.Likelihood(e, b.z)) - s.ExpectedLogLikelihood(e);
-              ++judged;
-            }
-            if (judged == 0) continue;  // no judged beam: the detector waits (NaN)
-            const double mean = sum / static_cast<double>(judged);
-            if (!(surprise >= mean)) surprise = mean;
-          }
-    }
-  }
-  stats.surprise_per_beam = surprise;
+  const double surprise = stats.surprise_per_beam;
   // Per beam, the column of ratios P(z_b | e) / P~(z_b) for the reading's bin z_b, divided by
   // its largest entry (so no product overflows); 1 / that largest entry is the factor of the
   // cells left out by eq. (4) instead of 1, so the normalized result is eq. (4) exactly.
@@ -636,9 +672,9 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
 }
 
 template <typename ModelOf, typename BeamOf, typename BinOf>
-void MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of, BinOf bin_of,
-                                std::vector<std::uint8_t>* used) const {
-  if (!params_.distance_filter || ActiveParts() > params_.distance_filter_max_parts) return;
+std::size_t MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of,
+                                       BinOf bin_of, std::vector<std::uint8_t>* unexpected) const {
+  if (!params_.distance_filter || ActiveParts() > params_.distance_filter_max_parts) return 0;
   // P(the reading is more than margin shorter than expected) under the belief, over the
   // states above theta (the rest hold less than 1% of the mass).
   const float theta = static_cast<float>(threshold_);
@@ -670,13 +706,11 @@ void MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of,
       }
     }
   }
-  if (!(mass > 0.0)) return;
-  std::size_t left_out = 0;
+  if (!(mass > 0.0)) return 0;
+  std::size_t count = 0;
   for (std::size_t i = 0; i < n; ++i)
-    left_out += shorter[i] >= params_.distance_filter_probability * mass;
-  if (left_out > params_.distance_filter_max_fraction * n) return;
-  for (std::size_t i = 0; i < n; ++i)
-    if (shorter[i] >= params_.distance_filter_probability * mass) (*used)[i] = 0;
+    if (shorter[i] >= params_.distance_filter_probability * mass) (*unexpected)[i] = 1, ++count;
+  return count;
 }
 
 bool MarkovGrid::SensorGroup(const float* columns, int stride,

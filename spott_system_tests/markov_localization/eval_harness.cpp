@@ -128,6 +128,10 @@ std::unique_ptr<Models> Models::Load(const std::string& world_file, const Settin
   m->grid_params.selective_update = settings.selective_update;
   m->grid_params.lost = settings.lost;
   m->grid_params.lost.enabled = settings.lost_detector;
+  if (settings.distance_filter_max_fraction >= 0)
+    m->grid_params.distance_filter_max_fraction = settings.distance_filter_max_fraction;
+  if (settings.distance_filter_confirm_ratio >= 0)
+    m->grid_params.distance_filter_confirm_ratio = settings.distance_filter_confirm_ratio;
   if (settings.motion_xy_per_m >= 0)
     m->grid_params.motion.sigma_xy_per_m = settings.motion_xy_per_m;
   m->certainty.threshold = settings.certain;

@@ -75,6 +75,11 @@ struct Settings {
   int ray_cast_subdivision = 5;  ///< The node's map/ray_cast_subdivision.
   /// Lost detector parameters (the node's lost/*).
   LostDetectorParameters lost;
+  /// >= 0: MarkovGridParameters::distance_filter_max_fraction (the node's
+  /// grid/distance_filter_max_fraction); < 0: the core's default.
+  double distance_filter_max_fraction = -1;
+  /// >= 0: MarkovGridParameters::distance_filter_confirm_ratio; < 0: the core's default.
+  double distance_filter_confirm_ratio = -1;
 };
 
 /// Everything that does not change between runs in one world: the world, the robot, the map,

@@ -87,6 +87,8 @@ struct Options {
   std::string out;   // export-map: the YAML to write
   double export_resolution_m = 0.05;
   ml::LostDetectorParameters lost;
+  double distance_filter_max_fraction = -1;   // < 0: the core's default
+  double distance_filter_confirm_ratio = -1;  // < 0: the core's default
 };
 
 std::string LoadAverage() {
@@ -146,7 +148,9 @@ int Usage(const char* argv0) {
                " [--behaviours wander,wall,active] [--kidnap-deg D] [--kidnap-shift M]"
                " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] "
                "[--on-lost uniform|keep] [--critical-angle RAD] [--lost-detector on|off] "
-               "[--picture OUT.png] [--verbose]\n";
+               "[--lost-ratio R] [--scan-lost-ratio R] [--certainty-drop-ratio R] "
+               "[--distance-filter-max-fraction F] [--distance-filter-confirm-ratio R] [--picture "
+               "OUT.png] [--verbose]\n";
   return 2;
 }
 
@@ -210,12 +214,14 @@ void PrintHeader(const Options& o, const ev::Models& m, const std::string& world
   std::printf(
       "# motion gate: update_min_d %.2f m, update_min_a %.1f deg, standing interval %.1f s; ray "
       "cast subdivision %d; lost detector lost_ratio %.2f scan_lost_ratio %.2f "
-      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d\n",
+      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d; distance filter max fraction %.2f, "
+      "confirm ratio %.2f\n",
       m.settings.gate.update_min_d_m, m.settings.gate.update_min_a_rad / kDeg,
       m.settings.gate.standing_interval_s, m.settings.ray_cast_subdivision,
       m.grid_params.lost.lost_ratio, m.grid_params.lost.scan_lost_ratio,
       m.grid_params.lost.certainty_drop_ratio, m.grid_params.lost.fast_rate,
-      m.grid_params.lost.slow_rate, m.grid_params.lost.hold_scans);
+      m.grid_params.lost.slow_rate, m.grid_params.lost.hold_scans,
+      m.grid_params.distance_filter_max_fraction, m.grid_params.distance_filter_confirm_ratio);
   std::printf("# sonar model: cone %.2f rad, critical angle %.2f rad; lost detector %s\n",
               m.sensor_params.beam_width_rad, m.sensor_params.critical_angle_rad,
               m.grid_params.lost.enabled ? "on (core defaults)" : "off");
@@ -844,6 +850,10 @@ int main(int argc, char** argv) {
         o.lost.scan_lost_ratio = std::stod(next());
       else if (a == "--certainty-drop-ratio")
         o.lost.certainty_drop_ratio = std::stod(next());
+      else if (a == "--distance-filter-max-fraction")
+        o.distance_filter_max_fraction = std::stod(next());
+      else if (a == "--distance-filter-confirm-ratio")
+        o.distance_filter_confirm_ratio = std::stod(next());
       else if (a == "--fast-rate")
         o.lost.fast_rate = std::stod(next());
       else if (a == "--slow-rate")
@@ -980,6 +990,8 @@ int main(int argc, char** argv) {
   s.map_file = o.map_file;
   s.ray_cast_subdivision = o.subdivision;
   s.lost = o.lost;
+  s.distance_filter_max_fraction = o.distance_filter_max_fraction;
+  s.distance_filter_confirm_ratio = o.distance_filter_confirm_ratio;
   const auto start = std::chrono::steady_clock::now();
   try {
     const auto models = ev::Models::Load(o.world, s);

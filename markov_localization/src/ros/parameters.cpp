@@ -120,6 +120,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("grid/distance_filter_sigmas", p.grid.distance_filter_sigmas);
   r.Get("grid/distance_filter_max_parts", p.grid.distance_filter_max_parts);
   r.Get("grid/distance_filter_max_fraction", p.grid.distance_filter_max_fraction);
+  r.Get("grid/distance_filter_confirm_ratio", p.grid.distance_filter_confirm_ratio);
   auto& lost = p.grid.lost;
   r.Get("lost/enabled", lost.enabled);
   r.Get("lost/surprise", lost.surprise);
