@@ -131,6 +131,7 @@ struct Interpreter::Impl {
   ProgramFile file;
   Registry registry;
   Options options;
+  std::set<std::string> off;  // options.off_subroutines
   std::string main_name;
   int main_program = -1;
 
@@ -400,6 +401,10 @@ struct Interpreter::Impl {
         if (a.is_call) {
           if (f.depth + 1 > options.max_call_depth) {
             r->done = true;  // Recursion guard: the call is refused (checker warned).
+            return;
+          }
+          if (off.count(a.name)) {
+            r->done = true;  // Switched off (InterpreterOptions::off_subroutines): nil.
             return;
           }
           Frame* callee =
@@ -922,6 +927,12 @@ std::unique_ptr<Interpreter> Interpreter::Create(const ProgramFile& file, const 
   } else if (!main->params.empty()) {
     error(main->where, "program '" + main->name + "' takes parameters and cannot run as main");
   }
+  for (const std::string& name : options.off_subroutines) {
+    if (!file.FindProgram(name))
+      error(Location{}, "no subroutine named '" + name + "' to switch off");
+    else if (main && name == main->name)
+      error(Location{}, "the main program '" + name + "' cannot be switched off");
+  }
   if (HasErrors(out)) return nullptr;
   std::unique_ptr<Interpreter> in(new Interpreter());
   Impl& impl = *in->impl_;
@@ -929,6 +940,7 @@ std::unique_ptr<Interpreter> Interpreter::Create(const ProgramFile& file, const 
   ResolveCalls(impl.file);
   impl.registry = registry;
   impl.options = options;
+  impl.off.insert(options.off_subroutines.begin(), options.off_subroutines.end());
   impl.main_name = main->name;
   impl.main_program = impl.file.ProgramIndex(main->name);
   for (const Program& p : impl.file.programs) {

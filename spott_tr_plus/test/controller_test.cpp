@@ -398,6 +398,35 @@ TEST_F(Controller, BumperContactIsMappedAndTheReflexTakesTheWheelsMovesAwayAndHa
   EXPECT_TRUE(Has(c_->added_features(), "contact_1"));
 }
 
+TEST_F(Controller, OnTheB12TheBumperInfraredAndQuadrisSubroutinesAreOff) {
+  // The same program with the subroutines of sensors the robot lacks switched off
+  // (launch/config/robots/b12.yaml): a bumper or infrared reading starts no reflex and maps
+  // nothing, no QUADRIS pattern is set, and a task still drives.
+  const ParseResult parsed = ParseProgramFile(PROGRAMS_DIR "/spott_navigation.tr");
+  ASSERT_TRUE(parsed.ok());
+  params_.subroutines_off = {"BUMPER_CHECK", "INFRARED_CHECK", "MAP_OBJECTS_WITH_QUADRIS",
+                             "CONTROL_THE_PTU"};
+  std::vector<Diagnostic> d;
+  c_ = NavigationController::Create(parsed.program, params_, &io_, &d);
+  ASSERT_TRUE(c_) << FormatDiagnostics(d);
+  c_->Start(0.0);
+  c_->SetGraph(db_.graph(), 0.0);
+  c_->SetFeatures(db_.features(), 0.0);
+  c_->SetPlaces(world_.places);
+  GoInLab();
+  c_->Bumper({0.0}, 0.3);
+  Run(0.3, 2.0, "reflex");
+  EXPECT_TRUE(io_.takes.empty()) << "a reflex took the wheels";
+  EXPECT_TRUE(io_.updates.empty()) << "a contact was mapped";
+  EXPECT_EQ(io_.ptu, "") << "a scanning pattern was set for heads the robot lacks";
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  // A name that is not a subroutine of the program is refused with the name.
+  params_.subroutines_off = {"SONAR_CHECK"};
+  d.clear();
+  EXPECT_FALSE(NavigationController::Create(parsed.program, params_, &io_, &d));
+  EXPECT_NE(FormatDiagnostics(d).find("'SONAR_CHECK'"), std::string::npos);
+}
+
 TEST_F(Controller, AContactOnAKnownWallIsNotAddedAgain) {
   At(5.0, 9.5 - 0.075 - kRadius, M_PI / 2, 0.1);  // touching the north wall of hall_w
   c_->Bumper({0.0}, 0.2);

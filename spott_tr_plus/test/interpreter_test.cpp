@@ -404,6 +404,42 @@ TEST(Interpreter, MonitoringSubroutineStaysActiveWhileTheCallingRuleIsSustained)
   EXPECT_EQ(FindFrame(in->State(), "WATCH"), nullptr);
 }
 
+TEST(Interpreter, ASwitchedOffSubroutineIsNeverEnteredAndItsConditionsNeverRead) {
+  // SPOTT's program on the B-12: the bumper subroutine off, the rest of the rule runs.
+  World w;
+  w.External("done");
+  w.External("bump");
+  w.LongAction("work");
+  w.LongAction("react");
+  const char* text =
+      "condition done; condition bump; action work; action react;\n"
+      "main m { done -> nil; true -> WATCH() || work; }\n"
+      "sub WATCH() { not bump -> nil; bump -> react; }";
+  const ParseResult parsed = ParseProgramText(text, "t.tr");
+  ASSERT_TRUE(parsed.ok());
+  Interpreter::Options options;
+  options.off_subroutines = {"WATCH"};
+  std::vector<Diagnostic> d;
+  auto in = Interpreter::Create(parsed.program, w.registry, &d, "", options);
+  ASSERT_TRUE(in) << FormatDiagnostics(d);
+  in->Start(0.0);
+  EXPECT_EQ(w.Log(), "start work");
+  EXPECT_EQ(FindFrame(in->State(), "WATCH"), nullptr);
+  EXPECT_EQ(FindProcess(in->State(), "bump"), nullptr) << "the off subroutine's condition is read";
+  in->SetCondition("bump", true, 0.1);
+  EXPECT_EQ(w.Log(), "start work");
+  in->SetCondition("done", true, 0.2);
+  EXPECT_EQ(w.log.back(), "stop work");
+  // A name that is no subroutine, or the main program, is refused by name.
+  for (const char* bad : {"WATCHER", "m"}) {
+    options.off_subroutines = {bad};
+    d.clear();
+    EXPECT_FALSE(Interpreter::Create(parsed.program, w.registry, &d, "", options)) << bad;
+    EXPECT_NE(FormatDiagnostics(d).find(std::string("'") + bad + "'"), std::string::npos)
+        << FormatDiagnostics(d);
+  }
+}
+
 TEST(Interpreter, BallisticCallRunsUntilTheSubroutineGoalEvenWhenAHigherRuleFires) {
   World w;
   w.External("goal");

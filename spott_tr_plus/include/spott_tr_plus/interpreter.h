@@ -92,6 +92,11 @@ struct InterpreterState {
 struct InterpreterOptions {
   int max_call_depth = 32;             ///< Deeper calls are refused (recursion guard).
   int max_events_per_advance = 10000;  ///< Bounds the scan passes of one event.
+  /// Subroutines switched off: a call of one does nothing and is done at once, as `nil`. The
+  /// same program then runs on a robot without the sensors they serve (SPOTT ran its program
+  /// on the B-12 with the bumper, infrared and QUADRIS subroutines off). Create refuses a name
+  /// that is not a subroutine of the file, or the main program.
+  std::vector<std::string> off_subroutines;
 };
 
 class Interpreter {

@@ -158,6 +158,7 @@ std::unique_ptr<NavigationController> NavigationController::Create(
   c->Bind(registry);
   Interpreter::Options options;
   options.max_call_depth = params.max_call_depth;
+  options.off_subroutines = params.subroutines_off;
   // Names the program declares but the controller does not bind are reported by the
   // interpreter at their location.
   c->interpreter_ = Interpreter::Create(program, registry, diagnostics, main_name, options);

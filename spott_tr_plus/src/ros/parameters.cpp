@@ -57,6 +57,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("seed", seed);
   c.seed = static_cast<unsigned>(seed);
   r.Get("max_call_depth", c.max_call_depth);
+  r.Get("subroutines_off", c.subroutines_off);
   r.Get("max_localization_error_m", c.max_localization_error_m, "m");
   r.Get("drive/max_linear_mps", c.max_linear_mps, "m/s");
   r.Get("drive/max_angular_rps", c.max_angular_rps, "rad/s");

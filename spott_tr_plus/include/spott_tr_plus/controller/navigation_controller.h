@@ -155,7 +155,11 @@ struct ControllerParameters {
   double max_linear_mps = 0.5;              ///< The robot's drive limits (m/s), > 0.
   double max_angular_rps = 0.79;            ///< (rad/s), > 0.
   int max_call_depth = 32;                  ///< Interpreter recursion guard, >= 1.
-  unsigned seed = 1;                        ///< RANDOM_SEARCH's headings.
+  /// Subroutines of the program switched off (InterpreterOptions::off_subroutines): a robot
+  /// without their sensors (the B-12: BUMPER_CHECK, INFRARED_CHECK, MAP_OBJECTS_WITH_QUADRIS,
+  /// CONTROL_THE_PTU).
+  std::vector<std::string> subroutines_off;
+  unsigned seed = 1;  ///< RANDOM_SEARCH's headings.
   MappingParameters mapping;
   DoorSensingParameters doors;
   ReflexParameters reflex;
