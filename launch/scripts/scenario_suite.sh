@@ -2,7 +2,8 @@
 # The scenario suite (issue 20): every scenario of launch/scenarios/ (or those named) run with
 # seeds 1..SEEDS through ./spott run (no bags), and a table per scenario from the runs'
 # report.json: runs that succeeded (every leg reached on the ground truth without contact, every
-# fault applied), mean simulated and wall time, mean path length, bumper contacts, the largest
+# fault applied), mean simulated and wall time, mean path length, contacts (bumper, and the body on
+# the ground truth), the largest
 # localization error. Writes the table to OUT/suite.md (OUT: runs/suite-<UTC time>).
 # Usage: launch/scripts/scenario_suite.sh [SEEDS (10)] [SCENARIO.yaml...]
 # ./spott bench scenarios [SEEDS] runs it.
@@ -30,7 +31,7 @@ done
 python3 - "$OUT" "$SEEDS" "$(cut -d' ' -f1-3 /proc/loadavg)" > "$OUT/suite.md" <<'PY'
 import glob, json, os, sys
 out, seeds, load = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-print('| scenario | succeeded | mean simulated time (s) | mean wall time (s) | mean path (m) | bumper contacts | max localization error (m) | failures |')
+print('| scenario | succeeded | mean simulated time (s) | mean wall time (s) | mean path (m) | contacts (bumper / body, ground truth) | max localization error (m) | failures |')
 print('|---|---|---|---|---|---|---|---|')
 for d in sorted(glob.glob(os.path.join(out, '*/'))):
     name = os.path.basename(d.rstrip('/'))
@@ -45,11 +46,12 @@ for d in sorted(glob.glob(os.path.join(out, '*/'))):
     done = [r for _, r in reports if r and r.get('totals')]
     mean = lambda key: sum(r['totals'][key] for r in done) / len(done) if done else float('nan')
     wall = sum(r['elapsed_wall_s'] for r in done) / len(done) if done else float('nan')
-    contacts = sum(r['totals']['bumper_hits'] for r in done)
+    contacts = '%d / %d' % (sum(r['totals']['bumper_hits'] for r in done),
+                            sum(r['totals'].get('body_contacts', 0) for r in done))
     err = max((r['totals']['max_position_error_m'] for r in done), default=float('nan'))
     failed = ', '.join('seed %d (%s)' % (s, r['outcome'] if r else 'no report')
                        for s, r in reports if not r or r['outcome'] != 'succeeded')
-    print('| %s | %d of %d | %.1f | %.1f | %.1f | %d | %.2f | %s |' % (
+    print('| %s | %d of %d | %.1f | %.1f | %.1f | %s | %.2f | %s |' % (
         name, len(ok), len(reports), mean('sim_time_s'), wall, mean('path_length_m'), contacts,
         err, failed or '-'))
 print()

@@ -79,6 +79,10 @@ class Replay {
     metrics_.OnBumper(m.header.stamp.toSec(),
                       std::any_of(m.pressed.begin(), m.pressed.end(), [](bool b) { return b; }));
   }
+  void BodyContact(const spott_msgs::BumperRing& m) {
+    metrics_.OnBodyContact(m.header.stamp.toSec(), std::any_of(m.pressed.begin(), m.pressed.end(),
+                                                               [](bool b) { return b; }));
+  }
   void Path(const spott_msgs::GlobalPath& m) {
     if (!open_) return;
     open_->last_path = spott_launch::GlobalPathText(m);
@@ -214,6 +218,8 @@ int main(int argc, char** argv) {
       if (auto p = m.instantiate<spott_msgs::LocalizationStatus>()) replay.Status(*p);
     } else if (topic == "/bumper") {
       if (auto p = m.instantiate<spott_msgs::BumperRing>()) replay.Bumper(*p);
+    } else if (topic == "/sim/contact") {
+      if (auto p = m.instantiate<spott_msgs::BumperRing>()) replay.BodyContact(*p);
     } else if (topic == "/global_path") {
       if (auto p = m.instantiate<spott_msgs::GlobalPath>()) replay.Path(*p);
     } else if (topic == "/harmonic_planner/navigate/feedback") {

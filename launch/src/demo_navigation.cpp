@@ -68,6 +68,12 @@ struct LegWatcher {
         ring.header.stamp.toSec(),
         std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
   }
+  void OnBodyContact(const spott_msgs::BumperRing& ring) {
+    std::lock_guard<std::mutex> lock(mutex);
+    metrics.OnBodyContact(
+        ring.header.stamp.toSec(),
+        std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
+  }
   void OnGlobalPath(const spott_msgs::GlobalPath& path) {
     const std::string text = GlobalPathText(path);
     std::lock_guard<std::mutex> lock(mutex);
@@ -112,6 +118,8 @@ struct RunWatch {
     nh.setCallbackQueue(&queue);
     subscribers.push_back(nh.subscribe("/sim/ground_truth", 200, &LegWatcher::OnTruth, &watcher));
     subscribers.push_back(nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher));
+    subscribers.push_back(
+        nh.subscribe("/sim/contact", 10, &LegWatcher::OnBodyContact, &watcher));
     subscribers.push_back(nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher));
     subscribers.push_back(nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher));
   }
@@ -391,7 +399,8 @@ std::string FormatNavigation(const NavigationReport& report) {
         << leg.path_length_m << " m driven, ended at (" << leg.final_position.x() << ", "
         << leg.final_position.y() << "), " << std::setprecision(2) << leg.final_error_m
         << " m from the target; closest approach to a wall or object " << leg.min_wall_distance_m
-        << " m (centre), bumper contacts: " << leg.bumper_hits << "\n";
+        << " m (centre), bumper contacts: " << leg.bumper_hits
+        << ", body contacts (ground truth): " << leg.body_contacts << "\n";
     if (leg.estimates > 0) {
       out << "     localization error (markov_localization vs ground truth, " << leg.estimates
           << " estimates): mean " << leg.mean_position_error_m << " m / " << std::setprecision(1)

@@ -32,6 +32,7 @@ json Leg(const NavigationLeg& leg) {
             {"final_position", {leg.final_position.x(), leg.final_position.y()}},
             {"min_wall_distance_m", leg.min_wall_distance_m},
             {"bumper_hits", leg.bumper_hits},
+            {"body_contacts", leg.body_contacts},
             {"lost_reports", leg.lost_reports},
             {"lost_onsets_s", leg.lost_onsets_s},
             {"contact_onsets_s", leg.contact_onsets_s}};
@@ -59,10 +60,11 @@ std::string FormatReportJson(const DemoReport& r, const std::string& scenario) {
   const auto& legs = r.navigation.legs;
   const auto reached =
       std::count_if(legs.begin(), legs.end(), [](const NavigationLeg& l) { return l.reached; });
-  int bumper_hits = 0, lost_reports = 0;
+  int bumper_hits = 0, body_contacts = 0, lost_reports = 0;
   double path_m = 0.0, sim_s = 0.0, min_clearance_m = INFINITY, max_error_m = 0.0;
   for (const auto& l : legs) {
     bumper_hits += l.bumper_hits;
+    body_contacts += l.body_contacts;
     lost_reports += l.lost_reports;
     path_m += l.path_length_m;
     sim_s += l.sim_time_s;
@@ -76,8 +78,10 @@ std::string FormatReportJson(const DemoReport& r, const std::string& scenario) {
   j["outcome"] = !r.ok                                                           ? "failed"
                  : !r.navigation.ran                                             ? "not run"
                  : !faults_applied                                               ? "fault refused"
-                 : reached == static_cast<long>(legs.size()) && bumper_hits == 0 ? "succeeded"
-                                                                                 : "failed";
+                 : reached == static_cast<long>(legs.size()) && bumper_hits == 0 &&
+                         body_contacts == 0
+                     ? "succeeded"
+                     : "failed";
   j["legs_reached"] = reached;
   j["legs_total"] = legs.size();
   j["by_task"] = r.navigation.by_task;
@@ -85,6 +89,7 @@ std::string FormatReportJson(const DemoReport& r, const std::string& scenario) {
   j["totals"] = {{"sim_time_s", sim_s},
                  {"path_length_m", path_m},
                  {"bumper_hits", bumper_hits},
+                 {"body_contacts", body_contacts},
                  {"lost_reports", lost_reports},
                  {"max_position_error_m", max_error_m}};
   if (!legs.empty()) j["totals"]["min_wall_distance_m"] = min_clearance_m;

@@ -16,8 +16,8 @@ void LegMetrics::Reset(double t) {
   leg_end_ = std::numeric_limits<double>::infinity();
   path_length_m_ = 0.0;
   min_wall_distance_m_ = std::numeric_limits<double>::infinity();
-  bumper_hits_ = estimates_ = lost_reports_ = 0;
-  lost_ = pressed_ = false;
+  bumper_hits_ = body_contacts_ = estimates_ = lost_reports_ = 0;
+  lost_ = pressed_ = touching_ = false;
   lost_onsets_s_.clear();
   contact_onsets_s_.clear();
   sum_position_error_m_ = max_position_error_m_ = 0.0;
@@ -90,8 +90,17 @@ void LegMetrics::Evaluate(bool all) {
 void LegMetrics::OnBumper(double t, bool any_pressed) {
   if (t < leg_start_ || t > leg_end_) return;
   bumper_hits_ += any_pressed ? 1 : 0;
-  if (any_pressed && !pressed_) contact_onsets_s_.push_back(t);
+  if (any_pressed && !pressed_ && !touching_) contact_onsets_s_.push_back(t);
   pressed_ = any_pressed;
+}
+
+void LegMetrics::OnBodyContact(double t, bool touching) {
+  if (t < leg_start_ || t > leg_end_) return;
+  body_contacts_ += touching ? 1 : 0;
+  // A contact begins when the bumper or the body (a robot without a bumper, a bumper that
+  // dropped out) first says so.
+  if (touching && !touching_ && !pressed_) contact_onsets_s_.push_back(t);
+  touching_ = touching;
 }
 
 void LegMetrics::Measure(const spott_map::Vec2& target, NavigationLeg& leg) {
@@ -101,6 +110,7 @@ void LegMetrics::Measure(const spott_map::Vec2& target, NavigationLeg& leg) {
   leg.final_position = position_;
   leg.min_wall_distance_m = min_wall_distance_m_;
   leg.bumper_hits = bumper_hits_;
+  leg.body_contacts = body_contacts_;
   leg.estimates = estimates_;
   leg.lost_reports = lost_reports_;
   leg.lost_onsets_s = lost_onsets_s_;
@@ -137,6 +147,9 @@ void JudgeLeg(const std::string& refusal, const std::string& off_goal, Navigatio
   } else if (leg.bumper_hits > 0) {
     leg.outcome = "not reached: at the goal, but after " + std::to_string(leg.bumper_hits) +
                   " bumper contacts";
+  } else if (leg.body_contacts > 0) {
+    leg.outcome = "not reached: at the goal, but the body touched a wall or object (" +
+                  std::to_string(leg.body_contacts) + " ground-truth contact messages)";
   } else {
     leg.outcome = "reached";
     leg.reached = true;

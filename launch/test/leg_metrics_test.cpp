@@ -141,6 +141,20 @@ TEST(LegMetrics, AVerdictNeedsTheDriversWordTheGoalAndNoContact) {
   JudgeLeg("", OffPlace(leg, 0.25), leg);
   EXPECT_FALSE(leg.reached);
   leg.bumper_hits = 0;
+  // A robot without a bumper (the B-12): the ground truth's body contact fails the leg too.
+  const spott_map::World no_world;
+  LegMetrics metrics(no_world);
+  metrics.Reset(0.0);
+  metrics.OnBodyContact(1.0, false);
+  metrics.OnBodyContact(1.1, true);
+  metrics.OnBodyContact(1.2, true);
+  metrics.Measure(spott_map::Vec2(0.0, 0.0), leg);
+  EXPECT_EQ(leg.body_contacts, 2);
+  leg.final_error_m = 0.1;
+  JudgeLeg("", OffPlace(leg, 0.25), leg);
+  EXPECT_FALSE(leg.reached);
+  EXPECT_NE(leg.outcome.find("the body touched"), std::string::npos) << leg.outcome;
+  leg.body_contacts = 0;
   JudgeLeg("Navigate failed: blocked", "", leg);
   EXPECT_EQ(leg.outcome, "not reached: Navigate failed: blocked");
 }

@@ -79,7 +79,7 @@ class ScenarioRun(unittest.TestCase):
                 self.assertLessEqual(leg['start_sim_s'], fault['sim_time_s'])
             # The outcome is the legs' (ground truth, no contact), and HILARE makes it.
             reached = all(leg['reached'] for leg in r['legs'])
-            contacts = sum(leg['bumper_hits'] for leg in r['legs'])
+            contacts = sum(leg['bumper_hits'] + leg['body_contacts'] for leg in r['legs'])
             self.assertEqual(r['outcome'] == 'succeeded', reached and contacts == 0)
             self.assertEqual(r['outcome'], 'succeeded', json.dumps(r['legs'], indent=1)[-2000:])
             # The bag holds the run: the faults as they happened and the ground truth, which
@@ -111,7 +111,7 @@ class ScenarioRun(unittest.TestCase):
             for live, bag_leg in zip(r['legs'], b['legs']):
                 name = live['goal']
                 for key in ('goal', 'reached', 'outcome', 'navigate_outcome', 'bumper_hits',
-                            'lost_reports', 'recoveries'):
+                            'body_contacts', 'lost_reports', 'recoveries'):
                     self.assertEqual(bag_leg[key], live[key], '%s: %s' % (name, key))
                 self.assertAlmostEqual(bag_leg['start_sim_s'], live['start_sim_s'], delta=0.05)
                 self.assertAlmostEqual(bag_leg['sim_time_s'], live['sim_time_s'], delta=0.1)

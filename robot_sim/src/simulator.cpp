@@ -204,6 +204,14 @@ std::vector<bool> Simulator::Bumper(int robot) {
   return pressed;
 }
 
+std::vector<double> Simulator::BodyContacts(int robot) const {
+  const Robot& r = robots_.at(robot);
+  std::vector<double> angles = world_->ContactAngles(r.pose.x, r.pose.y, r.spec.radius_m,
+                                                     r.spec.height_m, kBodyTouchM, r.body);
+  for (double& a : angles) a = NormalizeAngle(a - r.pose.yaw);
+  return angles;
+}
+
 bool Simulator::Kidnap(int robot, const spott_map::Pose2& target, bool relative,
                        std::string* error) {
   Robot& r = robots_.at(robot);

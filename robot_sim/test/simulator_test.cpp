@@ -65,6 +65,23 @@ TEST_F(SimulatorTest, DrivingIntoAWallStopsTheRobotAndPressesTheBumperFacingIt) 
   for (bool b : sim_->Bumper(id_)) EXPECT_FALSE(b);
 }
 
+TEST_F(SimulatorTest, TheBodyContactIsKnownForARobotWithoutABumper) {
+  // The B-12 has sonars only: the ground truth still says where its body touches.
+  Start("b12", {8.0, 4.5, 0.0});
+  EXPECT_TRUE(sim_->Bumper(id_).empty());
+  EXPECT_TRUE(sim_->BodyContacts(id_).empty());
+  ASSERT_TRUE(sim_->SetCommand(id_, {0.4, 0.0}, nullptr));
+  Run(10.0);
+  // The shell touches the wall face x = 9.95, straight ahead.
+  EXPECT_NEAR(sim_->GroundTruth(id_).x, 9.95 - 0.1525, 0.002);
+  const auto contacts = sim_->BodyContacts(id_);
+  ASSERT_FALSE(contacts.empty());
+  for (double a : contacts) EXPECT_NEAR(a, 0.0, 0.3);
+  sim_->SetCommand(id_, {-0.2, 0.0}, nullptr);
+  Run(1.0);
+  EXPECT_TRUE(sim_->BodyContacts(id_).empty());
+}
+
 TEST_F(SimulatorTest, BumperSegmentFollowsTheContactAngleInTheRobotFrame) {
   // Heading 36 degrees left of the wall normal: the wall is at -36 degrees, segment 18.
   Start("nomad200", {8.5, 0.8, 36 * M_PI / 180});  // meets the east wall near y = 1.7

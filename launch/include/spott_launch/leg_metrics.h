@@ -39,6 +39,9 @@ struct NavigationLeg {
   double min_wall_distance_m = 0.0;  ///< Closest approach of the robot's centre to a wall or
                                      ///< object of the simulated world (m).
   int bumper_hits = 0;               ///< Bumper messages with a pressed segment.
+  /// /sim/contact messages with the body touching a solid (ground truth: every robot, with or
+  /// without a bumper, whatever the bumper's faults).
+  int body_contacts = 0;
   /// Localization (markov_localization's status against the ground truth); 0 estimates when
   /// the stack runs on the simulator's map->odom.
   int estimates = 0;
@@ -47,8 +50,9 @@ struct NavigationLeg {
   double mean_heading_error_rad = 0.0;
   double max_heading_error_rad = 0.0;
   int lost_reports = 0;  ///< Statuses that said lost.
-  /// When (simulated s) the localization began to say lost, and a bumper began to be pressed:
-  /// a fault campaign measures detection latency and collisions against a fault's time.
+  /// When (simulated s) the localization began to say lost, and a contact began (the bumper
+  /// pressed or the body touching, whichever said it first): a fault campaign measures
+  /// detection latency and collisions against a fault's time.
   std::vector<double> lost_onsets_s;
   std::vector<double> contact_onsets_s;
 };
@@ -80,6 +84,8 @@ class LegMetrics {
   /// two topics arrive in, nor much on a dropped truth message.
   void OnStatus(double t, double estimate_x, double estimate_y, double estimate_yaw, bool lost);
   void OnBumper(double t, bool any_pressed);
+  /// The simulator's /sim/contact: the body touches a solid (ground truth).
+  void OnBodyContact(double t, bool touching);
 
   /// After a leg's result the last ground truth and bumper messages still count for this long
   /// (simulated s): the robot stops.
@@ -116,8 +122,9 @@ class LegMetrics {
   double leg_end_ = std::numeric_limits<double>::infinity();
   double path_length_m_ = 0.0;
   double min_wall_distance_m_ = std::numeric_limits<double>::infinity();
-  int bumper_hits_ = 0, estimates_ = 0, lost_reports_ = 0;
+  int bumper_hits_ = 0, body_contacts_ = 0, estimates_ = 0, lost_reports_ = 0;
   bool lost_ = false, pressed_ = false;  ///< The last status / bumper message in the leg.
+  bool touching_ = false;                ///< The last /sim/contact message in the leg.
   std::vector<double> lost_onsets_s_, contact_onsets_s_;
   double sum_position_error_m_ = 0.0, max_position_error_m_ = 0.0;
   double sum_heading_error_rad_ = 0.0, max_heading_error_rad_ = 0.0;
@@ -130,7 +137,7 @@ double DistanceToNearestSolid(const spott_map::World& world, const spott_map::Ve
 
 /// The leg's verdict, on the ground truth and never on the stack's belief: reached when whoever
 /// drove says so (`refusal` empty), the robot really is at the goal (`off_goal` empty) and no
-/// bumper was pressed. Sets leg.outcome and leg.reached.
+/// bumper was pressed nor did the body touch anything. Sets leg.outcome and leg.reached.
 void JudgeLeg(const std::string& refusal, const std::string& off_goal, NavigationLeg& leg);
 
 /// Why a Navigate leg to a place is off its goal ("" = within `tolerance_m`; leg measured).

@@ -58,6 +58,11 @@ class Simulator {
   }
   /// Bumper segments pressed after the last step (all false when dropped out).
   std::vector<bool> Bumper(int robot);
+  /// Ground truth, for evaluation only: the directions (robot frame, rad) in which the body
+  /// touches a solid (within kBodyTouchM of its shell) after the last step, whatever sensors the
+  /// robot has and whatever their faults (a B-12 has no bumper; a bumper may drop out).
+  std::vector<double> BodyContacts(int robot) const;
+  static constexpr double kBodyTouchM = 0.005;
 
   /// Moves the robot without the odometry seeing it. `relative`: `target` is a displacement
   /// in the robot frame. Refused (false, message) when the target is outside the map or

@@ -79,6 +79,7 @@ class SimNode {
           nh.advertise<sensor_msgs::Range>(ring.name + "/range", ring.mounts.size() * 2));
     }
     if (spec.laser) scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
+    contact_pub_ = nh.advertise<spott_msgs::BumperRing>("sim/contact", 10);
     if (spec.bumper) {
       bumper_pub_ = nh.advertise<spott_msgs::BumperRing>("bumper", 10);
       bumper_markers_pub_ =
@@ -251,6 +252,10 @@ class SimNode {
         }
       }
     }
+    // The body's contacts as the ground truth knows them, for every robot (evaluation only).
+    const BumperSpec sectors{kContactSectors, Simulator::kBodyTouchM};
+    contact_pub_.publish(conv::ToBumperRing(
+        sectors, BumperSegments(sectors, sim_->BodyContacts(robot_)), params_.base_frame, stamp));
     if (spec.bumper) {
       const std::vector<bool> pressed = sim_->Bumper(robot_);
       bumper_pub_.publish(conv::ToBumperRing(*spec.bumper, pressed, params_.base_frame, stamp));
@@ -472,8 +477,9 @@ class SimNode {
   int markers_revision_ = -1;
   int obstacle_counter_ = 0;
   std::vector<bool> last_pressed_;  ///< The bumper markers are published on change.
+  static constexpr int kContactSectors = 8;  ///< /sim/contact's resolution (45 degrees)
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
-      bumper_markers_pub_, markers_pub_, profile_pub_;
+      bumper_markers_pub_, markers_pub_, profile_pub_, contact_pub_;
   std::vector<ros::Publisher> ring_pubs_, range_pubs_;
   ros::Subscriber cmd_sub_, turret_sub_, head_sub_;
   ConsumerPacer pacer_;
