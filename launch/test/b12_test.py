@@ -15,10 +15,10 @@ import sys
 import tempfile
 import unittest
 
-import catkin.find_in_workspaces as fiw
 import rospkg
 import rospy
 import rostest
+from workspace_tools import find_tool
 from spott_msgs.msg import TRProgramState
 
 PKG = 'spott_launch'
@@ -26,13 +26,6 @@ SCENARIO = 'cim_office_b12.yaml'
 OFF = {'BUMPER_CHECK', 'INFRARED_CHECK', 'MAP_OBJECTS_WITH_INFRARED', 'MAP_OBJECTS_WITH_QUADRIS',
        'CONTROL_THE_PTU'}
 B12_RADIUS_M = 0.1525  # robot_sim/urdf/b12.urdf
-
-
-def find_tool(name):
-    found = fiw.find_in_workspaces(['libexec'], project=PKG, path=name)
-    if not found:
-        raise RuntimeError(name + ' not built')
-    return found[0]
 
 
 class B12(unittest.TestCase):

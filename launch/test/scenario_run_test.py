@@ -12,21 +12,13 @@ import sys
 import tempfile
 import unittest
 
-import catkin.find_in_workspaces as fiw
 import rosbag
 import rospkg
 import rostest
+from workspace_tools import find_tool
 
 PKG = 'spott_launch'
 SCENARIO = 'hilare_sonar_dropout.yaml'
-
-
-def find_tool(name='scenario_tool'):
-    # The workspace's lib/spott_launch/<name>, as rosrun finds it.
-    found = fiw.find_in_workspaces(['libexec'], project=PKG, path=name)
-    if not found:
-        raise RuntimeError(name + ' not built')
-    return found[0]
 
 
 class ScenarioRun(unittest.TestCase):
@@ -36,8 +28,9 @@ class ScenarioRun(unittest.TestCase):
             with open(path, 'w') as f:
                 f.write('world: hilare_room\ngoals: [zone_exit]\nfaults:\n'
                         '  - {time: 5, kind: sensor, sensor: sonar/1, fault: melt}\n')
-            out = subprocess.run([find_tool(), path, '--out', d], stdout=subprocess.PIPE,
-                                 stderr=subprocess.STDOUT, text=True, timeout=60)
+            out = subprocess.run([find_tool('scenario_tool'), path, '--out', d],
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 timeout=60)
             self.assertEqual(out.returncode, 1, out.stdout)
             self.assertIn(path + ':4:', out.stdout)
             self.assertIn('melt', out.stdout)
@@ -46,8 +39,9 @@ class ScenarioRun(unittest.TestCase):
     def test_the_run_is_the_scenarios_and_its_report_and_bag_agree(self):
         scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
         with tempfile.TemporaryDirectory() as d:
-            out = subprocess.run([find_tool(), scenario, '--out', d], stdout=subprocess.PIPE,
-                                 stderr=subprocess.STDOUT, text=True, timeout=60)
+            out = subprocess.run([find_tool('scenario_tool'), scenario, '--out', d],
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 timeout=60)
             self.assertEqual(out.returncode, 0, out.stdout)
             with open(os.path.join(d, 'launch_args')) as f:
                 args = f.read().split('\n')

@@ -56,9 +56,13 @@ class Controller : public ::testing::Test {
   void SetUp() override {
     world_ = CimOffice();
     db_ = spott_map::MapDatabase::FromWorld(world_);
+    params_.robot_radius_m = kRadius;
+    Create();
+  }
+  // The controller on SPOTT's program with params_, started on cim_office's map.
+  void Create() {
     const ParseResult parsed = ParseProgramFile(PROGRAMS_DIR "/spott_navigation.tr");
     ASSERT_TRUE(parsed.ok()) << FormatDiagnostics(parsed.diagnostics);
-    params_.robot_radius_m = kRadius;
     std::vector<Diagnostic> d;
     c_ = NavigationController::Create(parsed.program, params_, &io_, &d);
     ASSERT_TRUE(c_) << FormatDiagnostics(d);
@@ -402,17 +406,9 @@ TEST_F(Controller, OnTheB12TheBumperInfraredAndQuadrisSubroutinesAreOff) {
   // The same program with the subroutines of sensors the robot lacks switched off
   // (launch/config/robots/b12.yaml): a bumper or infrared reading starts no reflex and maps
   // nothing, no QUADRIS pattern is set, and a task still drives.
-  const ParseResult parsed = ParseProgramFile(PROGRAMS_DIR "/spott_navigation.tr");
-  ASSERT_TRUE(parsed.ok());
   params_.subroutines_off = {"BUMPER_CHECK", "INFRARED_CHECK", "MAP_OBJECTS_WITH_QUADRIS",
                              "CONTROL_THE_PTU"};
-  std::vector<Diagnostic> d;
-  c_ = NavigationController::Create(parsed.program, params_, &io_, &d);
-  ASSERT_TRUE(c_) << FormatDiagnostics(d);
-  c_->Start(0.0);
-  c_->SetGraph(db_.graph(), 0.0);
-  c_->SetFeatures(db_.features(), 0.0);
-  c_->SetPlaces(world_.places);
+  Create();
   GoInLab();
   c_->Bumper({0.0}, 0.3);
   Run(0.3, 2.0, "reflex");
@@ -422,7 +418,8 @@ TEST_F(Controller, OnTheB12TheBumperInfraredAndQuadrisSubroutinesAreOff) {
   ASSERT_EQ(io_.navigates.size(), 1u);
   // A name that is not a subroutine of the program is refused with the name.
   params_.subroutines_off = {"SONAR_CHECK"};
-  d.clear();
+  const ParseResult parsed = ParseProgramFile(PROGRAMS_DIR "/spott_navigation.tr");
+  std::vector<Diagnostic> d;
   EXPECT_FALSE(NavigationController::Create(parsed.program, params_, &io_, &d));
   EXPECT_NE(FormatDiagnostics(d).find("'SONAR_CHECK'"), std::string::npos);
 }
