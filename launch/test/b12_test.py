@@ -10,7 +10,6 @@
 # command-line programs.
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -18,7 +17,7 @@ import unittest
 import rospkg
 import rospy
 import rostest
-from workspace_tools import find_tool
+from workspace_tools import run_scenario
 from spott_msgs.msg import TRProgramState
 
 PKG = 'spott_launch'
@@ -37,24 +36,9 @@ class B12(unittest.TestCase):
                          queue_size=50)
         scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
         with tempfile.TemporaryDirectory() as d:
-            out = subprocess.run([find_tool('scenario_tool'), scenario, '--out', d],
-                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                 timeout=60)
-            self.assertEqual(out.returncode, 0, out.stdout)
-            with open(os.path.join(d, 'launch_args')) as f:
-                args = [a for a in f.read().split('\n') if a]
-            self.assertIn('robot:=b12', args)
-            self.assertIn('controller:=tr_plus', args)
-            report = os.path.join(d, 'report.json')
-            run = subprocess.run(
-                ['roslaunch', PKG, 'demo.launch'] + args +
-                ['params_file:=' + os.path.join(d, 'demo_params.yaml'),
-                 'faults_file:=' + os.path.join(d, 'faults.yaml'),
-                 'report_json:=' + report, 'scenario:=' + scenario],
-                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=330)
-            self.assertTrue(os.path.exists(report), run.stdout[-3000:])
-            with open(report) as f:
-                r = json.load(f)
+            args, r = run_scenario(self, scenario, d, timeout_s=330)
+        self.assertIn('robot:=b12', args)
+        self.assertIn('controller:=tr_plus', args)
         legs = json.dumps([{k: leg[k] for k in ('task', 'outcome', 'min_wall_distance_m')}
                            for leg in r['legs']], indent=1)
         self.assertTrue(r['ok'], r.get('failure'))

@@ -15,7 +15,7 @@ import unittest
 import rosbag
 import rospkg
 import rostest
-from workspace_tools import find_tool
+from workspace_tools import find_tool, run_scenario
 
 PKG = 'spott_launch'
 SCENARIO = 'hilare_sonar_dropout.yaml'
@@ -39,25 +39,10 @@ class ScenarioRun(unittest.TestCase):
     def test_the_run_is_the_scenarios_and_its_report_and_bag_agree(self):
         scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
         with tempfile.TemporaryDirectory() as d:
-            out = subprocess.run([find_tool('scenario_tool'), scenario, '--out', d],
-                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                 timeout=60)
-            self.assertEqual(out.returncode, 0, out.stdout)
-            with open(os.path.join(d, 'launch_args')) as f:
-                args = f.read().split('\n')
+            bag = os.path.join(d, 'run.bag')
+            args, r = run_scenario(self, scenario, d, ['bag:=' + bag])
             self.assertIn('world:=hilare_room', args)
             self.assertIn('controller:=none', args)
-            bag = os.path.join(d, 'run.bag')
-            report = os.path.join(d, 'report.json')
-            run = subprocess.run(
-                ['roslaunch', PKG, 'demo.launch'] + [a for a in args if a] +
-                ['params_file:=' + os.path.join(d, 'demo_params.yaml'),
-                 'faults_file:=' + os.path.join(d, 'faults.yaml'),
-                 'report_json:=' + report, 'scenario:=' + scenario, 'bag:=' + bag],
-                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=360)
-            self.assertTrue(os.path.exists(report), run.stdout[-3000:])
-            with open(report) as f:
-                r = json.load(f)
             self.assertTrue(r['ok'], r.get('failure'))
             self.assertEqual(r['world'], 'hilare_room')
             self.assertEqual(r['scenario'], scenario)
@@ -78,7 +63,7 @@ class ScenarioRun(unittest.TestCase):
             self.assertEqual(r['outcome'], 'succeeded', json.dumps(r['legs'], indent=1)[-2000:])
             # The bag holds the run: the faults as they happened and the ground truth, which
             # ends where the report says the last leg ended.
-            self.assertTrue(os.path.exists(bag), run.stdout[-2000:])
+            self.assertTrue(os.path.exists(bag), 'the run recorded no bag')
             with rosbag.Bag(bag) as b:
                 faults = [m for _, m, _ in b.read_messages(topics=['/sim/faults'])]
                 truth = [m for _, m, _ in b.read_messages(topics=['/sim/ground_truth'])]
