@@ -172,6 +172,12 @@ void ParameterReader::Get(const std::string& key, std::vector<std::string>& valu
 void ParameterReader::GetDegrees(const std::string& key, double& radians) {
   double degrees = radians * 180.0 / M_PI;
   Get(key, degrees, "deg");
+  // Beyond about 1e306 degrees the conversion overflows to infinity (a parameter fuzzer's
+  // finding): refused as any non-finite number is.
+  if (!std::isfinite(degrees * M_PI / 180.0)) {
+    violations_.push_back(prefix_ + key + " must be finite in radians too");
+    return;
+  }
   radians = degrees * M_PI / 180.0;
 }
 

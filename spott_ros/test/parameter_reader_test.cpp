@@ -147,6 +147,19 @@ TEST(ParameterReader, DegreesAreStoredInRadians) {
   EXPECT_NEAR(a, M_PI / 2, 1e-12);
 }
 
+TEST(ParameterReader, DegreesThatOverflowInRadiansAreRefused) {
+  // markov_localization_parameters_fuzz: active_run/estimate_jump_deg 7.19e307 became inf rad.
+  XmlRpcValue v;
+  v["angle_deg"] = 7.1929766191987718e+307;
+  ParameterReader r(v);
+  double a = 0.5;
+  r.GetDegrees("angle_deg", a);
+  EXPECT_EQ(a, 0.5) << "the default is kept";
+  const auto problems = r.Finish();
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0], "~angle_deg must be finite in radians too");
+}
+
 TEST(ParameterReader, RenamedKeysStillWorkWithADeprecationWarning) {
   XmlRpcValue v;
   v["resolution"] = 0.2;
