@@ -118,8 +118,7 @@ struct RunWatch {
     nh.setCallbackQueue(&queue);
     subscribers.push_back(nh.subscribe("/sim/ground_truth", 200, &LegWatcher::OnTruth, &watcher));
     subscribers.push_back(nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher));
-    subscribers.push_back(
-        nh.subscribe("/sim/contact", 10, &LegWatcher::OnBodyContact, &watcher));
+    subscribers.push_back(nh.subscribe("/sim/contact", 10, &LegWatcher::OnBodyContact, &watcher));
     subscribers.push_back(nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher));
     subscribers.push_back(nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher));
   }

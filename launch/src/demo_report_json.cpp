@@ -75,23 +75,20 @@ std::string FormatReportJson(const DemoReport& r, const std::string& scenario) {
   // fault happened (a refused one means the run was not the one the scenario describes).
   const bool faults_applied = std::all_of(r.faults.begin(), r.faults.end(),
                                           [](const DemoReport::Fault& f) { return f.applied; });
-  j["outcome"] = !r.ok                                                           ? "failed"
-                 : !r.navigation.ran                                             ? "not run"
-                 : !faults_applied                                               ? "fault refused"
-                 : reached == static_cast<long>(legs.size()) && bumper_hits == 0 &&
-                         body_contacts == 0
-                     ? "succeeded"
-                     : "failed";
+  j["outcome"] =
+      !r.ok               ? "failed"
+      : !r.navigation.ran ? "not run"
+      : !faults_applied   ? "fault refused"
+      : reached == static_cast<long>(legs.size()) && bumper_hits == 0 && body_contacts == 0
+          ? "succeeded"
+          : "failed";
   j["legs_reached"] = reached;
   j["legs_total"] = legs.size();
   j["by_task"] = r.navigation.by_task;
   if (!r.navigation.ran) j["skipped"] = r.navigation.skipped;
-  j["totals"] = {{"sim_time_s", sim_s},
-                 {"path_length_m", path_m},
-                 {"bumper_hits", bumper_hits},
-                 {"body_contacts", body_contacts},
-                 {"lost_reports", lost_reports},
-                 {"max_position_error_m", max_error_m}};
+  j["totals"] = {{"sim_time_s", sim_s},          {"path_length_m", path_m},
+                 {"bumper_hits", bumper_hits},   {"body_contacts", body_contacts},
+                 {"lost_reports", lost_reports}, {"max_position_error_m", max_error_m}};
   if (!legs.empty()) j["totals"]["min_wall_distance_m"] = min_clearance_m;
   j["requested_real_time_factor"] = r.navigation.requested_real_time_factor;
   j["legs"] = json::array();

@@ -476,7 +476,7 @@ class SimNode {
   double last_command_s_ = 0.0;
   int markers_revision_ = -1;
   int obstacle_counter_ = 0;
-  std::vector<bool> last_pressed_;  ///< The bumper markers are published on change.
+  std::vector<bool> last_pressed_;           ///< The bumper markers are published on change.
   static constexpr int kContactSectors = 8;  ///< /sim/contact's resolution (45 degrees)
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, joints_pub_, scan_pub_, bumper_pub_,
       bumper_markers_pub_, markers_pub_, profile_pub_, contact_pub_;
