@@ -76,12 +76,10 @@ class Replay {
     metrics_.OnStatus(m.header.stamp.toSec(), m.estimate.x, m.estimate.y, m.estimate.theta, m.lost);
   }
   void Bumper(const spott_msgs::BumperRing& m) {
-    metrics_.OnBumper(m.header.stamp.toSec(),
-                      std::any_of(m.pressed.begin(), m.pressed.end(), [](bool b) { return b; }));
+    metrics_.OnBumper(m.header.stamp.toSec(), spott_launch::AnyPressed(m));
   }
   void BodyContact(const spott_msgs::BumperRing& m) {
-    metrics_.OnBodyContact(m.header.stamp.toSec(), std::any_of(m.pressed.begin(), m.pressed.end(),
-                                                               [](bool b) { return b; }));
+    metrics_.OnBodyContact(m.header.stamp.toSec(), spott_launch::AnyPressed(m));
   }
   void Path(const spott_msgs::GlobalPath& m) {
     if (!open_) return;

@@ -64,15 +64,11 @@ struct LegWatcher {
   }
   void OnBumper(const spott_msgs::BumperRing& ring) {
     std::lock_guard<std::mutex> lock(mutex);
-    metrics.OnBumper(
-        ring.header.stamp.toSec(),
-        std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
+    metrics.OnBumper(ring.header.stamp.toSec(), AnyPressed(ring));
   }
   void OnBodyContact(const spott_msgs::BumperRing& ring) {
     std::lock_guard<std::mutex> lock(mutex);
-    metrics.OnBodyContact(
-        ring.header.stamp.toSec(),
-        std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; }));
+    metrics.OnBodyContact(ring.header.stamp.toSec(), AnyPressed(ring));
   }
   void OnGlobalPath(const spott_msgs::GlobalPath& path) {
     const std::string text = GlobalPathText(path);

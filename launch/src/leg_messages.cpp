@@ -5,6 +5,10 @@
 
 namespace spott_launch {
 
+bool AnyPressed(const spott_msgs::BumperRing& ring) {
+  return std::any_of(ring.pressed.begin(), ring.pressed.end(), [](bool b) { return b; });
+}
+
 std::string GlobalPathText(const spott_msgs::GlobalPath& path) {
   std::string text;
   for (std::size_t i = 0; i < path.rooms.size(); ++i) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/NavigateFeedback.h>
 #include <spott_msgs/TaskResult.h>
@@ -15,6 +16,9 @@
 #include "spott_launch/leg_metrics.h"
 
 namespace spott_launch {
+
+/// A segment of the ring is pressed (`/bumper`), or the body touches (`/sim/contact`).
+bool AnyPressed(const spott_msgs::BumperRing& ring);
 
 /// "hall_w -> d_lab_w -> lab": the rooms and doors of a global plan; "(no path)" when empty.
 std::string GlobalPathText(const spott_msgs::GlobalPath& path);
