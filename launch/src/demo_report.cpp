@@ -21,6 +21,7 @@
 #include "spott_map/local_map.h"
 #include "spott_map/ros/conversions.h"
 #include "spott_map/world_loader.h"
+#include "spott_ros/robot_geometry.h"
 
 namespace spott_launch {
 
@@ -53,8 +54,10 @@ std::string ClosedDoorsOf(const spott_map::RoomDoorGraph& g, const std::string& 
   return text.empty() ? "no direct closed door" : "behind closed " + text;
 }
 
-std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spott_map::Vec2& at) {
+std::vector<std::string> AsciiWindow(const spott_map::MapDatabase& db, const spott_map::Vec2& at,
+                                     double robot_radius_m) {
   spott_map::LocalMapParameters p;  // SPOTT's 35 x 35 window of 0.2 m cells
+  p.robot_radius_m = robot_radius_m;
   spott_map::LocalMap local(p);
   local.Recentre(db, at);
   const auto robot = local.raster().CellOf(at);
@@ -211,7 +214,16 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
       report.unreachable.push_back(r.id + " (" + ClosedDoorsOf(*graph, r.id) + ")");
     }
   }
-  report.local_window = AsciiWindow(db, start_position);
+  // The robot's own radius (a B-12's padding is thinner than a Nomad's), as every node takes it.
+  std::string radius_error;
+  if (const auto radius = spott_ros::FootprintRadiusFromParameter(nh, "robot_description",
+                                                                  "base_link", &radius_error)) {
+    report.robot_radius_m = *radius;
+  } else {
+    ROS_WARN("demo report: no robot radius (%s): the window is padded for %.3f m",
+             radius_error.c_str(), report.robot_radius_m);
+  }
+  report.local_window = AsciiWindow(db, start_position, report.robot_radius_m);
 
   // Close doors one after the other through the world server, as a user (or the simulator's
   // fault schedule) would, and watch the served graph change.
@@ -321,7 +333,8 @@ std::string FormatReport(const DemoReport& r) {
     }
     out << "\n";
   }
-  const spott_map::LocalMapParameters window;  // the parameters AsciiWindow uses
+  spott_map::LocalMapParameters window;  // the parameters AsciiWindow uses
+  window.robot_radius_m = r.robot_radius_m;
   out << std::defaultfloat << std::setprecision(6) << "\n Local window at the start (SPOTT's "
       << window.cells() << " x " << window.cells() << " cells of " << window.resolution_m
       << " m; '#' wall, '+' padding\n of robot radius " << window.robot_radius_m

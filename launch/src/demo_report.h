@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 
 #include "demo_navigation.h"
+#include "spott_map/local_map.h"
 
 namespace spott_launch {
 
@@ -33,6 +34,8 @@ struct DemoReport {
   };
   std::vector<DoorExperiment> door_experiments;
   std::vector<std::string> local_window;  ///< ASCII rows, north first.
+  /// (m) The robot's footprint radius from robot_description, padding the window above.
+  double robot_radius_m = spott_map::LocalMapParameters{}.robot_radius_m;
   double elapsed_s = 0.0;
   std::vector<std::string> stack_packages_running;  ///< Run by demo.launch.
   std::vector<std::string> stack_packages_missing;  ///< Packages of the stack not in this build.
