@@ -49,10 +49,11 @@ bool LostDetector::OnCertainty(double certainty, double threshold) {
   return true;
 }
 
-bool LostDetector::Update(double log_likelihood_per_beam) {
+bool LostDetector::Update(double log_likelihood_per_beam, double collapse_per_beam) {
   if (!params_.enabled || !std::isfinite(log_likelihood_per_beam)) return false;
   const double r = std::exp(log_likelihood_per_beam);
-  const bool collapsed = scans_since_reset_ > 0 && r < params_.scan_lost_ratio * slow_;
+  const double scan = std::isfinite(collapse_per_beam) ? std::exp(collapse_per_beam) : r;
+  const bool collapsed = scans_since_reset_ > 0 && scan < params_.scan_lost_ratio * slow_;
   if (scans_since_reset_ == 0) {
     fast_ = slow_ = r;
   } else {
@@ -65,8 +66,8 @@ bool LostDetector::Update(double log_likelihood_per_beam) {
   // Lost. The averages are kept: if the relocalization does not restore the usual fit the
   // detector fires again after the hold, while a lasting change of scene (clutter) is absorbed
   // by the slow average.
-  reason_ =
-      collapsed ? Describe("one scan's fit collapsed", r) : Describe("the scans' fit fell", fast_);
+  reason_ = collapsed ? Describe("one scan's fit collapsed", scan)
+                      : Describe("the scans' fit fell", fast_);
   scans_since_reset_ = 1;
   return true;
 }

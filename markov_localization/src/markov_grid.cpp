@@ -537,8 +537,8 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
         }
     return surprise;
   };
+  std::vector<std::uint8_t> unexpected(beams.size(), 0);
   {
-    std::vector<std::uint8_t> unexpected(beams.size(), 0);
     const std::size_t left_out = DistanceFilter(
         beams.size(), [&](std::size_t i) { return beams[i].model; },
         [&](std::size_t i) { return beams[i].b; }, [&](std::size_t i) { return beams[i].z; },
@@ -572,10 +572,30 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
     stats.beams_filtered = static_cast<int>(beams.size() - kept.size()) - stats.beams_dropped;
     // The lost detector's surprise at the most likely state before the update, of the beams
     // the update uses (see LostDetectorParameters::surprise).
-    if (!kept.empty())
-      stats.surprise_per_beam = params_.lost.surprise && position_known
-                                    ? surprise_of(stats.beam_used)
-                                    : std::numeric_limits<double>::quiet_NaN();
+    if (kept.empty()) {
+      // nothing to judge: the update below returns at once
+    } else if (params_.lost.surprise && position_known) {
+      stats.surprise_per_beam = surprise_of(stats.beam_used);
+      // Unexpectedly short beams the update still uses (more than the cap, unconfirmed) are
+      // left out of the single-scan collapse while they are no more than the other beams: an
+      // object the map lacks can only shorten a reading (LostDetectorParameters::
+      // collapse_ignores_short_beams).
+      std::vector<std::uint8_t> expected = stats.beam_used;
+      int short_beams = 0, other_beams = 0;
+      for (std::size_t i = 0; i < beams.size(); ++i) {
+        if (!expected[i]) continue;
+        if (unexpected[i])
+          expected[i] = 0, ++short_beams;
+        else
+          ++other_beams;
+      }
+      if (params_.lost.collapse_ignores_short_beams && short_beams > 0 &&
+          other_beams >= short_beams) {
+        stats.collapse_surprise_per_beam = surprise_of(expected);
+      }
+    } else {
+      stats.surprise_per_beam = std::numeric_limits<double>::quiet_NaN();
+    }
     beams.swap(kept);
   }
   stats.beams = static_cast<int>(beams.size());
@@ -661,7 +681,8 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   }
   // The detector's input: the surprise when asked for (NaN while it cannot be computed: the
   // detector then waits), else the predictive fit.
-  lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam);
+  lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam,
+                           stats.collapse_surprise_per_beam);
   if (lost_) {
     lost_reason_ = detector_.reason();
     MixUniform(params_.lost.relocalization_mass);

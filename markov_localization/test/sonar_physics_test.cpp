@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "markov_localization/lost_detector.h"
 #include "test_helpers.h"
@@ -91,6 +93,25 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   // fit has not come back.
   for (int i = 0; i < LostDetectorParameters{}.hold_scans - 1; ++i) EXPECT_FALSE(d.Update(-2.0));
   EXPECT_TRUE(d.Update(-2.0));
+}
+
+// The single-scan collapse judges the value it is given for it (the scan without its
+// unexpectedly short beams, MarkovGrid), the averages the whole scan.
+TEST(LostDetector, TheCollapseJudgesTheScanWithoutItsShortBeamsWhenGiven) {
+  LostDetector d(LostDetectorParameters{});
+  for (int i = 0; i < 50; ++i) d.Update(1.0);
+  // The whole scan at e^-2 = 0.05 of the usual, the beams without the short ones at 0.7 x: no
+  // collapse, and one such scan does not bring the fast average below lost_ratio.
+  EXPECT_FALSE(d.Update(-2.0, 1.0 + std::log(0.7)));
+  EXPECT_LT(d.fast(), 0.6 * d.slow()) << "the averages see the whole scan";
+  for (int i = 0; i < 10; ++i) d.Update(1.0);
+  // The beams without the short ones collapse too: lost, and the reason gives their fit.
+  EXPECT_TRUE(d.Update(-2.0, -1.5));
+  EXPECT_NE(d.reason().find("one scan's fit collapsed (per-beam fit 0.223"), std::string::npos)
+      << d.reason();
+  for (int i = 0; i < 50; ++i) d.Update(1.0);
+  // Not given (NaN): the whole scan is judged.
+  EXPECT_TRUE(d.Update(-2.0, std::numeric_limits<double>::quiet_NaN()));
 }
 
 TEST(LostDetector, ACertaintyDropWhileTheFitDropsIsLost) {

@@ -15,6 +15,10 @@
 //   --full-update (eq. (2) instead of the selective eq. (4))  --lost-detector on|off (on)
 //   --clearance M (state clearance; default the B21's radius)  --behaviours wander,wall,active
 //   --kidnap-deg D (70)  --kidnap-shift M (0)  --settle S (30)  --on-lost uniform|keep
+//   --route lab (tracking in cim_office: across the laboratory, past its unmapped partition,
+//   crate and drum, to the meeting room and back: the B-12 demo's third task)
+//   --collapse-short-beams (the single-scan collapse judges unexpectedly short beams too, as
+//   before 2026-12-05)
 //   --world FILE  --picture OUT.png (fig2: the first multi-modal belief after 10 m)
 //   --verbose (each active choice on stderr)  --trace (each go-to step)
 // Prints markdown tables; the header lines give the settings and the load average.
@@ -61,6 +65,7 @@ struct Options {
   double kidnap_shift_m = 0.0;
   double settle_s = 30.0;
   std::string world;
+  std::string route;  // tracking: "" (the world's) or lab (cim_office)
   bool verbose = false;
   bool calibrate = false;
   bool full_update = false;
@@ -149,6 +154,7 @@ int Usage(const char* argv0) {
                " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] "
                "[--on-lost uniform|keep] [--critical-angle RAD] [--lost-detector on|off] "
                "[--lost-ratio R] [--scan-lost-ratio R] [--certainty-drop-ratio R] "
+               "[--collapse-short-beams] "
                "[--distance-filter-max-fraction F] [--distance-filter-confirm-ratio R] [--picture "
                "OUT.png] [--verbose]\n";
   return 2;
@@ -214,13 +220,14 @@ void PrintHeader(const Options& o, const ev::Models& m, const std::string& world
   std::printf(
       "# motion gate: update_min_d %.2f m, update_min_a %.1f deg, standing interval %.1f s; ray "
       "cast subdivision %d; lost detector lost_ratio %.2f scan_lost_ratio %.2f "
-      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d; distance filter max fraction %.2f, "
-      "confirm ratio %.2f\n",
+      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d, collapse %s short beams; distance "
+      "filter max fraction %.2f, confirm ratio %.2f\n",
       m.settings.gate.update_min_d_m, m.settings.gate.update_min_a_rad / kDeg,
       m.settings.gate.standing_interval_s, m.settings.ray_cast_subdivision,
       m.grid_params.lost.lost_ratio, m.grid_params.lost.scan_lost_ratio,
       m.grid_params.lost.certainty_drop_ratio, m.grid_params.lost.fast_rate,
       m.grid_params.lost.slow_rate, m.grid_params.lost.hold_scans,
+      m.grid_params.lost.collapse_ignores_short_beams ? "without" : "with",
       m.grid_params.distance_filter_max_fraction, m.grid_params.distance_filter_confirm_ratio);
   std::printf("# sonar model: cone %.2f rad, critical angle %.2f rad; lost detector %s\n",
               m.sensor_params.beam_width_rad, m.sensor_params.critical_angle_rad,
@@ -262,7 +269,20 @@ struct Route {
   std::vector<Vec2> waypoints;
 };
 
-Route RouteOf(const std::string& world_name) {
+Route RouteOf(const std::string& world_name, const std::string& name) {
+  if (world_name == "cim_office" && name == "lab")  // where "go in room(lab)" ends, then west
+    return {{25.0, 10.8, 150.0 * kDeg},
+            {{22.5, 12.3},
+             {19.0, 12.5},
+             {16.0, 13.0},
+             {14.0, 15.5},
+             {10.8, 17.5},
+             {8.0, 18.3},
+             {10.8, 17.5},
+             {14.0, 15.5},
+             {19.0, 15.2},
+             {23.0, 15.0},
+             {25.0, 11.0}}};
   if (world_name == "cim_office")  // the demo's legs: the hallway, office 106, the lab bench
     return {{1.2, 8.25, 0.0},
             {{29.2, 7.8},
@@ -325,7 +345,12 @@ struct ErrorStats {
 std::unique_ptr<ev::PeerFilter> MakePeer(const Options& o, const ev::Models& m, std::uint64_t seed);
 
 int Tracking(const Options& o, const ev::Models& m) {
-  Route route = RouteOf(m.world.name);
+  if (!o.route.empty() && !(o.route == "lab" && m.world.name == "cim_office")) {
+    std::fprintf(stderr, "tracking: no route '%s' in %s (cim_office has 'lab')\n", o.route.c_str(),
+                 m.world.name.c_str());
+    return 2;
+  }
+  Route route = RouteOf(m.world.name, o.route);
   // Legs of at most 4 m: each leg is steered on odometry from the true pose at its start, and
   // over 38 m of hallway the odometry's heading drift took the robot into a wall (where no
   // state of the belief is: a misfit the localization is not to blame for).
@@ -808,6 +833,8 @@ int main(int argc, char** argv) {
         o.settle_s = std::stod(next());
       else if (a == "--world")
         o.world = next();
+      else if (a == "--route")
+        o.route = next();
       else if (a == "--picture")
         o.picture = next();
       else if (a == "--robot")
@@ -850,6 +877,8 @@ int main(int argc, char** argv) {
         o.lost.scan_lost_ratio = std::stod(next());
       else if (a == "--certainty-drop-ratio")
         o.lost.certainty_drop_ratio = std::stod(next());
+      else if (a == "--collapse-short-beams")  // judged: the single-scan collapse sees them
+        o.lost.collapse_ignores_short_beams = false;
       else if (a == "--distance-filter-max-fraction")
         o.distance_filter_max_fraction = std::stod(next());
       else if (a == "--distance-filter-confirm-ratio")
