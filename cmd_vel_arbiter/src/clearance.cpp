@@ -6,6 +6,10 @@
 
 namespace cmd_vel_arbiter {
 
+namespace {
+constexpr double kAtMinimumM = 1e-4;  // a float32 reading of the minimum, within rounding
+}  // namespace
+
 std::vector<std::string> ValidateParameters(const ClearanceParameters& p) {
   std::vector<std::string> v;
   const auto in = [&](const char* name, double x, double lo, double hi, bool open_lo) {
@@ -45,9 +49,20 @@ SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double fi
   const double half_fov = std::isfinite(field_of_view_rad) ? 0.5 * field_of_view_rad : 0.0;
   const std::size_t n = std::min(transducers.size(), ranges_m.size());
   for (std::size_t i = 0; i < n; ++i) {
-    const double r = ranges_m[i];
-    if (!std::isfinite(r) || r < min_range_m || r >= max_range_m) continue;
+    double r = ranges_m[i];
     const Transducer& t = transducers[i];
+    // At the minimum (a driver clamps what lies closer to it; robot_sim does) or -Inf (REP 117:
+    // too close to measure): from a transducer looking along the motion, the echo may be at its
+    // face (read as 0.15 m, a B-12 pushed its front against an unmapped crate at 0.23 m/s for
+    // 240 s); from one looking aside it stays at the minimum (a Nomad's sonars, blind to 0.43 m,
+    // see a doorway's jambs there).
+    if (r == -std::numeric_limits<double>::infinity() ||
+        (r >= min_range_m - kAtMinimumM && r <= min_range_m + kAtMinimumM)) {
+      const double ahead = std::abs(std::remainder(t.yaw, 2.0 * M_PI));
+      r = ahead <= half_fov || M_PI - ahead <= half_fov ? 0.0 : min_range_m;
+    } else if (!std::isfinite(r) || r < min_range_m || r >= max_range_m) {
+      continue;
+    }
     // The echo lies somewhere on the arc: its ends and middle stand for it.
     for (const double off : {-half_fov, 0.0, half_fov}) {
       const double px = t.x + r * std::cos(t.yaw + off), py = t.y + r * std::sin(t.yaw + off);

@@ -56,6 +56,24 @@ TEST(Clearance, AWallAheadCapsForwardOnlyAndSideWallsCapNothing) {
   sides[3] = std::nan("");
   sides[2] = 0.1;  // below min_range
   EXPECT_EQ(BoundsFromRing(ring, 0.436, 0.15, 5.0, sides, p).forward_mps, kInf);
+  // A reading of the minimum itself (a driver clamps what lies closer; robot_sim does) or -Inf
+  // (REP 117: too close to measure) ahead: the object may touch the body, so no speed towards
+  // it. (Read as 0.15 m, it let a B-12 push into a crate the sonar had missed at 0.23 m/s.)
+  for (const double at_face : {0.15, static_cast<double>(0.15f), -kInf}) {
+    std::vector<double> touching(24, 5.0);
+    touching[0] = at_face;
+    const SpeedBounds t = BoundsFromRing(ring, 0.436, 0.15, 5.0, touching, p);
+    EXPECT_EQ(t.forward_mps, 0.0) << at_face;
+    EXPECT_NEAR(t.forward_gap_m, 0.0, 1e-9) << at_face;
+    EXPECT_EQ(t.backward_mps, kInf) << at_face;
+  }
+  // From a transducer looking aside (15 deg, outside the front cone's 12.5) the minimum stays
+  // where it says: a Nomad's sonars, blind to 0.43 m, read a doorway's jambs so.
+  std::vector<double> aside(24, 5.0);
+  aside[1] = 0.15;
+  const SpeedBounds a = BoundsFromRing(ring, 0.436, 0.15, 5.0, aside, p);
+  EXPECT_GT(a.forward_gap_m, 0.1);
+  EXPECT_GT(a.forward_mps, 0.0);
   // Something just behind: backing is capped, and stopped within the margin.
   std::vector<double> behind(24, 5.0);
   behind[12] = 0.16;

@@ -38,7 +38,9 @@ struct SpeedBounds {
 };
 
 /// The bounds from one reading of the ring. `ranges_m` one per transducer; NaN, readings
-/// below `min_range_m` and at or beyond `max_range_m` (no echo) bound nothing.
+/// below `min_range_m` and at or beyond `max_range_m` (no echo) bound nothing; a reading of
+/// `min_range_m` itself or -Inf (too close to measure) is an echo at the face of a transducer
+/// whose cone holds the straight line ahead or behind, at `min_range_m` from any other.
 SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double field_of_view_rad,
                            double min_range_m, double max_range_m,
                            const std::vector<double>& ranges_m, const ClearanceParameters& p);
