@@ -53,8 +53,8 @@ struct LostDetectorParameters {
   /// its usual, and every false "kidnap" relocalized the robot, up to 18 m off
   /// (markov_localization_eval tracking --route lab: 18 alarms in 10 runs, 0 with this). The
   /// averages (lost_ratio, certainty_drop_ratio) still see every beam: a kidnap whose misfit is
-  /// all in short beams is caught by them (kidnap 40 seeds: B-12 39 -> 38, Nomad 40 -> 38, B21
-  /// 38 -> 37 recovered; README).
+  /// mostly in short beams is caught by them, later (kidnap 40 seeds: B-12 39 -> 38, Nomad 40 ->
+  /// 38, B21 38 -> 37 recovered; detection's 90th percentile Nomad 4 -> 21 s; README).
   bool collapse_ignores_short_beams = true;
   /// A fall of POS-CERTAINTY below its threshold after hold_scans scans above it, while the
   /// fast fit is below certainty_drop_ratio * slow is lost too, in [lost_ratio, 1): after a 70
