@@ -40,6 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (int i = 0; i < ranges; ++i) ring.ranges.push_back(AnyFloat(in));
   cmd_vel_arbiter::ClearanceParameters p;
   p.footprint_radius_m = in.ConsumeBool() ? 0.0 : in.ConsumeFloatingPointInRange<double>(0, 10);
+  p.min_range_at_face = in.ConsumeBool();
   std::string error;
   const auto b = cmd_vel_arbiter::ros_conversions::RingBounds(ring, p, &error);
   if (!b) {

@@ -54,10 +54,11 @@ SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double fi
     // At the minimum (a driver clamps what lies closer to it; robot_sim does) or -Inf (REP 117:
     // too close to measure): from a transducer looking along the motion, the echo may be at its
     // face (read as 0.15 m, a B-12 pushed its front against an unmapped crate at 0.23 m/s for
-    // 240 s); from one looking aside it stays at the minimum (a Nomad's sonars, blind to 0.43 m,
-    // see a doorway's jambs there).
-    if (r == -std::numeric_limits<double>::infinity() ||
-        (r >= min_range_m - kAtMinimumM && r <= min_range_m + kAtMinimumM)) {
+    // 240 s); from one looking aside it stays at the minimum (applied to every transducer, a
+    // Nomad, blind to 0.43 m, stood by a doorway's jambs).
+    if (p.min_range_at_face &&
+        (r == -std::numeric_limits<double>::infinity() ||
+         (r >= min_range_m - kAtMinimumM && r <= min_range_m + kAtMinimumM))) {
       const double ahead = std::abs(std::remainder(t.yaw, 2.0 * M_PI));
       r = ahead <= half_fov || M_PI - ahead <= half_fov ? 0.0 : min_range_m;
     } else if (!std::isfinite(r) || r < min_range_m || r >= max_range_m) {

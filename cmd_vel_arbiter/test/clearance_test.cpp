@@ -59,10 +59,12 @@ TEST(Clearance, AWallAheadCapsForwardOnlyAndSideWallsCapNothing) {
   // A reading of the minimum itself (a driver clamps what lies closer; robot_sim does) or -Inf
   // (REP 117: too close to measure) ahead: the object may touch the body, so no speed towards
   // it. (Read as 0.15 m, it let a B-12 push into a crate the sonar had missed at 0.23 m/s.)
+  ClearanceParameters at_face_p = p;
+  at_face_p.min_range_at_face = true;
   for (const double at_face : {0.15, static_cast<double>(0.15f), -kInf}) {
     std::vector<double> touching(24, 5.0);
     touching[0] = at_face;
-    const SpeedBounds t = BoundsFromRing(ring, 0.436, 0.15, 5.0, touching, p);
+    const SpeedBounds t = BoundsFromRing(ring, 0.436, 0.15, 5.0, touching, at_face_p);
     EXPECT_EQ(t.forward_mps, 0.0) << at_face;
     EXPECT_NEAR(t.forward_gap_m, 0.0, 1e-9) << at_face;
     EXPECT_EQ(t.backward_mps, kInf) << at_face;
@@ -71,9 +73,16 @@ TEST(Clearance, AWallAheadCapsForwardOnlyAndSideWallsCapNothing) {
   // where it says: a Nomad's sonars, blind to 0.43 m, read a doorway's jambs so.
   std::vector<double> aside(24, 5.0);
   aside[1] = 0.15;
-  const SpeedBounds a = BoundsFromRing(ring, 0.436, 0.15, 5.0, aside, p);
+  const SpeedBounds a = BoundsFromRing(ring, 0.436, 0.15, 5.0, aside, at_face_p);
   EXPECT_GT(a.forward_gap_m, 0.1);
   EXPECT_GT(a.forward_mps, 0.0);
+  // Off (the default: a Nomad's sonars are blind to 0.43 m, its infrared and bumper cover
+  // that): the minimum ahead is a gap of min_range, -Inf bounds nothing.
+  std::vector<double> clamped(24, 5.0);
+  clamped[0] = 0.15;
+  EXPECT_NEAR(BoundsFromRing(ring, 0.436, 0.15, 5.0, clamped, p).forward_gap_m, 0.15, 0.01);
+  clamped[0] = -kInf;
+  EXPECT_EQ(BoundsFromRing(ring, 0.436, 0.15, 5.0, clamped, p).forward_mps, kInf);
   // Something just behind: backing is capped, and stopped within the margin.
   std::vector<double> behind(24, 5.0);
   behind[12] = 0.16;

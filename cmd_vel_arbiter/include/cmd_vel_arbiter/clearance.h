@@ -20,6 +20,13 @@ struct ClearanceParameters {
   double corridor_margin_m = 0.02;  ///< Added to the radius for the swept corridor (m), [0, 1].
   /// The body's radius (m); 0 = the farthest transducer from the centre (they sit on the body).
   double footprint_radius_m = 0.0;
+  /// A reading of a ring's minimum range itself (drivers and robot_sim clamp what lies closer)
+  /// or -Inf (REP 117: too close to measure), from a transducer whose cone holds the line of
+  /// motion, is an echo at its face: no speed towards it. For a robot whose ring is its only
+  /// sense of contact (the B-12: 12 sonars blind to 0.15 m, no bumper, no infrared). Off, the
+  /// minimum is read as a gap of min_range: a Nomad's sonars are blind to 0.43 m, and stopped
+  /// there its controller's tele-operation never reaches its own stop (teleop_bumper.test).
+  bool min_range_at_face = false;
 };
 
 /// Every violation, named as in config/cmd_vel_arbiter.yaml (clearance/...).
@@ -39,8 +46,8 @@ struct SpeedBounds {
 
 /// The bounds from one reading of the ring. `ranges_m` one per transducer; NaN, readings
 /// below `min_range_m` and at or beyond `max_range_m` (no echo) bound nothing; a reading of
-/// `min_range_m` itself or -Inf (too close to measure) is an echo at the face of a transducer
-/// whose cone holds the straight line ahead or behind, at `min_range_m` from any other.
+/// `min_range_m` itself is an echo there, or (`min_range_at_face`, also for -Inf) at the face
+/// of a transducer whose cone holds the straight line ahead or behind.
 SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double field_of_view_rad,
                            double min_range_m, double max_range_m,
                            const std::vector<double>& ranges_m, const ClearanceParameters& p);

@@ -24,6 +24,7 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("clearance/stop_margin_m", c.stop_margin_m, "m");
   r.Get("clearance/corridor_margin_m", c.corridor_margin_m, "m");
   r.Get("clearance/footprint_radius_m", c.footprint_radius_m, "m");
+  r.Get("clearance/min_range_at_face", c.min_range_at_face);
   for (const std::string& e : ValidateParameters(p.arbiter)) r.Fail(e);
   for (const std::string& e : ValidateParameters(p.clearance)) r.Fail(e);
   r.Require(p.clearance_max_age_s > 0 && p.clearance_max_age_s <= 60, "clearance/max_age_s",
