@@ -583,7 +583,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       std::vector<std::uint8_t> expected = stats.beam_used;
       int short_beams = 0, other_beams = 0;
       for (std::size_t i = 0; i < beams.size(); ++i) {
-        if (!expected[i]) continue;
+        if (!expected[i] || !beams[i].judged) continue;  // counted as the surprise counts
         if (unexpected[i])
           expected[i] = 0, ++short_beams;
         else
