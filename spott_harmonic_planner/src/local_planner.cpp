@@ -79,6 +79,17 @@ std::optional<spott_map::Segment> BorderGoalSegment(const Vec2& robot, const Vec
 }
 
 namespace {
+// Both ends on one side of the box, within tol.
+bool OnBorder(const spott_map::Segment& s, const spott_map::Box& b, double tol) {
+  const auto on_x = [&](double x) {
+    return std::abs(s.a.x() - x) <= tol && std::abs(s.b.x() - x) <= tol;
+  };
+  const auto on_y = [&](double y) {
+    return std::abs(s.a.y() - y) <= tol && std::abs(s.b.y() - y) <= tol;
+  };
+  return on_x(b.min.x()) || on_x(b.max.x()) || on_y(b.min.y()) || on_y(b.max.y());
+}
+
 PlannerParameters Checked(const PlannerParameters& p) {
   const auto v = ValidateParameters(p);
   if (!v.empty()) {
@@ -182,8 +193,19 @@ void LocalPlanner::PlaceGoal() {
     }
   } else {
     std::optional<spott_map::Segment> seg = border_goal_;
-    if (!seg)
+    // The global planner's segment lay on the window's border when it came; after a re-centre
+    // it lies inside until the projection onto the new window arrives (a cycle or two). Until
+    // then the goal is where it pointed, on the new border: the robot does not stop for it.
+    if (seg && !OnBorder(*seg, b, 0.5 * r)) {
+      const Vec2 d = seg->Midpoint() - pose_.Position();
+      const double far = 2.0 * (b.max - b.min).norm();
+      seg = d.norm() > r
+                ? BorderGoalSegment(pose_.Position(), pose_.Position() + far / d.norm() * d, b,
+                                    params_.border_goal_half_width_m)
+                : std::nullopt;
+    } else if (!seg) {
       seg = BorderGoalSegment(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
+    }
     // A border goal whose own cells are all blocked (a door projected at an angle onto a wall
     // crossing the border, the window shifted by a localization error) widens step by step to
     // the free border cells nearest it, up to border_goal_half_width_m.

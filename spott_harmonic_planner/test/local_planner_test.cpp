@@ -225,6 +225,33 @@ TEST(LocalPlanner, GlobalBorderGoalWinsOverATargetInsideTheWindowUntilCleared) {
   EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.0, 0.1);
 }
 
+// The window re-centres while the global planner's border goal (north, through a door the
+// straight line to the target misses) lies on the old window's border: until the projection onto
+// the new window comes, the robot keeps going where that goal pointed instead of stopping.
+TEST(LocalPlanner, AfterARecentreTheOldBorderGoalPointsTheWayUntilTheNewProjection) {
+  LocalPlanner planner(SmallWindow());
+  planner.CorrectPose({0.0, 0.0, M_PI / 2});
+  planner.SetGoal(Vec2(20.0, 0.0));
+  planner.SetBorderGoal({Vec2(-0.6, 3.5), Vec2(0.6, 3.5)});  // the north border
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  ASSERT_TRUE(planner.status().has_goal);
+  EXPECT_NEAR(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, M_PI / 2, 0.1);
+  planner.CorrectPose({0.0, 2.8, M_PI / 2});  // within 1 m of the north border: re-centre
+  const PlannerStatus s = planner.Cycle();
+  ASSERT_TRUE(s.recentred);
+  ASSERT_TRUE(s.has_goal) << s.problem;
+  EXPECT_TRUE(s.goal_on_border);
+  const SteeringCommand cmd = planner.Steer(SpeedMode::kNormal, std::nullopt);
+  EXPECT_TRUE(cmd.valid);
+  EXPECT_GT(cmd.linear, 0.0);
+  EXPECT_NEAR(cmd.heading, M_PI / 2, 0.1);  // north still, not east at the target
+  // The new projection replaces it.
+  planner.SetBorderGoal({Vec2(2.9, 6.3), Vec2(3.5, 6.3)});
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  EXPECT_TRUE(planner.status().goal_on_border);
+  EXPECT_GT(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.2);
+}
+
 // The border goal's own cells are blocked (a wall crosses the border there): the goal widens to
 // the nearest free border cells instead of failing.
 TEST(LocalPlanner, BlockedBorderGoalWidensToTheNearestFreeBorderCells) {
