@@ -19,6 +19,7 @@ from workspace_tools import find_tool, run_scenario
 
 PKG = 'spott_launch'
 SCENARIO = 'hilare_sonar_dropout.yaml'
+PLOTS = os.path.join(rospkg.RosPack().get_path(PKG), 'scripts', 'run_plots.py')
 
 
 class ScenarioRun(unittest.TestCase):
@@ -109,6 +110,37 @@ class ScenarioRun(unittest.TestCase):
                                        delta=0.005, msg=name + ': mean error')
                 self.assertAlmostEqual(bl['max_position_error_m'], ll['max_position_error_m'],
                                        delta=0.01, msg=name + ': max error')
+            # The plots ./spott run draws from the bag show the run the report describes.
+            plots = os.path.join(d, 'plots')
+            out = subprocess.run([sys.executable, PLOTS, bag, plots], stdout=subprocess.PIPE,
+                                 stderr=subprocess.STDOUT, text=True, timeout=120)
+            self.assertEqual(out.returncode, 0, out.stdout[-2000:])
+            for png in ('path.png', 'certainty.png', 'speed.png'):
+                with open(os.path.join(plots, png), 'rb') as f:
+                    self.assertEqual(f.read(8), b'\x89PNG\r\n\x1a\n', png)
+            with open(os.path.join(plots, 'plots.json')) as f:
+                p = json.load(f)
+            legs_path = sum(leg['path_length_m'] for leg in r['legs'])
+            self.assertGreaterEqual(p['path_length_m'], legs_path - 0.05)
+            self.assertLess(p['path_length_m'], legs_path + 0.02 * legs_path + 0.5)
+            self.assertAlmostEqual(p['max_position_error_m'], r['totals']['max_position_error_m'],
+                                   delta=0.01)
+            self.assertEqual(len(p['legs']), len(r['legs']))
+            for drawn, leg in zip(p['legs'], r['legs']):
+                for a, c in zip(drawn['target'], leg['target'][:2]):
+                    self.assertAlmostEqual(a, c, delta=0.01, msg=leg['goal'])
+            self.assertEqual(p['contact_samples'] > 0, r['totals']['body_contacts'] > 0)
+
+    def test_plots_refuse_a_file_that_is_not_a_bag_by_its_name(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, 'not_a.bag')
+            with open(path, 'w') as f:
+                f.write('world: hilare_room\n')
+            out = subprocess.run([sys.executable, PLOTS, path, d], stdout=subprocess.PIPE,
+                                 stderr=subprocess.STDOUT, text=True, timeout=60)
+            self.assertEqual(out.returncode, 1, out.stdout)
+            self.assertIn(path + ':', out.stdout)
+            self.assertFalse(os.path.exists(os.path.join(d, 'path.png')))
 
 
 if __name__ == '__main__':
