@@ -79,7 +79,8 @@ std::optional<spott_map::Segment> BorderGoalSegment(const Vec2& robot, const Vec
 }
 
 namespace {
-// Both ends on one side of the box, within tol.
+// Both ends on one side of the box, within tol (the global planner's segment may lie on the
+// border cells' centres, half a cell inside).
 bool OnBorder(const spott_map::Segment& s, const spott_map::Box& b, double tol) {
   const auto on_x = [&](double x) {
     return std::abs(s.a.x() - x) <= tol && std::abs(s.b.x() - x) <= tol;
@@ -88,6 +89,25 @@ bool OnBorder(const spott_map::Segment& s, const spott_map::Box& b, double tol) 
     return std::abs(s.a.y() - y) <= tol && std::abs(s.b.y() - y) <= tol;
   };
   return on_x(b.min.x()) || on_x(b.max.x()) || on_y(b.min.y()) || on_y(b.max.y());
+}
+
+// `s` (on a side of an earlier window) moved onto the side of `b` it faces from `robot`, its
+// extent along that side kept and clipped to `b`; none when nothing of it is left.
+std::optional<spott_map::Segment> OnSameSide(const spott_map::Segment& s, const Vec2& robot,
+                                             const spott_map::Box& b) {
+  const Vec2 mid = s.Midpoint();
+  if (std::abs(s.a.x() - s.b.x()) <= std::abs(s.a.y() - s.b.y())) {  // on an east or west side
+    const double x = mid.x() > robot.x() ? b.max.x() : b.min.x();
+    const double y0 = std::max(std::min(s.a.y(), s.b.y()), b.min.y());
+    const double y1 = std::min(std::max(s.a.y(), s.b.y()), b.max.y());
+    if (y0 > y1) return std::nullopt;
+    return spott_map::Segment{Vec2(x, y0), Vec2(x, y1)};
+  }
+  const double y = mid.y() > robot.y() ? b.max.y() : b.min.y();
+  const double x0 = std::max(std::min(s.a.x(), s.b.x()), b.min.x());
+  const double x1 = std::min(std::max(s.a.x(), s.b.x()), b.max.x());
+  if (x0 > x1) return std::nullopt;
+  return spott_map::Segment{Vec2(x0, y), Vec2(x1, y)};
 }
 
 PlannerParameters Checked(const PlannerParameters& p) {
@@ -195,14 +215,10 @@ void LocalPlanner::PlaceGoal() {
     std::optional<spott_map::Segment> seg = border_goal_;
     // The global planner's segment lay on the window's border when it came; after a re-centre
     // it lies inside until the projection onto the new window arrives (a cycle or two). Until
-    // then the goal is where it pointed, on the new border: the robot does not stop for it.
-    if (seg && !OnBorder(*seg, b, 0.5 * r)) {
-      const Vec2 d = seg->Midpoint() - pose_.Position();
-      const double far = 2.0 * (b.max - b.min).norm();
-      seg = d.norm() > r
-                ? BorderGoalSegment(pose_.Position(), pose_.Position() + far / d.norm() * d, b,
-                                    params_.border_goal_half_width_m)
-                : std::nullopt;
+    // then the goal is that segment carried to the same side of the new window (a corridor's
+    // cross-section stays one): the robot does not stop for it.
+    if (seg && !OnBorder(*seg, b, r)) {
+      seg = OnSameSide(*seg, pose_.Position(), b);
     } else if (!seg) {
       seg = BorderGoalSegment(pose_.Position(), *goal_, b, params_.border_goal_half_width_m);
     }

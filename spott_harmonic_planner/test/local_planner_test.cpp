@@ -252,6 +252,41 @@ TEST(LocalPlanner, AfterARecentreTheOldBorderGoalPointsTheWayUntilTheNewProjecti
   EXPECT_GT(planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.2);
 }
 
+// The same in a corridor: the global planner's segment spans the corridor's cross-section; the
+// robot drives near one wall, so a line from it through the segment's middle would leave the
+// corridor. The goal stays the corridor's cross-section on the new window's side.
+TEST(LocalPlanner, AfterARecentreInACorridorTheGoalStaysTheCorridorsCrossSection) {
+  PlannerParameters p = SmallWindow();
+  p.window.resolution_m = 0.1;
+  p.sweeps_per_cycle = 4;  // the node's
+  LocalPlanner planner(p);
+  spott_map::MapDatabase db = MapWithBox(-10.0, 6.9, 40.0, 7.0);  // south wall
+  spott_map::MapFeature north = db.features().front();
+  north.id = "north";
+  north.pose.y = 9.55;  // 9.5 to 9.6
+  ASSERT_TRUE(db.AddFeature(north));
+  // A room north of the corridor, closed to it: its border cells are no way for the robot.
+  planner.SetMap(db);
+  planner.CorrectPose({15.0, 7.6, 0.0});
+  planner.SetGoal(Vec2(30.0, 7.6));
+  planner.Cycle();
+  const double east = planner.window().bounds().max.x();
+  planner.SetBorderGoal({Vec2(east, 7.0), Vec2(east, 9.5)});
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  planner.CorrectPose({east - 0.9, 7.6, 0.0});
+  const PlannerStatus s = planner.Cycle();
+  ASSERT_TRUE(s.recentred);
+  ASSERT_TRUE(s.has_goal) << s.problem;
+  const SteeringCommand cmd = planner.Steer(SpeedMode::kNormal, std::nullopt);
+  ASSERT_TRUE(cmd.valid) << cmd.reason;
+  EXPECT_GT(cmd.linear, 0.0);
+  // The way the global planner's next projection (the cross-section on the new side) gives.
+  const double new_east = planner.window().bounds().max.x();
+  planner.SetBorderGoal({Vec2(new_east, 7.0), Vec2(new_east, 9.5)});
+  for (int i = 0; i < 5; ++i) planner.Cycle();
+  EXPECT_NEAR(cmd.heading, planner.Steer(SpeedMode::kNormal, std::nullopt).heading, 0.2);
+}
+
 // The border goal's own cells are blocked (a wall crosses the border there): the goal widens to
 // the nearest free border cells instead of failing.
 TEST(LocalPlanner, BlockedBorderGoalWidensToTheNearestFreeBorderCells) {
