@@ -7,6 +7,7 @@
 #include <queue>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "kernels.h"
 #include "mg_kernels.h"
@@ -1063,8 +1064,23 @@ double PotentialField::Clearance(const Vec2& p) const {
     ComputeClearance();
     clearance_ready_ = true;
   }
+  // Bilinear between the four cell centres around p: one cell's value steps by a whole cell,
+  // and the steering's bias and speed, which scale with the clearance, stepped with it (along a
+  // wall the robot weaved, the turn rate reversing every ~2 s).
+  const double gx = std::clamp((p.x() - origin_.x()) / resolution_ - 0.5, 0.0, width_ - 1.0);
+  const double gy = std::clamp((p.y() - origin_.y()) / resolution_ - 0.5, 0.0, height_ - 1.0);
+  const int x0 = std::min(static_cast<int>(gx), width_ - 2);
+  const int y0 = std::min(static_cast<int>(gy), height_ - 2);
+  const double tx = gx - x0, ty = gy - y0;
+  const auto at = [&](int x, int y) { return static_cast<double>(clearance_cells_[Index(x, y)]); };
+  double cells = 0.0;  // (a window without a blocked cell: infinite; a zero weight adds nothing)
+  for (const auto& [x, y, w] :
+       {std::tuple{x0, y0, (1.0 - tx) * (1.0 - ty)}, std::tuple{x0 + 1, y0, tx * (1.0 - ty)},
+        std::tuple{x0, y0 + 1, (1.0 - tx) * ty}, std::tuple{x0 + 1, y0 + 1, tx * ty}}) {
+    if (w > 0.0) cells += w * at(x, y);
+  }
   // Centre-to-centre distance minus half a cell: the distance to the blocked cell's square.
-  return std::max(0.0, (clearance_cells_[Index(c->first, c->second)] - 0.5) * resolution_);
+  return std::max(0.0, (cells - 0.5) * resolution_);
 }
 
 }  // namespace spott_harmonic_planner

@@ -277,6 +277,23 @@ TEST(PotentialField, ClearanceIsDistanceToNearestBlockedSquare) {
   EXPECT_NEAR(field.Clearance(Vec2(10.5, 10.5)), 0.0, 1e-6);
 }
 
+// The steering scales the bias and the speed with the clearance: it must not step by a whole
+// cell between two cells (the robot weaved along a wall when it did).
+TEST(PotentialField, ClearanceIsContinuousBetweenCellCentres) {
+  auto raster = EmptyRaster(21, 21);
+  Block(raster, 10, 10, 10, 10);
+  PotentialField field(Options(SolverKind::kSorRedBlack));
+  field.SetOccupancy(raster);
+  EXPECT_NEAR(field.Clearance(Vec2(13.0, 10.5)), 2.0, 1e-6);  // halfway between 2.5 and 1.5
+  double last = field.Clearance(Vec2(11.0, 10.5));
+  for (double x = 11.05; x <= 14.0; x += 0.05) {
+    const double c = field.Clearance(Vec2(x, 10.5));
+    EXPECT_GE(c, last) << x;                // away from the block
+    EXPECT_LE(c - last, 0.05 + 1e-9) << x;  // no jump
+    last = c;
+  }
+}
+
 TEST(PotentialField, BadOptionsAreRefusedByName) {
   FieldOptions o;
   o.tolerance = 0.0;
