@@ -6,8 +6,9 @@
 #                  body contacts and lost alarms;
 #   certainty.png  the localization's certainty and its position error against the ground truth;
 #   speed.png      the robot's real speed (ground truth) and the commanded speed (/cmd_vel);
-#   plots.json     the figures the plots show (path length, errors, speeds), so a test or a reader
-#                  can check them against report.json.
+#   plots.json     the figures the plots show (path length, errors, speeds; per leg how smoothly
+#                  the wheels were commanded), so a test or a reader can check them against
+#                  report.json.
 # Times are simulated seconds from the first ground-truth sample. Messages without a stamp
 # (/cmd_vel) are placed on simulated time through /clock as the recorder saw it.
 # Usage: run_plots.py BAG OUT_DIR
@@ -24,6 +25,8 @@ TASK_GOAL, TASK_RESULT = '/task/goal', '/task/result'
 NAV_GOAL, NAV_RESULT = '/harmonic_planner/navigate/goal', '/harmonic_planner/navigate/result'
 SPEED_WINDOW_S = 0.2  # the real speed from positions this far apart: the truth's twist is noiseless
                       # but in the body frame of a model that may slide
+TURN_REVERSAL_RPS = 0.2  # a turn-rate reversal counts from beyond +-this to beyond -+this
+STOP_FROM_MPS = 0.15     # a sudden stop: from above this to 0 in one command
 CMD_GAP_S = 0.5  # /cmd_vel comes at 20 Hz while anything drives; a longer silence is drawn as one
 
 
@@ -129,11 +132,31 @@ def series(run):
         out['cmd'] = np.column_stack([on_sim_time(c[:, 0], run.clock), c[:, 1], c[:, 2]])
         figures['max_commanded_speed_mps'] = float(np.abs(c[:, 1]).max())
     figures['contact_samples'] = len(run.contacts)
-    figures['legs'] = [{'label': label, 'start_s': start - t0,
-                        'end_s': None if end is None else end - t0, 'target': target}
-                       for start, label, end, target in run.legs]
+    figures['legs'] = []
+    for start, label, end, target in run.legs:
+        leg = {'label': label, 'start_s': start - t0, 'end_s': None if end is None else end - t0,
+               'target': target}
+        if 'cmd' in out and end is not None:
+            c = out['cmd'][(out['cmd'][:, 0] >= start) & (out['cmd'][:, 0] <= end)]
+            leg.update(smoothness(c))
+        figures['legs'].append(leg)
     out['figures'] = figures
     return out
+
+
+def smoothness(cmd):
+    """How smoothly the wheels were commanded (rows: t, linear, angular): the turn rate's
+    reversals beyond +-TURN_REVERSAL_RPS (weaving), its rms, and the stops from above
+    STOP_FROM_MPS to 0 from one command to the next (a stutter, or a stop that was meant)."""
+    if len(cmd) == 0:
+        return {'turn_reversals': 0, 'turn_rms_rps': 0.0, 'sudden_stops': 0}
+    sign = np.where(cmd[:, 2] > TURN_REVERSAL_RPS, 1, np.where(cmd[:, 2] < -TURN_REVERSAL_RPS,
+                                                              -1, 0))
+    sign = sign[sign != 0]
+    stops = (cmd[:-1, 1] > STOP_FROM_MPS) & (cmd[1:, 1] == 0.0)
+    return {'turn_reversals': int(np.count_nonzero(sign[1:] != sign[:-1])),
+            'turn_rms_rps': float(np.sqrt(np.mean(cmd[:, 2] ** 2))),
+            'sudden_stops': int(np.count_nonzero(stops))}
 
 
 def draw(run, data, out_dir):
