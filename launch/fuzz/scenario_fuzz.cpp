@@ -1,6 +1,6 @@
 // Fuzzes the scenario reader (spott_launch/scenario.h) and what a good scenario turns into:
 // robot_sim must read back the fault list the scenario hands it, and demo_report the tasks or
-// goals, unchanged.
+// goals, unchanged, or the file of the missions.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -22,6 +22,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto schedule = robot_sim::ParseFaultSchedule(s.faults_yaml, "faults.yaml");
     spott_fuzz::Check(schedule.ok() && schedule.events.size() == s.faults.size(), "scenario_fuzz",
                       "robot_sim reads the scenario's fault list back whole");
+  }
+  if (!s.missions.empty()) {  // demo_report reads them from the file: it must get its name
+    const std::string file = "a dir/with \"quotes\": and colons.yaml";
+    const YAML::Node params = YAML::Load(spott_launch::DemoParametersYaml(s, file));
+    spott_fuzz::Check(
+        params["missions_file"].as<std::string>() == file && !params["goals"] && !params["tasks"],
+        "scenario_fuzz", "demo_report gets the missions' file and nothing else");
+    return 0;
   }
   const YAML::Node params = YAML::Load(spott_launch::DemoParametersYaml(s));
   const auto& legs = s.tasks.empty() ? s.goals : s.tasks;

@@ -23,6 +23,7 @@ TRUTH, STATUS, CMD, CLOCK = '/sim/ground_truth', '/localization_status', '/cmd_v
 CONTACT, MAP, FAULTS = '/sim/contact', '/map', '/sim/faults'
 TASK_GOAL, TASK_RESULT = '/task/goal', '/task/result'
 NAV_GOAL, NAV_RESULT = '/harmonic_planner/navigate/goal', '/harmonic_planner/navigate/result'
+MISSION_GOAL, MISSION_RESULT = '/mission/goal', '/mission/result'
 SPEED_WINDOW_S = 0.2  # the real speed from positions this far apart: the truth's twist is noiseless
                       # but in the body frame of a model that may slide
 TURN_REVERSAL_RPS = 0.2  # a turn-rate reversal counts from beyond +-this to beyond -+this
@@ -50,8 +51,13 @@ def read_bag(path):
     legs_by_id = {}
     with rosbag.Bag(path) as bag:
         topics = [TRUTH, STATUS, CMD, CLOCK, CONTACT, MAP, FAULTS, TASK_GOAL, TASK_RESULT,
-                  NAV_GOAL, NAV_RESULT]
-        by_task = bag.get_message_count(topic_filters=[TASK_GOAL]) > 0
+                  NAV_GOAL, NAV_RESULT, MISSION_GOAL, MISSION_RESULT]
+        # The legs are the run's own goals: missions (rpl_executive, which sends Navigate goals
+        # of its own), tasks (the TR+ controller, likewise), else Navigate goals.
+        by_mission = bag.get_message_count(topic_filters=[MISSION_GOAL]) > 0
+        by_task = not by_mission and bag.get_message_count(topic_filters=[TASK_GOAL]) > 0
+        goal_topic = MISSION_GOAL if by_mission else TASK_GOAL if by_task else NAV_GOAL
+        result_topic = MISSION_RESULT if by_mission else TASK_RESULT if by_task else NAV_RESULT
         for topic, m, t in bag.read_messages(topics=topics):
             if topic == TRUTH:
                 p = m.pose.pose.position
@@ -72,16 +78,23 @@ def read_bag(path):
                 for s in m.status:
                     run.faults.append((m.header.stamp.to_sec(), '%s: %s' % (s.hardware_id,
                                                                            s.message)))
-            elif topic == (TASK_GOAL if by_task else NAV_GOAL):
-                target = None if by_task else (m.goal.target.pose.position.x,
-                                               m.goal.target.pose.position.y)
-                label = m.goal.command if by_task else 'goal (%.1f, %.1f)' % target
+            elif topic == goal_topic:
+                target = None if by_task or by_mission else (m.goal.target.pose.position.x,
+                                                             m.goal.target.pose.position.y)
+                label = ('mission ' + m.goal.name if by_mission else m.goal.command if by_task
+                         else 'goal (%.1f, %.1f)' % target)
                 legs_by_id[m.goal_id.id] = len(run.legs)
                 run.legs.append([m.header.stamp.to_sec(), label, None, target])
-            elif topic == (TASK_RESULT if by_task else NAV_RESULT):
-                i = legs_by_id.get(m.status.goal_id.id)
-                if i is not None:
+            elif topic == result_topic:
+                i = legs_by_id.pop(m.status.goal_id.id, None)
+                if i is None:
+                    continue
+                if (by_mission and m.result.outcome == 'rejected'
+                        and 'not ready' in m.result.message):
+                    run.legs[i] = None  # sent again once the executive was ready
+                else:
                     run.legs[i][2] = m.header.stamp.to_sec()
+    run.legs = [leg for leg in run.legs if leg is not None]
     return run
 
 

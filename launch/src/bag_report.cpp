@@ -1,9 +1,10 @@
 // bag_report: the run's report recomputed from a bag alone (./spott report BAG). The legs are
-// the demo's action goals and results in the bag (/task for the TR+ controller, else
-// harmonic_planner/navigate); each is measured by the same LegMetrics and judged by the same
-// rules as the live run, on the recorded ground truth, bumpers and localization statuses; the
-// world is the one /room_door_graph names. Prints the navigation report; --json FILE writes the
-// JSON report (FormatReportJson).
+// the demo's action goals and results in the bag (/mission for rpl_executive, /task for the TR+
+// controller, else harmonic_planner/navigate); each is measured by the same LegMetrics and judged
+// by the same rules as the live run, on the recorded ground truth, bumpers and localization
+// statuses; the world is the one /room_door_graph names, the scenario (a mission's expected
+// outcome and monitors, the goal tolerance) the one demo_report latched on /demo_report/scenario.
+// Prints the navigation report; --json FILE writes the JSON report (FormatReportJson).
 //   bag_report BAG [--json FILE] [--worlds DIR] [--tolerance M]
 #include <fstream>
 #include <iostream>
@@ -19,12 +20,15 @@
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/MissionActionGoal.h>
+#include <spott_msgs/MissionActionResult.h>
 #include <spott_msgs/NavigateActionFeedback.h>
 #include <spott_msgs/NavigateActionGoal.h>
 #include <spott_msgs/NavigateActionResult.h>
 #include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/TaskActionGoal.h>
 #include <spott_msgs/TaskActionResult.h>
+#include <std_msgs/String.h>
 
 #include "demo_report.h"
 #include "leg_messages.h"
@@ -43,7 +47,10 @@ constexpr double kRecordLagS = 0.5;
 struct Options {
   std::string bag, json, worlds = SPOTT_WORLDS_DIR;
   double tolerance_m = 0.25;
+  bool tolerance_given = false;
 };
+
+enum class RunKind { kNavigate, kTask, kMission };
 
 struct OpenLeg {
   NavigationLeg leg;
@@ -58,8 +65,8 @@ struct OpenLeg {
 
 class Replay {
  public:
-  Replay(const spott_map::World& world, bool by_task, double tolerance_m)
-      : metrics_(world), world_(world), by_task_(by_task), tolerance_m_(tolerance_m) {}
+  Replay(const spott_map::World& world, RunKind kind, double tolerance_m)
+      : metrics_(world), world_(world), kind_(kind), tolerance_m_(tolerance_m) {}
 
   void Time(double t) {
     if (open_ && open_->end_s >= 0.0 &&
@@ -107,6 +114,9 @@ class Replay {
     metrics_.EndAt(t + spott_launch::LegMetrics::kSettleS);
     leg.leg.sim_time_s = t - leg.leg.start_sim_s;
   }
+  /// The open leg never was one: its goal was refused before anything ran (a mission the
+  /// executive was not ready for, sent again).
+  void Drop() { open_.reset(); }
   std::vector<NavigationLeg> Finish() {
     if (open_) Close();
     return legs_;
@@ -123,9 +133,11 @@ class Replay {
     metrics_.Measure(leg.target.Position(), leg);
     if (o.end_s < 0.0) {
       JudgeLeg("no result in the bag", "", leg);
-    } else if (by_task_) {
+    } else if (kind_ == RunKind::kTask) {
       JudgeLeg(o.refusal, spott_launch::OffTaskGoal(world_, leg.task, o.start, leg, tolerance_m_),
                leg);
+    } else if (kind_ == RunKind::kMission) {
+      spott_launch::JudgeMissionLeg(o.refusal, tolerance_m_, leg);
     } else {
       JudgeLeg(o.refusal, spott_launch::OffPlace(leg, tolerance_m_), leg);
     }
@@ -135,7 +147,7 @@ class Replay {
 
   spott_launch::LegMetrics metrics_;
   const spott_map::World& world_;
-  bool by_task_;
+  RunKind kind_;
   double tolerance_m_;
   std::optional<OpenLeg> open_;
   std::vector<NavigationLeg> legs_;
@@ -158,6 +170,7 @@ int main(int argc, char** argv) {
       if (arg == "--json") o.json = value;
       if (arg == "--worlds") o.worlds = value;
       if (arg == "--tolerance") {
+        o.tolerance_given = true;
         try {
           o.tolerance_m = std::stod(value);
         } catch (const std::exception&) {
@@ -182,15 +195,37 @@ int main(int argc, char** argv) {
     std::cerr << o.bag << ": " << e.what() << "\n";
     return 1;
   }
-  // The world and the kind of run first.
-  std::string world_name;
-  bool by_task = false;
+  // The world, the scenario and the kind of run first.
+  std::string world_name, scenario_text;
+  bool by_task = false, by_mission = false;
   for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
     if (m.getTopic() == "/room_door_graph" && world_name.empty()) {
       if (auto g = m.instantiate<spott_msgs::RoomDoorGraph>()) world_name = g->world;
     }
+    if (m.getTopic() == "/demo_report/scenario" && scenario_text.empty()) {
+      if (auto t = m.instantiate<std_msgs::String>()) scenario_text = t->data;
+    }
     if (m.getTopic() == "/task/goal") by_task = true;
+    if (m.getTopic() == "/mission/goal") by_mission = true;
   }
+  // The scenario as the run had it: its tolerance, and what each mission must show.
+  std::optional<spott_launch::Scenario> scenario;
+  if (!scenario_text.empty()) {
+    auto parsed = spott_launch::ParseScenario(scenario_text, o.bag + ":/demo_report/scenario");
+    if (!parsed.ok()) {
+      std::cerr << spott_map::FormatErrors(parsed.errors) << "\n";
+      return 1;
+    }
+    scenario = std::move(parsed.scenario);
+    if (!o.tolerance_given) o.tolerance_m = scenario->goal_tolerance_m;
+  } else if (by_mission) {
+    std::cerr << o.bag
+              << ": no /demo_report/scenario: each mission is judged on the "
+                 "executive's word (completed) and its contacts\n";
+  }
+  const RunKind kind = by_mission ? RunKind::kMission
+                       : by_task  ? RunKind::kTask
+                                  : RunKind::kNavigate;
   if (world_name.empty()) {
     std::cerr << o.bag << ": no /room_door_graph naming the world: not a run of the stack\n";
     return 1;
@@ -203,9 +238,11 @@ int main(int argc, char** argv) {
   spott_launch::DemoReport report;
   report.ok = true;
   report.world = world_name;
-  report.navigation.by_task = by_task;
+  report.navigation.by_task = kind == RunKind::kTask;
+  report.navigation.by_mission = kind == RunKind::kMission;
   report.navigation.ran = true;
-  Replay replay(*world.world, by_task, o.tolerance_m);
+  Replay replay(*world.world, kind, o.tolerance_m);
+  std::size_t missions_seen = 0;  // legs of missions that ran, matched to the scenario's
   std::vector<std::string> features_before;
   for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
     const std::string& topic = m.getTopic();
@@ -228,13 +265,52 @@ int main(int argc, char** argv) {
         const auto faults = spott_launch::FaultsFrom(*p);
         report.faults.insert(report.faults.end(), faults.begin(), faults.end());
       }
-    } else if (by_task && topic == "/task/goal") {
+    } else if (kind == RunKind::kMission && topic == "/mission/goal") {
+      if (auto p = m.instantiate<spott_msgs::MissionActionGoal>()) {
+        NavigationLeg leg;
+        leg.mission = p->goal.name;
+        leg.has_target = false;
+        if (scenario && missions_seen < scenario->missions.size()) {
+          const spott_launch::MissionSpec& spec = scenario->missions[missions_seen];
+          leg.goal = spec.goal_place.text;
+          if (const spott_map::Place* place = world.world->FindPlace(spec.goal_place.text)) {
+            leg.target = place->pose;
+            leg.has_target = true;
+          } else if (spec.goal_point) {
+            leg.target = {spec.goal_point->x(), spec.goal_point->y(), 0.0};
+            leg.has_target = true;
+          }
+        }
+        replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
+      }
+    } else if (kind == RunKind::kMission && topic == "/mission/result") {
+      auto p = m.instantiate<spott_msgs::MissionActionResult>();
+      OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
+      if (!leg) continue;
+      if (p->result.outcome == "rejected" &&
+          p->result.message.find("not ready") != std::string::npos) {
+        replay.Drop();  // sent again once the executive is ready (RunMissions)
+        continue;
+      }
+      NavigationLeg& l = leg->leg;
+      l.mission_outcome = p->result.outcome;
+      for (const auto& e : p->result.events) l.monitors_fired.push_back(e.condition);
+      l.navigate_outcome =
+          l.mission_outcome + (p->result.message.empty() ? "" : ": " + p->result.message);
+      spott_launch::MissionSpec spec;  // no scenario: the executive's word
+      if (scenario && missions_seen < scenario->missions.size())
+        spec = scenario->missions[missions_seen];
+      ++missions_seen;
+      leg->refusal = spott_launch::MissionMismatch(spec, l.mission_outcome, p->result.message,
+                                                   l.monitors_fired);
+      replay.End(*leg, p->header.stamp.toSec());
+    } else if (kind == RunKind::kTask && topic == "/task/goal") {
       if (auto p = m.instantiate<spott_msgs::TaskActionGoal>()) {
         NavigationLeg leg;
         leg.task = p->goal.command;
         replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
       }
-    } else if (by_task && topic == "/task/result") {
+    } else if (kind == RunKind::kTask && topic == "/task/result") {
       auto p = m.instantiate<spott_msgs::TaskActionResult>();
       OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
       if (!leg) continue;
@@ -243,7 +319,7 @@ int main(int argc, char** argv) {
       l.navigate_outcome = l.task_outcome;
       leg->refusal = reached ? "" : "the controller says " + l.task_outcome;
       replay.End(*leg, p->header.stamp.toSec());
-    } else if (!by_task && topic == "/harmonic_planner/navigate/goal") {
+    } else if (kind == RunKind::kNavigate && topic == "/harmonic_planner/navigate/goal") {
       if (auto p = m.instantiate<spott_msgs::NavigateActionGoal>()) {
         NavigationLeg leg;
         const auto& target = p->goal.target.pose;
@@ -256,7 +332,7 @@ int main(int argc, char** argv) {
         if (leg.goal.empty()) leg.goal = "(a point)";
         replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
       }
-    } else if (!by_task && topic == "/harmonic_planner/navigate/result") {
+    } else if (kind == RunKind::kNavigate && topic == "/harmonic_planner/navigate/result") {
       auto p = m.instantiate<spott_msgs::NavigateActionResult>();
       OpenLeg* leg = p ? replay.Current(p->status.goal_id.id) : nullptr;
       if (!leg) continue;

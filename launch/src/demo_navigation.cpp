@@ -9,6 +9,7 @@
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/MissionAction.h>
 #include <spott_msgs/NavigateAction.h>
 #include <spott_msgs/TaskAction.h>
 
@@ -152,6 +153,10 @@ struct DoneTime {
   ros::Time Get() {
     std::lock_guard<std::mutex> lock(mutex);
     return at ? *at : ros::Time::now();
+  }
+  void Reset() {
+    std::lock_guard<std::mutex> lock(mutex);
+    at.reset();
   }
 };
 
@@ -337,6 +342,88 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
   return report;
 }
 
+NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
+                             const std::vector<MissionSpec>& missions, double leg_timeout_s,
+                             double connect_timeout_s, double goal_tolerance_m) {
+  using MissionClient = actionlib::SimpleActionClient<spott_msgs::MissionAction>;
+  NavigationReport report;
+  report.by_mission = true;
+  if (!WaitForClock(nh, connect_timeout_s, report)) return report;
+  RunWatch watch(nh, world);
+  LegWatcher& watcher = watch.watcher;
+  watch.Start();
+  MissionClient client(nh, "mission", true);
+  if (!client.waitForServer(ros::Duration(connect_timeout_s))) {
+    report.skipped = "/mission is not offered (rpl_executive is not running)";
+    return report;
+  }
+  report.ran = true;
+  for (const MissionSpec& spec : missions) {
+    NavigationLeg leg;
+    leg.mission = spec.name.text;
+    leg.goal = spec.goal_place.text;
+    leg.has_target = false;
+    if (const spott_map::Place* place = world.FindPlace(spec.goal_place.text)) {
+      leg.target = place->pose;
+      leg.has_target = true;
+    } else if (spec.goal_point) {
+      leg.target = {spec.goal_point->x(), spec.goal_point->y(), 0.0};
+      leg.has_target = true;
+    }
+    spott_msgs::MissionGoal goal;
+    goal.language = spec.language == "rpl" ? spott_msgs::MissionGoal::RPL
+                                           : spott_msgs::MissionGoal::NOREILS_CHATILA;
+    goal.name = spec.name.text;
+    goal.bindings = spec.bindings;
+    ros::Time started = ros::Time::now();
+    const ros::WallTime wall_started = ros::WallTime::now();
+    bool done = false;
+    DoneTime done_time;
+    // The executive refuses a mission until its modules have their first readings ("not
+    // ready"): asked again each second, as an operator would, within the leg's time.
+    for (;;) {
+      started = ros::Time::now();
+      leg.start_sim_s = started.toSec();
+      watcher.Reset(started);
+      client.sendGoal(goal,
+                      [&done_time](const actionlib::SimpleClientGoalState&,
+                                   const spott_msgs::MissionResultConstPtr&) { done_time.Set(); });
+      done = WaitForEnd(client, started, leg_timeout_s);
+      const auto early = client.getResult();
+      if (!done || !early || early->outcome != "rejected" ||
+          early->message.find("not ready") == std::string::npos ||
+          (ros::WallTime::now() - wall_started).toSec() > connect_timeout_s) {
+        break;
+      }
+      ros::WallDuration(1.0).sleep();
+      done_time.Reset();
+    }
+    leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
+    std::string message;
+    if (done) {
+      const auto result = client.getResult();
+      leg.mission_outcome = result ? result->outcome : "no result";
+      if (result) {
+        message = result->message;
+        for (const auto& e : result->events) leg.monitors_fired.push_back(e.condition);
+      }
+    } else {
+      client.cancelGoal();
+      client.waitForResult(ros::Duration(5.0));
+      leg.mission_outcome = TimedOutText(leg_timeout_s);
+    }
+    leg.navigate_outcome = leg.mission_outcome + (message.empty() ? "" : ": " + message);
+    leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
+    Measure(watcher, leg.has_target ? leg.target.Position() : watcher.Pose().Position(), leg);
+    const std::string mismatch =
+        done ? MissionMismatch(spec, leg.mission_outcome, message, leg.monitors_fired)
+             : leg.mission_outcome;
+    JudgeMissionLeg(mismatch, goal_tolerance_m, leg);
+    report.legs.push_back(leg);
+  }
+  return report;
+}
+
 spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ignore_heading,
                                         double tolerance_m) {
   spott_msgs::NavigateGoal goal;
@@ -349,6 +436,14 @@ spott_msgs::NavigateGoal NavigateGoalTo(const spott_map::Pose2& target, bool ign
   return goal;
 }
 
+namespace {
+std::string FormatMetres(double m) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f", m);
+  return text;
+}
+}  // namespace
+
 std::string FormatNavigation(const NavigationReport& report) {
   if (!report.ran && report.skipped.empty()) return "";
   std::ostringstream out;
@@ -357,6 +452,11 @@ std::string FormatNavigation(const NavigationReport& report) {
     out << "\n Tasks (/task -> tr_plus_controller (SPOTT's TR+ navigation program) -> Navigate ->\n"
         << " global_planner + harmonic_planner -> cmd_vel_arbiter -> robot_sim; judged on the\n"
         << " simulator's ground truth, which nothing in the stack reads):\n";
+  } else if (report.by_mission) {
+    out << "\n Missions (/mission -> rpl_executive (RPL plans, Noreils-Chatila missions) -> "
+           "Navigate\n"
+        << " or its own modules -> cmd_vel_arbiter -> robot_sim; judged on what the executive\n"
+        << " reports and on the simulator's ground truth):\n";
   } else {
     out << "\n Navigation (Navigate -> global_planner + harmonic_planner -> cmd_vel_arbiter ->\n"
         << " robot_sim; judged on the simulator's ground truth, which nothing in the stack "
@@ -374,12 +474,25 @@ std::string FormatNavigation(const NavigationReport& report) {
       if (!leg.interpretation.empty()) out << "     interpretation: " << leg.interpretation << "\n";
       if (!leg.trace.empty()) out << "     TR trace: " << CompactTrace(leg.trace) << "\n";
       out << "     controller: " << leg.task_outcome << "\n";
+    } else if (report.by_mission) {
+      out << "   mission " << leg.mission;
+      if (leg.has_target) {
+        out << " to " << (leg.goal.empty() ? "" : leg.goal + " ") << "(" << leg.target.x << ", "
+            << leg.target.y << ")";
+      }
+      out << ": " << leg.outcome << "\n     executive: " << leg.navigate_outcome << "\n";
+      out << "     monitors fired:";
+      if (leg.monitors_fired.empty()) out << " none";
+      for (std::size_t i = 0; i < leg.monitors_fired.size(); ++i)
+        out << (i == 0 ? " " : ", ") << leg.monitors_fired[i];
+      out << "\n";
     } else {
       out << "   to " << leg.goal << " (" << leg.target.x << ", " << leg.target.y
           << "): " << leg.outcome << "\n";
     }
     if (!leg.global_path.empty()) out << "     global path: " << leg.global_path << "\n";
-    if (!report.by_task && !leg.outcome.empty() && !leg.reached && !leg.navigate_outcome.empty() &&
+    if (!report.by_task && !report.by_mission && !leg.outcome.empty() && !leg.reached &&
+        !leg.navigate_outcome.empty() &&
         leg.outcome.find(leg.navigate_outcome) == std::string::npos) {
       out << "     Navigate: " << leg.navigate_outcome << "\n";
     }
@@ -392,8 +505,11 @@ std::string FormatNavigation(const NavigationReport& report) {
     out << std::setprecision(1) << "     " << leg.sim_time_s << " s simulated ("
         << (leg.wall_time_s > 0 ? leg.sim_time_s / leg.wall_time_s : 0.0) << "x real time), "
         << leg.path_length_m << " m driven, ended at (" << leg.final_position.x() << ", "
-        << leg.final_position.y() << "), " << std::setprecision(2) << leg.final_error_m
-        << " m from the target; closest approach to a wall or object " << leg.min_wall_distance_m
+        << leg.final_position.y() << "), " << std::setprecision(2)
+        << (report.by_mission && !leg.has_target
+                ? std::string("no goal to be at")
+                : FormatMetres(leg.final_error_m) + " m from the target")
+        << "; closest approach to a wall or object " << leg.min_wall_distance_m
         << " m (centre), bumper contacts: " << leg.bumper_hits
         << ", body contacts (ground truth): " << leg.body_contacts << "\n";
     if (leg.estimates > 0) {
@@ -434,7 +550,9 @@ std::string FormatNavigation(const NavigationReport& report) {
     wall += leg.wall_time_s;
   }
   out << "   " << reached << " of " << report.legs.size()
-      << (report.by_task ? " tasks reached" : " goals reached");
+      << (report.by_task      ? " tasks reached"
+          : report.by_mission ? " missions as the scenario says"
+                              : " goals reached");
   if (wall > 0) {
     out << std::setprecision(1) << "; real-time factor " << sim / wall << " achieved";
     if (report.requested_real_time_factor > 0)

@@ -33,6 +33,15 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
                           const std::vector<std::string>& tasks, double leg_timeout_s,
                           double connect_timeout_s, double goal_tolerance_m);
 
+/// Gives rpl_executive each of `missions` on /mission (spott_msgs/Mission: a shipped RPL plan or
+/// Noreils-Chatila mission), one after the other, each within `leg_timeout_s` of simulated time.
+/// A leg is "reached" when the executive's outcome, the monitors that fired and its message are
+/// what the scenario says, the robot really ended at the mission's goal (when it gives one)
+/// within `goal_tolerance_m`, and no bumper was pressed and the body touched nothing.
+NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
+                             const std::vector<MissionSpec>& missions, double leg_timeout_s,
+                             double connect_timeout_s, double goal_tolerance_m);
+
 /// "SPOTT[2], INTERPRET_TASK[1], MAP_OBJECTS_WITH_SONAR[1] x3, ...": the trace's rules by
 /// program and index, repeats in a row counted.
 std::string CompactTrace(const std::vector<std::string>& trace);

@@ -13,6 +13,7 @@
 #include <ros/callback_queue.h>
 #include <ros/package.h>
 #include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/MissionActionGoal.h>
 #include <spott_msgs/NavigateActionGoal.h>
 #include <spott_msgs/RoomDoorGraph.h>
 #include <spott_msgs/SetDoorState.h>
@@ -133,7 +134,8 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   // begin, and a recorder then missed the first goal 1 run in 3. roscpp shares one publication
   // per topic in a node, so the client later publishes through these connections.
   const ros::Publisher early_goal_topic =
-      options.tasks.empty()
+      !options.missions.empty() ? nh.advertise<spott_msgs::MissionActionGoal>("mission/goal", 10)
+      : options.tasks.empty()
           ? nh.advertise<spott_msgs::NavigateActionGoal>("harmonic_planner/navigate/goal", 10)
           : nh.advertise<spott_msgs::TaskActionGoal>("task/goal", 10);
   const std::string& world_file = options.world_file;
@@ -282,6 +284,9 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   } else if (!options.goals.empty()) {
     report.navigation = RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s,
                                       timeout_s, options.goal_tolerance_m);
+  } else if (!options.missions.empty()) {
+    report.navigation = RunMissions(nh, *scenario.world, options.missions, options.leg_timeout_s,
+                                    timeout_s, options.goal_tolerance_m);
   }
   report.ok = true;
   report.elapsed_s = (ros::WallTime::now() - start).toSec();

@@ -59,6 +59,8 @@ struct DemoOptions {
   std::vector<std::string> goals;    ///< Places to drive to through Navigate, in order.
   /// Task commands for the TR+ controller (/task), in order; they replace `goals`.
   std::vector<std::string> tasks;
+  /// Missions for rpl_executive (/mission), in order, from a scenario file; they replace both.
+  std::vector<MissionSpec> missions;
   double leg_timeout_s = 300.0;    ///< Simulated time allowed per leg (s).
   double goal_tolerance_m = 0.25;  ///< Asked of Navigate and judged on ground truth (m).
   /// A recorder (rosbag record) takes the legs' goals: the first leg waits until it is connected.

@@ -37,6 +37,11 @@ json Leg(const NavigationLeg& leg) {
             {"lost_onsets_s", leg.lost_onsets_s},
             {"contact_onsets_s", leg.contact_onsets_s}};
   if (leg.has_target) j["target"] = {leg.target.x, leg.target.y, leg.target.yaw};
+  if (!leg.mission.empty()) {
+    j["mission"] = leg.mission;
+    j["mission_outcome"] = leg.mission_outcome;
+    j["monitors_fired"] = leg.monitors_fired;
+  }
   // Localization against the ground truth; none when the stack ran on the simulator's pose.
   if (leg.estimates > 0) {
     j["localization"] = {{"estimates", leg.estimates},
@@ -85,6 +90,7 @@ std::string FormatReportJson(const DemoReport& r, const std::string& scenario) {
   j["legs_reached"] = reached;
   j["legs_total"] = legs.size();
   j["by_task"] = r.navigation.by_task;
+  j["by_mission"] = r.navigation.by_mission;
   if (!r.navigation.ran) j["skipped"] = r.navigation.skipped;
   j["totals"] = {{"sim_time_s", sim_s},          {"path_length_m", path_m},
                  {"bumper_hits", bumper_hits},   {"body_contacts", body_contacts},

@@ -174,6 +174,36 @@ std::string OffPlace(const NavigationLeg& leg, double tolerance_m) {
   return OffBy("Navigate succeeded on the estimate", "", "target", leg.final_error_m, tolerance_m);
 }
 
+std::string OffMissionGoal(const NavigationLeg& leg, double tolerance_m) {
+  if (!leg.has_target || leg.final_error_m <= tolerance_m) return "";
+  return OffBy("the mission went as its scenario says", "", "mission's goal", leg.final_error_m,
+               tolerance_m);
+}
+
+void JudgeMissionLeg(const std::string& mismatch, double tolerance_m, NavigationLeg& leg) {
+  JudgeLeg(mismatch, OffMissionGoal(leg, tolerance_m), leg);
+  if (leg.reached) leg.outcome = "as the scenario says";
+}
+
+std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
+                            const std::string& message, const std::vector<std::string>& fired) {
+  const auto listed = [](const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& c : v) out += (out.empty() ? "" : ", ") + c;
+    return "[" + out + "]";
+  };
+  if (outcome != spec.outcome) {
+    return "the mission " + outcome + (message.empty() ? "" : " (" + message + ")") +
+           ", expected " + spec.outcome;
+  }
+  if (spec.monitors && fired != *spec.monitors)
+    return "the monitors fired " + listed(fired) + ", expected " + listed(*spec.monitors);
+  if (!spec.message_contains.empty() && message.find(spec.message_contains) == std::string::npos)
+    return "the executive said '" + message + "', expected it to say '" + spec.message_contains +
+           "'";
+  return "";
+}
+
 std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
                         const spott_map::Pose2& start, const NavigationLeg& leg,
                         double tolerance_m) {

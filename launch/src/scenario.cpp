@@ -1,6 +1,10 @@
 #include "spott_launch/scenario.h"
 
+#include <dirent.h>
+
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
@@ -68,6 +72,62 @@ void CheckTasks(YamlReader& in, const std::vector<Located>& tasks) {
   }
 }
 
+/// The `missions:` list: each a map naming a shipped plan or mission and what must happen.
+std::vector<MissionSpec> Missions(YamlReader& in, const YAML::Node& map) {
+  std::vector<MissionSpec> out;
+  const YAML::Node list = map["missions"];
+  if (!list || list.IsNull()) return out;
+  if (!in.ExpectSequence(list, "missions")) return out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const YAML::Node item = list[i];
+    const std::string what = "missions[" + std::to_string(i) + "]";
+    if (!in.ExpectMap(
+            item, what,
+            {"name", "language", "bindings", "goal", "outcome", "monitors", "message_contains"})) {
+      continue;
+    }
+    MissionSpec m;
+    if (auto name = in.String(item, "name", what, true)) {
+      m.name = At(in, item["name"], *name);
+      if (!spott_map::IsValidId(*name))
+        in.Error(item["name"], what + ".name: '" + *name +
+                                   "' is not a shipped plan's or mission's name (letters, "
+                                   "digits, _)");
+    }
+    m.language = in.String(item, "language", what, false).value_or("rpl");
+    if (m.language != "rpl" && m.language != "noreils_chatila")
+      in.Error(item["language"],
+               what + ".language: expected rpl or noreils_chatila, got '" + m.language + "'");
+    for (const Located& b : Strings(in, item, "bindings")) m.bindings.push_back(b.text);
+    if (!m.bindings.empty() && m.language != "rpl")
+      in.Error(item["bindings"], what + ".bindings: only an RPL plan has DEFVARs to bind");
+    if (const YAML::Node goal = item["goal"]; goal && !goal.IsNull()) {
+      if (goal.IsScalar()) {
+        m.goal_place = At(in, goal, goal.Scalar());
+        if (!spott_map::IsValidId(goal.Scalar()))
+          in.Error(goal, what + ".goal: '" + goal.Scalar() +
+                             "' is not a place's name (letters, digits, _) or [x, y]");
+      } else {
+        m.goal_point = in.Point(item, "goal", what, false);
+      }
+    }
+    m.outcome = in.String(item, "outcome", what, false).value_or("completed");
+    if (m.outcome != "completed" && m.outcome != "failed")
+      in.Error(item["outcome"],
+               what + ".outcome: expected completed or failed, got '" + m.outcome + "'");
+    if (item["monitors"] && !item["monitors"].IsNull()) {
+      std::vector<std::string> fired;
+      for (const Located& c : Strings(in, item, "monitors")) fired.push_back(c.text);
+      m.monitors = fired;
+    } else if (item["monitors"]) {
+      m.monitors = std::vector<std::string>{};  // `monitors: []` or `monitors:`: none may fire
+    }
+    m.message_contains = in.String(item, "message_contains", what, false).value_or("");
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
 std::string Joined(const std::vector<Located>& items) {
   std::ostringstream out;
   out << "[";
@@ -84,7 +144,7 @@ std::string Joined(const std::vector<Located>& items) {
 
 double Scenario::EffectiveTimeLimit() const {
   if (time_limit_s > 0.0) return time_limit_s;
-  const std::size_t legs = tasks.size() + goals.size();
+  const std::size_t legs = tasks.size() + goals.size() + missions.size();
   return kStartUpAllowanceS + static_cast<double>(legs) * leg_timeout_s;
 }
 
@@ -105,8 +165,8 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
   const std::string what = "scenario";
   if (!in.ExpectMap(root, what,
                     {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
-                     "localization", "tasks", "goals", "doors_to_close", "leg_timeout_s",
-                     "goal_tolerance_m", "time_limit_s", "faults"})) {
+                     "localization", "tasks", "goals", "missions", "doors_to_close",
+                     "leg_timeout_s", "goal_tolerance_m", "time_limit_s", "faults"})) {
     result.errors = in.errors();
     return result;
   }
@@ -146,11 +206,16 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
   CheckTasks(in, s.tasks);
   CheckIds(in, s.goals, "goals");
   CheckIds(in, s.doors_to_close, "doors_to_close");
-  if (root["tasks"] && root["goals"]) {
-    in.Error(root["goals"],
-             "goals: a scenario gives tasks (the TR+ controller) or goals (Navigate), not both");
-  } else if (s.tasks.empty() && s.goals.empty() && in.errors().empty()) {
-    in.Error(root, "scenario: nothing to do: give `tasks:` (task commands) or `goals:` (places)");
+  s.missions = Missions(in, root);
+  const int kinds = (root["tasks"] ? 1 : 0) + (root["goals"] ? 1 : 0) + (root["missions"] ? 1 : 0);
+  if (kinds > 1) {
+    in.Error(root["missions"] ? root["missions"] : root["goals"],
+             "scenario: give tasks (the TR+ controller), goals (Navigate) or missions "
+             "(rpl_executive), one of them");
+  } else if (s.tasks.empty() && s.goals.empty() && s.missions.empty() && in.errors().empty()) {
+    in.Error(root,
+             "scenario: nothing to do: give `tasks:` (task commands), `goals:` (places) or "
+             "`missions:` (plans and missions)");
   }
   s.leg_timeout_s =
       in.Number(root, "leg_timeout_s", what, false, NumberRule::kPositive).value_or(240.0);
@@ -190,6 +255,12 @@ std::vector<SourceError> CheckAgainstWorld(const Scenario& s, const spott_map::W
     if (!world.FindPlace(g.text))
       errors.push_back({g.where, "goals: no place '" + g.text + "'" + in_world});
   }
+  for (std::size_t i = 0; i < s.missions.size(); ++i) {
+    const Located& g = s.missions[i].goal_place;
+    if (!g.text.empty() && !world.FindPlace(g.text))
+      errors.push_back({g.where, "missions[" + std::to_string(i) + "].goal: no place '" + g.text +
+                                     "'" + in_world});
+  }
   for (const auto& d : s.doors_to_close) {
     if (!world.FindDoor(d.text))
       errors.push_back({d.where, "doors_to_close: no door '" + d.text + "'" + in_world});
@@ -221,17 +292,51 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
   args.push_back("real_time_factor:=" + number(s.real_time_factor));
   args.push_back("localization:=" + s.localization);
   args.push_back("controller:=" + s.Controller());
+  args.push_back("executive:=" + s.Executive());
   return args;
 }
 
-std::string DemoParametersYaml(const Scenario& s) {
+std::vector<SourceError> CheckMissionNames(const Scenario& s, const std::string& rpl_dir) {
+  std::vector<SourceError> errors;
+  for (std::size_t i = 0; i < s.missions.size(); ++i) {
+    const MissionSpec& m = s.missions[i];
+    const bool rpl = m.language == "rpl";
+    const std::string dir = rpl_dir + (rpl ? "/plans" : "/missions");
+    const std::string ext = rpl ? ".rpl" : ".nc";
+    if (std::ifstream(dir + "/" + m.name.text + ext)) continue;
+    std::vector<std::string> names;
+    if (DIR* d = opendir(dir.c_str())) {
+      while (const dirent* e = readdir(d)) {
+        const std::string n = e->d_name;
+        if (n.size() > ext.size() && n.compare(n.size() - ext.size(), ext.size(), ext) == 0)
+          names.push_back(n.substr(0, n.size() - ext.size()));
+      }
+      closedir(d);
+    }
+    std::sort(names.begin(), names.end());
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    errors.push_back({m.name.where, "missions[" + std::to_string(i) + "].name: no shipped " +
+                                        (rpl ? "RPL plan '" : "Noreils-Chatila mission '") +
+                                        m.name.text + "' in " + dir + " (there are: " + known +
+                                        ")"});
+  }
+  return errors;
+}
+
+std::string DemoParametersYaml(const Scenario& s, const std::string& file) {
   std::ostringstream out;
   out.precision(17);
   out << "doors_to_close: " << Joined(s.doors_to_close) << "\n";
-  if (s.tasks.empty())
+  if (!s.missions.empty()) {
+    YAML::Emitter e;
+    e << YAML::DoubleQuoted << file;
+    out << "missions_file: " << e.c_str() << "\n";
+  } else if (s.tasks.empty()) {
     out << "goals: " << Joined(s.goals) << "\n";
-  else
+  } else {
     out << "tasks: " << Joined(s.tasks) << "\n";
+  }
   out << "leg_timeout_s: " << s.leg_timeout_s << "\n";
   out << "goal_tolerance_m: " << s.goal_tolerance_m << "\n";
   return out.str();

@@ -1,5 +1,5 @@
 // scenario_tool: checks a scenario file and writes what `./spott run` launches it with.
-//   scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]
+//   scenario_tool FILE [--worlds DIR] [--rpl-executive DIR] [--out DIR] [--seed N]
 // Errors go to stderr as "file:line:column: message" (exit 1); usage errors exit 2. With --out
 // it writes DIR/launch_args (roslaunch arguments, one per line), DIR/demo_params.yaml
 // (demo_report's parameters), DIR/faults.yaml (robot_sim's ~faults, when the scenario has any)
@@ -8,6 +8,7 @@
 #include <dirent.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -22,7 +23,8 @@ namespace {
 
 int Usage(const std::string& why) {
   std::cerr << "scenario_tool: " << why
-            << "\nusage: scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]\n";
+            << "\nusage: scenario_tool FILE [--worlds DIR] [--rpl-executive DIR] [--out DIR] "
+               "[--seed N]\n";
   return 2;
 }
 
@@ -64,12 +66,12 @@ bool Write(const std::string& path, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string file, worlds = SPOTT_WORLDS_DIR, out_dir;
+  std::string file, worlds = SPOTT_WORLDS_DIR, out_dir, rpl_dir = SPOTT_RPL_EXECUTIVE_DIR;
   std::optional<int> seed;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if ((arg == "--worlds" || arg == "--out") && i + 1 < argc) {
-      (arg == "--worlds" ? worlds : out_dir) = argv[++i];
+    if ((arg == "--worlds" || arg == "--out" || arg == "--rpl-executive") && i + 1 < argc) {
+      (arg == "--worlds" ? worlds : arg == "--out" ? out_dir : rpl_dir) = argv[++i];
     } else if (arg == "--seed" && i + 1 < argc) {
       const std::string value = argv[++i];
       if (value.empty() || value.size() > 9 ||
@@ -78,7 +80,8 @@ int main(int argc, char** argv) {
       }
       seed = std::stoi(value);
     } else if (arg == "-h" || arg == "--help") {
-      std::cout << "usage: scenario_tool FILE [--worlds DIR] [--out DIR] [--seed N]\n";
+      std::cout << "usage: scenario_tool FILE [--worlds DIR] [--rpl-executive DIR] [--out DIR] "
+                   "[--seed N]\n";
       return 0;
     } else if (!arg.empty() && arg[0] == '-') {
       return Usage("unknown option " + arg);
@@ -109,18 +112,24 @@ int main(int argc, char** argv) {
     std::cerr << spott_map::FormatErrors(world.errors) << "\n";
     return 1;
   }
-  const auto errors = spott_launch::CheckAgainstWorld(s, *world.world);
+  auto errors = spott_launch::CheckAgainstWorld(s, *world.world);
+  const auto names = spott_launch::CheckMissionNames(s, rpl_dir);
+  errors.insert(errors.end(), names.begin(), names.end());
   if (!errors.empty()) {
     std::cerr << spott_map::FormatErrors(errors) << "\n";
     return 1;
   }
   if (!out_dir.empty()) {
+    // demo_report reads the missions from the file itself: by a path that holds anywhere.
+    char* real = realpath(file.c_str(), nullptr);
+    const std::string absolute = real ? real : file;
+    free(real);
     std::string args;
     for (const auto& a : spott_launch::LaunchArguments(s)) args += a + "\n";
     std::ostringstream limit;
     limit << s.EffectiveTimeLimit() << "\n";
     if (!Write(out_dir + "/launch_args", args) ||
-        !Write(out_dir + "/demo_params.yaml", spott_launch::DemoParametersYaml(s)) ||
+        !Write(out_dir + "/demo_params.yaml", spott_launch::DemoParametersYaml(s, absolute)) ||
         !Write(out_dir + "/faults.yaml", s.faults_yaml.empty() ? "faults: []\n" : s.faults_yaml) ||
         !Write(out_dir + "/time_limit_s", limit.str())) {
       return 1;

@@ -159,5 +159,41 @@ TEST(LegMetrics, AVerdictNeedsTheDriversWordTheGoalAndNoContact) {
   EXPECT_EQ(leg.outcome, "not reached: Navigate failed: blocked");
 }
 
+// A mission counts as the scenario says: the executive's outcome, the monitors in their order,
+// the message, then the goal on the ground truth.
+TEST(LegMetrics, AMissionIsJudgedOnItsOutcomeMonitorsMessageAndGoal) {
+  MissionSpec spec;
+  spec.outcome = "failed";
+  spec.monitors = std::vector<std::string>{"(S_zone IN ZONE109)", "(S_us-threshold sensors-list)"};
+  spec.message_contains = "MNTR STATIC";
+  const std::vector<std::string> fired = *spec.monitors;
+  EXPECT_EQ(MissionMismatch(spec, "failed", "FAIL in the control action of MNTR STATIC", fired),
+            "");
+  EXPECT_NE(MissionMismatch(spec, "completed", "", fired).find("expected failed"),
+            std::string::npos);
+  const std::vector<std::string> reversed = {fired[1], fired[0]};
+  const std::string order = MissionMismatch(spec, "failed", "MNTR STATIC", reversed);
+  EXPECT_NE(order.find("the monitors fired [(S_us-threshold sensors-list), (S_zone IN ZONE109)]"),
+            std::string::npos)
+      << order;
+  EXPECT_NE(MissionMismatch(spec, "failed", "FAIL elsewhere", fired).find("expected it to say"),
+            std::string::npos);
+  spec.monitors.reset();  // not judged: any
+  EXPECT_EQ(MissionMismatch(spec, "failed", "MNTR STATIC", {}), "");
+  NavigationLeg leg;
+  leg.has_target = true;
+  leg.final_error_m = 0.6;
+  JudgeMissionLeg(MissionMismatch(spec, "failed", "MNTR STATIC", {}), 0.5, leg);
+  EXPECT_FALSE(leg.reached);
+  EXPECT_NE(leg.outcome.find("0.60 m from the mission's goal"), std::string::npos) << leg.outcome;
+  leg.has_target = false;  // no goal: anywhere
+  JudgeMissionLeg("", 0.5, leg);
+  EXPECT_TRUE(leg.reached);
+  EXPECT_EQ(leg.outcome, "as the scenario says");
+  leg.body_contacts = 1;
+  JudgeMissionLeg("", 0.5, leg);
+  EXPECT_FALSE(leg.reached);
+}
+
 }  // namespace
 }  // namespace spott_launch

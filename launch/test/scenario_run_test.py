@@ -131,6 +131,40 @@ class ScenarioRun(unittest.TestCase):
                     self.assertAlmostEqual(a, c, delta=0.01, msg=leg['goal'])
             self.assertEqual(p['contact_samples'] > 0, r['totals']['body_contacts'] > 0)
 
+    def test_a_mission_scenario_runs_as_the_paper_says_and_its_bag_judges_the_same(self):
+        # Noreils and Chatila's Example 2 with an obstacle in the zone: rpl_executive runs the
+        # shipped mission; the run counts only if the mission FAILs by the static monitor after
+        # the zone's, as the paper says, with nothing touched.
+        scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios',
+                                'hilare_example2_obstacle_in_zone.yaml')
+        with tempfile.TemporaryDirectory() as d:
+            bag = os.path.join(d, 'run.bag')
+            args, r = run_scenario(self, scenario, d, ['bag:=' + bag])
+            self.assertIn('executive:=rpl', args)
+            self.assertIn('controller:=none', args)
+            self.assertTrue(r['by_mission'])
+            self.assertEqual(len(r['legs']), 1)
+            leg = r['legs'][0]
+            self.assertEqual(leg['mission'], 'example2_zone_surveillance')
+            self.assertEqual(leg['mission_outcome'], 'failed', leg['navigate_outcome'])
+            self.assertEqual(leg['monitors_fired'],
+                             ['(S_zone IN ZONE109)', '(S_us-threshold sensors-list)'])
+            self.assertEqual(leg['outcome'], 'as the scenario says')
+            self.assertEqual(leg['bumper_hits'] + leg['body_contacts'], 0)
+            self.assertEqual(r['outcome'], 'succeeded')
+            # The bag carries the scenario: bag_report judges the mission as the live run did.
+            replayed = os.path.join(d, 'bag.json')
+            out = subprocess.run([find_tool('bag_report'), bag, '--json', replayed],
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                 timeout=120)
+            self.assertEqual(out.returncode, 0, out.stdout[-2000:])
+            self.assertNotIn('no /demo_report/scenario', out.stdout)
+            with open(replayed) as f:
+                b = json.load(f)
+            self.assertEqual(b['outcome'], r['outcome'])
+            self.assertEqual([(l['mission'], l['outcome'], l['monitors_fired']) for l in b['legs']],
+                             [(l['mission'], l['outcome'], l['monitors_fired']) for l in r['legs']])
+
     def test_plots_refuse_a_file_that_is_not_a_bag_by_its_name(self):
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, 'not_a.bag')

@@ -4,6 +4,7 @@
 
 #include <dirent.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -43,6 +44,8 @@ TEST(Scenario, EveryShippedScenarioParsesAndFitsItsWorld) {
     ASSERT_TRUE(r.ok()) << Errors(r);
     const auto errors = CheckAgainstWorld(*r.scenario, World(r.scenario->world.text));
     EXPECT_TRUE(errors.empty()) << name << ": " << spott_map::FormatErrors(errors);
+    const auto names = CheckMissionNames(*r.scenario, RPL_EXECUTIVE_DIR);
+    EXPECT_TRUE(names.empty()) << name << ": " << spott_map::FormatErrors(names);
   }
   closedir(dir);
   EXPECT_GE(files, 4);
@@ -76,7 +79,7 @@ TEST(Scenario, TasksAndGoalsTogetherOrNeitherAreRefused) {
       "world: cim_office\ntasks: [\"go in room(lab)\"]\ngoals: [lab_bench]\n", "s.yaml");
   ASSERT_FALSE(both.ok());
   EXPECT_NE(Errors(both).find("s.yaml:3:"), std::string::npos) << Errors(both);
-  EXPECT_NE(Errors(both).find("not both"), std::string::npos) << Errors(both);
+  EXPECT_NE(Errors(both).find("one of them"), std::string::npos) << Errors(both);
   const auto neither = ParseScenario("world: cim_office\nseed: 3\n", "s.yaml");
   ASSERT_FALSE(neither.ok());
   EXPECT_NE(Errors(neither).find("nothing to do"), std::string::npos) << Errors(neither);
@@ -183,7 +186,7 @@ TEST(Scenario, LaunchArgumentsAndDemoParametersSayWhatTheFileSays) {
   const auto args = LaunchArguments(*r.scenario);
   const std::vector<std::string> expected = {
       "world:=cim_office",   "robot:=b12",          "start_pose:=3.5 4 1.5", "seed:=7",
-      "real_time_factor:=2", "localization:=truth", "controller:=tr_plus"};
+      "real_time_factor:=2", "localization:=truth", "controller:=tr_plus",   "executive:=none"};
   EXPECT_EQ(args, expected);
   const YAML::Node params = YAML::Load(DemoParametersYaml(*r.scenario));
   ASSERT_TRUE(params["tasks"].IsSequence());
@@ -191,6 +194,98 @@ TEST(Scenario, LaunchArgumentsAndDemoParametersSayWhatTheFileSays) {
   EXPECT_FALSE(params["goals"]);
   EXPECT_DOUBLE_EQ(params["leg_timeout_s"].as<double>(), 100.0);
   EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 2 * 100.0);
+}
+
+TEST(Scenario, MissionsAreReadWithWhatTheRunMustShow) {
+  const auto r = ParseScenario(
+      "world: hilare_room\nmissions:\n"
+      "  - {name: office_delivery, bindings: [\"DEST (19.6 6.0)\"], goal: zone_exit}\n"
+      "  - name: example2_zone_surveillance\n"
+      "    language: noreils_chatila\n"
+      "    outcome: failed\n"
+      "    monitors: [\"(S_zone IN ZONE109)\", \"(S_us-threshold sensors-list)\"]\n"
+      "    message_contains: FAIL\n"
+      "    goal: [2.5, 6]\n"
+      "  - {name: example1_wall_following, language: noreils_chatila, monitors: []}\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto& m = r.scenario->missions;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[0].name.text, "office_delivery");
+  EXPECT_EQ(m[0].language, "rpl");
+  EXPECT_EQ(m[0].bindings, std::vector<std::string>{"DEST (19.6 6.0)"});
+  EXPECT_EQ(m[0].goal_place.text, "zone_exit");
+  EXPECT_EQ(m[0].outcome, "completed");
+  EXPECT_FALSE(m[0].monitors.has_value());  // not judged
+  EXPECT_EQ(m[1].language, "noreils_chatila");
+  EXPECT_EQ(m[1].outcome, "failed");
+  ASSERT_TRUE(m[1].monitors.has_value());
+  EXPECT_EQ(m[1].monitors->size(), 2u);
+  EXPECT_EQ(m[1].message_contains, "FAIL");
+  ASSERT_TRUE(m[1].goal_point.has_value());
+  EXPECT_DOUBLE_EQ(m[1].goal_point->y(), 6.0);
+  ASSERT_TRUE(m[2].monitors.has_value());  // `monitors: []`: none may fire
+  EXPECT_TRUE(m[2].monitors->empty());
+  // The executive runs them, nothing else does: demo_report reads them from the file.
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(), "executive:=rpl"), args.end());
+  EXPECT_NE(std::find(args.begin(), args.end(), "controller:=none"), args.end());
+  const YAML::Node params = YAML::Load(DemoParametersYaml(*r.scenario, "/x/s.yaml"));
+  EXPECT_EQ(params["missions_file"].as<std::string>(), "/x/s.yaml");
+  EXPECT_FALSE(params["goals"]);
+  EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 3 * 240.0);
+  // Places are the world's; names are rpl_executive's shipped plans and missions.
+  EXPECT_TRUE(CheckAgainstWorld(*r.scenario, World("hilare_room")).empty());
+  EXPECT_TRUE(CheckMissionNames(*r.scenario, RPL_EXECUTIVE_DIR).empty());
+}
+
+TEST(Scenario, BadMissionsAreNamedAtTheirLineAndColumn) {
+  const auto r = ParseScenario(
+      "world: hilare_room\nmissions:\n"
+      "  - {name: office_delivery, langauge: rpl}\n"
+      "  - {name: example1_wall_following, language: nc}\n"
+      "  - {name: example1_wall_following, language: noreils_chatila, bindings: [\"X 1\"]}\n"
+      "  - {name: office_delivery, outcome: reached}\n"
+      "  - {name: \"office delivery\"}\n",
+      "s.yaml");
+  ASSERT_FALSE(r.ok());
+  const std::string e = Errors(r);
+  EXPECT_NE(e.find("s.yaml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("langauge"), std::string::npos) << e;
+  EXPECT_NE(e.find("s.yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected rpl or noreils_chatila, got 'nc'"), std::string::npos) << e;
+  EXPECT_NE(e.find("s.yaml:5:"), std::string::npos) << e;
+  EXPECT_NE(e.find("only an RPL plan has DEFVARs"), std::string::npos) << e;
+  EXPECT_NE(e.find("s.yaml:6:"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected completed or failed, got 'reached'"), std::string::npos) << e;
+  EXPECT_NE(e.find("s.yaml:7:"), std::string::npos) << e;
+  // Missions with goals are one kind too many.
+  const auto both = ParseScenario(
+      "world: hilare_room\ngoals: [zone_exit]\nmissions: [{name: office_delivery}]\n", "s.yaml");
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(Errors(both).find("s.yaml:3:"), std::string::npos) << Errors(both);
+}
+
+TEST(Scenario, AMissionNamesAShippedPlanOrMissionAndAPlaceOfTheWorld) {
+  const auto r = ParseScenario(
+      "world: hilare_room\nmissions:\n"
+      "  - {name: office_delivry, goal: nowhere}\n"
+      "  - {name: office_delivery, language: noreils_chatila}\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const std::string names =
+      spott_map::FormatErrors(CheckMissionNames(*r.scenario, RPL_EXECUTIVE_DIR));
+  EXPECT_NE(names.find("s.yaml:3:12: missions[0].name: no shipped RPL plan 'office_delivry'"),
+            std::string::npos)
+      << names;
+  EXPECT_NE(names.find("office_delivery"), std::string::npos) << names;  // what there is
+  // office_delivery is a plan, not a Noreils-Chatila mission.
+  EXPECT_NE(names.find("s.yaml:4:"), std::string::npos) << names;
+  EXPECT_NE(names.find("example1_wall_following"), std::string::npos) << names;
+  const std::string world =
+      spott_map::FormatErrors(CheckAgainstWorld(*r.scenario, World("hilare_room")));
+  EXPECT_NE(world.find("s.yaml:3:34: missions[0].goal: no place 'nowhere'"), std::string::npos)
+      << world;
 }
 
 }  // namespace

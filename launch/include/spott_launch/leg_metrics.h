@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "spott_launch/scenario.h"
 #include "spott_map/world.h"
 
 namespace spott_launch {
@@ -21,8 +22,13 @@ struct NavigationLeg {
   std::vector<std::string> trace;
   std::string task_outcome;  ///< "reached", "failed: ...", "rejected: ...", "timed out ..."
   std::vector<std::string> features_added;  ///< During this leg.
-  bool has_target = true;                   ///< RunTasks: the task had a goal point (`target`).
-  spott_map::Pose2 target;                  ///< (m, rad) in the map frame.
+  /// RunMissions: the mission's name, what rpl_executive answered ("completed", "failed: ..."),
+  /// and the conditions of the surveillance monitors that fired, in order.
+  std::string mission;
+  std::string mission_outcome;
+  std::vector<std::string> monitors_fired;
+  bool has_target = true;   ///< RunTasks: the task had a goal point (`target`).
+  spott_map::Pose2 target;  ///< (m, rad) in the map frame.
   /// "reached" only when Navigate succeeded, the robot really is within the goal tolerance of
   /// the target (ground truth) and no bumper was pressed; else "not reached: <why>".
   std::string outcome;
@@ -58,7 +64,8 @@ struct NavigationLeg {
 };
 
 struct NavigationReport {
-  bool by_task = false;                     ///< RunTasks (else RunNavigation).
+  bool by_task = false;                     ///< RunTasks (else RunNavigation or RunMissions).
+  bool by_mission = false;                  ///< RunMissions.
   bool ran = false;                         ///< The navigation stack was up and took goals.
   std::string skipped;                      ///< Why not, when !ran.
   double requested_real_time_factor = 0.0;  ///< The simulator's ~real_time_factor (0 = unknown).
@@ -142,6 +149,20 @@ void JudgeLeg(const std::string& refusal, const std::string& off_goal, Navigatio
 
 /// Why a Navigate leg to a place is off its goal ("" = within `tolerance_m`; leg measured).
 std::string OffPlace(const NavigationLeg& leg, double tolerance_m);
+
+/// Why a mission leg that went as its scenario says is still not done: the robot is not within
+/// `tolerance_m` of the mission's goal (ground truth). "" when it is, or the mission has none.
+std::string OffMissionGoal(const NavigationLeg& leg, double tolerance_m);
+
+/// JudgeLeg for a mission: `mismatch` (MissionMismatch, or why it never ended), then its goal
+/// and the contacts; a leg that passes is "as the scenario says".
+void JudgeMissionLeg(const std::string& mismatch, double tolerance_m, NavigationLeg& leg);
+
+/// Why a mission did not go as its scenario says ("" = as said): the executive's outcome
+/// (`outcome`, with `message`), the monitors that fired (their conditions, in order) and the
+/// text the message must contain.
+std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
+                            const std::string& message, const std::vector<std::string>& fired);
 
 /// Why a task leg is off its goal ("" = in the command's goal region, interpreted on `world`'s
 /// CAD map from where the robot really started, or within `tolerance_m` of the goal point the

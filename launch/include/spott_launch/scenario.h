@@ -1,6 +1,7 @@
 // A scenario: one run of a whole stack as a file (issue 20). World, robot, start, seed, the
-// tasks (SPOTT task commands for the TR+ controller) or the places to drive to (Navigate), the
-// simulator's timed faults and the limits, read strictly: every error names the file, line and
+// tasks (SPOTT task commands for the TR+ controller), the places to drive to (Navigate) or the
+// missions (rpl_executive: RPL plans, Noreils-Chatila missions), the simulator's timed faults
+// and the limits, read strictly: every error names the file, line and
 // column. ROS-free; `scenario_tool` turns a scenario into roslaunch arguments and parameter
 // files, `./spott run SCENARIO` runs it. The format is in spott_launch/README.md, "Scenarios".
 #pragma once
@@ -22,6 +23,21 @@ struct Located {
   int quote = 0;  ///< 1 when the scalar was quoted: its text starts one column later.
 };
 
+/// A mission for rpl_executive (/mission): a shipped RPL plan or Noreils-Chatila mission, and
+/// what the run must show for it to count as done as the paper says.
+struct MissionSpec {
+  Located name;                       ///< plans/NAME.rpl or missions/NAME.nc of rpl_executive.
+  std::string language = "rpl";       ///< rpl | noreils_chatila
+  std::vector<std::string> bindings;  ///< RPL DEFVAR overrides, "NAME value".
+  Located goal_place;                 ///< A place the robot must end at ("" none) ...
+  std::optional<spott_map::Vec2> goal_point;  ///< ... or a point (m, map); judged on the truth.
+  std::string outcome = "completed";          ///< The executive's outcome expected.
+  /// The surveillance monitors expected to fire, their conditions in order; none = not judged.
+  std::optional<std::vector<std::string>> monitors;
+  /// A text the executive's result message must contain ("" = not judged).
+  std::string message_contains;
+};
+
 struct Scenario {
   std::string description;
   Located world;                          ///< A world of spott_worlds (name, no path).
@@ -32,7 +48,8 @@ struct Scenario {
   double real_time_factor = 4.0;        ///< Simulated s per wall s (0.1 .. 20).
   std::string localization = "markov";  ///< markov | truth
   std::vector<Located> tasks;           ///< Task commands for the TR+ controller, or
-  std::vector<Located> goals;           ///< places driven to through Navigate.
+  std::vector<Located> goals;           ///< places driven to through Navigate, or
+  std::vector<MissionSpec> missions;    ///< missions for rpl_executive.
   std::vector<Located> doors_to_close;  ///< The demo's reachability experiment.
   double leg_timeout_s = 240.0;         ///< Simulated s per task or goal.
   double goal_tolerance_m = 0.25;       ///< Judged on the ground truth (m).
@@ -40,8 +57,10 @@ struct Scenario {
   std::vector<robot_sim::FaultEvent> faults;  ///< Sorted by time (simulated s since start).
   std::string faults_yaml;  ///< The `faults:` list as robot_sim reads it ("" none).
 
-  /// "tr_plus" when the scenario gives tasks, "none" when it gives goals.
+  /// "tr_plus" when the scenario gives tasks, "none" when it gives goals or missions.
   std::string Controller() const { return tasks.empty() ? "none" : "tr_plus"; }
+  /// "rpl" (rpl_executive serving /mission) when the scenario gives missions, else "none".
+  std::string Executive() const { return missions.empty() ? "none" : "rpl"; }
   /// The time limit in effect: time_limit_s, or every leg's timeout plus a minute of start-up.
   double EffectiveTimeLimit() const;
 };
@@ -64,7 +83,14 @@ std::vector<spott_map::SourceError> CheckAgainstWorld(const Scenario& scenario,
 /// roslaunch arguments of spott_launch/demo.launch for the scenario, "name:=value" each.
 std::vector<std::string> LaunchArguments(const Scenario& scenario);
 
-/// The demo_report parameters (the keys of config/demo_<world>.yaml) as YAML text.
-std::string DemoParametersYaml(const Scenario& scenario);
+/// The demo_report parameters (the keys of config/demo_<world>.yaml) as YAML text; a scenario
+/// with missions names its own file (`missions_file`), which demo_report reads with
+/// ParseScenario.
+std::string DemoParametersYaml(const Scenario& scenario, const std::string& file = "");
+
+/// Errors for missions whose NAME has no file in `rpl_dir` (rpl_executive's directory:
+/// plans/NAME.rpl, missions/NAME.nc), listing the shipped ones.
+std::vector<spott_map::SourceError> CheckMissionNames(const Scenario& scenario,
+                                                      const std::string& rpl_dir);
 
 }  // namespace spott_launch
