@@ -119,6 +119,11 @@ std::string RplBinding::Load(const std::string& text, const std::string& file,
 }
 
 std::string RplBinding::Start() {
+  // The plan's fluents X*, Y*, O*, POS-CERTAINTY* come from the localization: before its first
+  // status they hold no value, and a policy such as WHENEVER (<= POS-CERTAINTY* 0.8) would take
+  // the robot for lost at once (the office delivery then localized globally from a certain pose
+  // and drove into a wall on a twin corridor's estimate).
+  if (!have_status_) return "not ready: no localization status yet (localization_status)";
   ended_.clear();
   const std::string why = executive_.Start(Now(), globals_);
   if (why.empty()) Tick();
@@ -169,6 +174,7 @@ void RplBinding::ArmWakeUp() {
 
 void RplBinding::OnStatus(const spott_msgs::LocalizationStatus& status) {
   const double now = Now();
+  have_status_ = true;
   executive_.SetFluent(office::kX, rpl::Value::Number(status.estimate.x), now);
   executive_.SetFluent(office::kY, rpl::Value::Number(status.estimate.y), now);
   executive_.SetFluent(office::kO, rpl::Value::Number(status.estimate.theta), now);

@@ -126,6 +126,7 @@ class RplBinding : public rpl::office::NavigateClient,
   std::deque<std::function<void()>> posted_;
 
   bool have_wheels_ = false;  // the arbiter's wheels are taken as wheels_source
+  bool have_status_ = false;  // a localization status came: the plan's pose fluents hold values
   bool seized_ = false;       // a source above ours holds them: the plan's valve is seized
   std::deque<std::function<void()>> deferred_;  // service calls, after the Step that asked
   std::vector<std::string> events_;
