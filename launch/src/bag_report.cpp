@@ -268,19 +268,10 @@ int main(int argc, char** argv) {
     } else if (kind == RunKind::kMission && topic == "/mission/goal") {
       if (auto p = m.instantiate<spott_msgs::MissionActionGoal>()) {
         NavigationLeg leg;
-        leg.mission = p->goal.name;
-        leg.has_target = false;
-        if (scenario && missions_seen < scenario->missions.size()) {
-          const spott_launch::MissionSpec& spec = scenario->missions[missions_seen];
-          leg.goal = spec.goal_place.text;
-          if (const spott_map::Place* place = world.world->FindPlace(spec.goal_place.text)) {
-            leg.target = place->pose;
-            leg.has_target = true;
-          } else if (spec.goal_point) {
-            leg.target = {spec.goal_point->x(), spec.goal_point->y(), 0.0};
-            leg.has_target = true;
-          }
-        }
+        leg.has_target = false;  // unless the scenario gives a goal
+        if (scenario && missions_seen < scenario->missions.size())
+          spott_launch::SetMissionTarget(scenario->missions[missions_seen], *world.world, leg);
+        leg.mission = p->goal.name;  // what ran
         replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
       }
     } else if (kind == RunKind::kMission && topic == "/mission/result") {

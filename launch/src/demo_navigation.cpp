@@ -360,16 +360,7 @@ NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
   report.ran = true;
   for (const MissionSpec& spec : missions) {
     NavigationLeg leg;
-    leg.mission = spec.name.text;
-    leg.goal = spec.goal_place.text;
-    leg.has_target = false;
-    if (const spott_map::Place* place = world.FindPlace(spec.goal_place.text)) {
-      leg.target = place->pose;
-      leg.has_target = true;
-    } else if (spec.goal_point) {
-      leg.target = {spec.goal_point->x(), spec.goal_point->y(), 0.0};
-      leg.has_target = true;
-    }
+    SetMissionTarget(spec, world, leg);
     spott_msgs::MissionGoal goal;
     goal.language = spec.language == "rpl" ? spott_msgs::MissionGoal::RPL
                                            : spott_msgs::MissionGoal::NOREILS_CHATILA;

@@ -174,6 +174,19 @@ std::string OffPlace(const NavigationLeg& leg, double tolerance_m) {
   return OffBy("Navigate succeeded on the estimate", "", "target", leg.final_error_m, tolerance_m);
 }
 
+void SetMissionTarget(const MissionSpec& spec, const spott_map::World& world, NavigationLeg& leg) {
+  leg.mission = spec.name.text;
+  leg.goal = spec.goal_place.text;
+  leg.has_target = false;
+  if (const spott_map::Place* place = world.FindPlace(spec.goal_place.text)) {
+    leg.target = place->pose;
+    leg.has_target = true;
+  } else if (spec.goal_point) {
+    leg.target = {spec.goal_point->x(), spec.goal_point->y(), 0.0};
+    leg.has_target = true;
+  }
+}
+
 std::string OffMissionGoal(const NavigationLeg& leg, double tolerance_m) {
   if (!leg.has_target || leg.final_error_m <= tolerance_m) return "";
   return OffBy("the mission went as its scenario says", "", "mission's goal", leg.final_error_m,

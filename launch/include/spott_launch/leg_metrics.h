@@ -150,6 +150,10 @@ void JudgeLeg(const std::string& refusal, const std::string& off_goal, Navigatio
 /// Why a Navigate leg to a place is off its goal ("" = within `tolerance_m`; leg measured).
 std::string OffPlace(const NavigationLeg& leg, double tolerance_m);
 
+/// A mission leg's name and goal from its scenario entry (a place of `world` or a point; none:
+/// `has_target` false).
+void SetMissionTarget(const MissionSpec& spec, const spott_map::World& world, NavigationLeg& leg);
+
 /// Why a mission leg that went as its scenario says is still not done: the robot is not within
 /// `tolerance_m` of the mission's goal (ground truth). "" when it is, or the mission has none.
 std::string OffMissionGoal(const NavigationLeg& leg, double tolerance_m);
