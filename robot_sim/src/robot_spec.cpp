@@ -25,6 +25,21 @@ const RangeRingSpec* RobotSpec::FindRing(const std::string& ring_name) const {
 
 namespace {
 
+// A count (rays, beams, segments ...): a whole number in [lo, hi], else an error naming the key
+// and `fallback`. Checked before the conversion: a huge number made int overflow
+// (robot_file_fuzz: `rays: 8.9e61`).
+int Count(YamlReader& in, const YAML::Node& node, const char* key, const std::string& what,
+          bool required, int lo, int hi, int fallback) {
+  const auto v = in.Number(node, key, what, required);
+  if (!v) return fallback;
+  if (!(*v >= lo && *v <= hi) || *v != std::floor(*v)) {
+    in.Error(node[key], what + ": " + key + " must be a whole number in [" + std::to_string(lo) +
+                            ", " + std::to_string(hi) + "]");
+    return fallback;
+  }
+  return static_cast<int>(*v);
+}
+
 // Pose of `link` in `root`, following the joint chain with every movable joint at zero.
 std::optional<Eigen::Isometry3d> LinkPoseIn(const urdf::ModelInterface& model,
                                             const std::string& link, const std::string& root) {
@@ -112,16 +127,15 @@ void ReadRing(YamlReader& in, const YAML::Node& node, const std::string& what,
   ring.field_of_view = in.Number(node, "field_of_view", what, true, pos).value_or(0.5);
   ring.min_range = in.Number(node, "min_range", what, true, nonneg).value_or(0.0);
   ring.max_range = in.Number(node, "max_range", what, true, pos).value_or(1.0);
-  ring.rays = static_cast<int>(in.Number(node, "rays", what, true, pos).value_or(1));
+  ring.rays = Count(in, node, "rays", what, true, 1, 1000, 1);
   ring.critical_angle = in.Number(node, "critical_angle", what, true, pos).value_or(1.5708);
   ring.noise_stddev = in.Number(node, "noise_stddev", what, true, nonneg).value_or(0.0);
   ring.noise_per_metre = in.Number(node, "noise_per_metre", what, false, nonneg).value_or(0.0);
-  ring.fire_groups = static_cast<int>(in.Number(node, "fire_groups", what, false, pos).value_or(0));
+  ring.fire_groups = Count(in, node, "fire_groups", what, false, 1, 1000, 0);
   if (ring.field_of_view >= M_PI) in.Error(node["field_of_view"], what + ": field_of_view >= pi");
   if (ring.max_range <= ring.min_range) {
     in.Error(node["max_range"], what + ": max_range must exceed min_range");
   }
-  if (ring.rays > 1000) in.Error(node["rays"], what + ": rays must be at most 1000");
   if (ring.critical_angle > M_PI / 2 + 1e-3) {
     in.Error(node["critical_angle"], what + ": critical_angle must be at most pi/2");
   }
@@ -137,8 +151,7 @@ void ReadLaser(YamlReader& in, const YAML::Node& node, LaserSpec& laser) {
   laser.link = in.String(node, "link", "laser", true).value_or("");
   laser.angle_min = in.Number(node, "angle_min", "laser", true).value_or(-1.5708);
   laser.angle_max = in.Number(node, "angle_max", "laser", true).value_or(1.5708);
-  laser.beams =
-      static_cast<int>(in.Number(node, "beams", "laser", true, NumberRule::kPositive).value_or(2));
+  laser.beams = Count(in, node, "beams", "laser", true, 2, 100000, 2);
   laser.min_range =
       in.Number(node, "min_range", "laser", true, NumberRule::kNonNegative).value_or(0.0);
   laser.max_range =
@@ -147,9 +160,6 @@ void ReadLaser(YamlReader& in, const YAML::Node& node, LaserSpec& laser) {
       in.Number(node, "noise_stddev", "laser", true, NumberRule::kNonNegative).value_or(0.0);
   if (laser.angle_max <= laser.angle_min) {
     in.Error(node["angle_max"], "laser: angle_max must exceed angle_min");
-  }
-  if (laser.beams < 2 || laser.beams > 100000) {
-    in.Error(node["beams"], "laser: beams must be in [2, 100000]");
   }
   if (laser.max_range <= laser.min_range) {
     in.Error(node["max_range"], "laser: max_range must exceed min_range");
@@ -167,16 +177,13 @@ void ReadProfiler(YamlReader& in, const YAML::Node& node, const std::string& wha
   p.link = in.String(node, "link", what, true).value_or("");
   p.pan_joint = in.String(node, "pan_joint", what, true).value_or("");
   p.tilt_joint = in.String(node, "tilt_joint", what, true).value_or("");
-  p.samples =
-      static_cast<int>(in.Number(node, "samples", what, true, NumberRule::kPositive).value_or(2));
+  p.samples = Count(in, node, "samples", what, true, 2, 10000, 2);
   p.field_of_view =
       in.Number(node, "field_of_view", what, true, NumberRule::kPositive).value_or(0.7);
   p.min_range = in.Number(node, "min_range", what, true, NumberRule::kNonNegative).value_or(0.0);
   p.max_range = in.Number(node, "max_range", what, true, NumberRule::kPositive).value_or(1.0);
   p.noise_stddev =
       in.Number(node, "noise_stddev", what, true, NumberRule::kNonNegative).value_or(0.0);
-  if (p.samples < 2 || p.samples > 10000)
-    in.Error(node["samples"], what + ": samples must be in [2, 10000]");
   if (p.field_of_view >= M_PI) in.Error(node["field_of_view"], what + ": field_of_view >= pi");
   if (p.max_range <= p.min_range) {
     in.Error(node["max_range"], what + ": max_range must exceed min_range");
@@ -185,11 +192,9 @@ void ReadProfiler(YamlReader& in, const YAML::Node& node, const std::string& wha
 
 void ReadBumper(YamlReader& in, const YAML::Node& node, BumperSpec& bumper) {
   if (!in.ExpectMap(node, "bumper", {"segments", "travel_m"})) return;
-  bumper.segments = static_cast<int>(
-      in.Number(node, "segments", "bumper", true, NumberRule::kPositive).value_or(1));
+  bumper.segments = Count(in, node, "segments", "bumper", true, 1, 360, 1);
   bumper.travel_m =
       in.Number(node, "travel_m", "bumper", true, NumberRule::kPositive).value_or(0.01);
-  if (bumper.segments > 360) in.Error(node["segments"], "bumper: at most 360 segments");
 }
 
 // Body and mounts from the URDF.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "robot_sim/robot_spec.h"
 #include "test_world.h"
@@ -81,6 +82,41 @@ TEST(RobotSpecTest, YamlErrorsNameFileLineAndColumn) {
   EXPECT_EQ(r.errors[0].where.file, "bad.yaml");
   EXPECT_EQ(r.errors[0].where.line, 3);
   EXPECT_NE(r.errors[0].message.find("wheelbase"), std::string::npos);
+}
+
+// robot_file_fuzz: `rays: 8.9e61` overflowed the int it was cast to. Every count is a whole
+// number in its range, refused by name and line otherwise.
+TEST(RobotSpecTest, CountsOutOfRangeOrFractionalAreRefusedByName) {
+  const std::string urdf = ReadFile(PackageFile("urdf/b12.urdf"));
+  const std::string head =
+      "name: b12\n"
+      "drive: {kind: synchro, max_linear_mps: 0.5, max_angular_rps: 1,\n"
+      "        max_linear_accel: 1, max_angular_accel: 1}\n";
+  const auto ring = [](const std::string& rays, const std::string& groups) {
+    return "rings:\n  - {name: sonar, kind: ultrasound, link_prefix: sonar_, field_of_view: 0.4,\n"
+           "     min_range: 0.15, max_range: 6, rays: " +
+           rays + ", critical_angle: 0.35, noise_stddev: 0, fire_groups: " + groups + "}\n";
+  };
+  for (const auto& [rays, groups, key] :
+       {std::tuple{"88888888888888888888888888888888888888888888888888888888888887", "1", "rays"},
+        std::tuple{"7.5", "1", "rays"}, std::tuple{"7", "1e300", "fire_groups"},
+        std::tuple{"0", "1", "rays"}}) {
+    const auto r =
+        LoadRobotSpecFromStrings(head + ring(rays, groups), "bad.yaml", urdf, "b12.urdf");
+    ASSERT_FALSE(r.ok()) << rays << " " << groups;
+    const std::string errors = spott_map::FormatErrors(r.errors);
+    EXPECT_NE(errors.find(std::string("bad.yaml:6:")), std::string::npos) << errors;
+    EXPECT_NE(errors.find(std::string(key) + " must be a whole number in [1, 1000]"),
+              std::string::npos)
+        << errors;
+  }
+  const auto bumper = LoadRobotSpecFromStrings(head + "bumper: {segments: 1e20, travel_m: 0.01}\n",
+                                               "bad.yaml", urdf, "b12.urdf");
+  ASSERT_FALSE(bumper.ok());
+  EXPECT_NE(
+      spott_map::FormatErrors(bumper.errors).find("segments must be a whole number in [1, 360]"),
+      std::string::npos)
+      << spott_map::FormatErrors(bumper.errors);
 }
 
 TEST(RobotSpecTest, RingWithoutUrdfLinksIsAnError) {
