@@ -120,6 +120,11 @@ def main():
     load0 = open('/proc/loadavg').read().split()[:3]
     print('fault campaign: %d kinds x %d seeds into %s; load %s' %
           (len(kinds), a.seeds, out, ' '.join(load0)), file=sys.stderr)
+    # Built once here; each run skips the build check.
+    if subprocess.call([os.path.join(ROOT, 'spott'), 'build'], stdout=subprocess.DEVNULL,
+                       stderr=subprocess.STDOUT) != 0:
+        print('fault campaign: the build failed (./spott build)', file=sys.stderr)
+        return 1
     rows = []
     for kind in kinds:
         for seed in range(1, a.seeds + 1):
@@ -131,7 +136,7 @@ def main():
             start = time.time()
             with open(os.path.join(out, name + '.log'), 'w') as log:
                 subprocess.call([os.path.join(ROOT, 'spott'), 'run', scenario, '--no-bag',
-                                 '--out', os.path.join(out, name)], stdout=log,
+                                 '--no-build', '--out', os.path.join(out, name)], stdout=log,
                                 stderr=subprocess.STDOUT)
             try:
                 with open(os.path.join(out, name, 'report.json')) as f:
