@@ -220,7 +220,10 @@ TEST_F(BadInput, EmptyFeaturesAndGraphAreRefusedAndTheNextLegGoesThroughTheDoor)
   ASSERT_TRUE(client.waitForResult(ros::Duration(150.0)));
   EXPECT_EQ(client.getResult()->outcome, spott_msgs::NavigateResult::SUCCEEDED)
       << client.getResult()->reason;
-  EXPECT_LT(truth_->DistanceTo(2.5, 11.5), 0.3);
+  // In office 201, not short of its door (over 1 m away): Navigate's 0.2 m on the estimate plus
+  // the localization's error in an office (up to 0.2 m; 0.3 failed once at 0.300279 m, CI of
+  // 2026-12-05).
+  EXPECT_LT(truth_->DistanceTo(2.5, 11.5), 0.4);
   EXPECT_EQ(truth_->contacts(), 0);
 }
 
