@@ -283,17 +283,11 @@ int main(int argc, char** argv) {
         replay.Drop();  // sent again once the executive is ready (RunMissions)
         continue;
       }
-      NavigationLeg& l = leg->leg;
-      l.mission_outcome = p->result.outcome;
-      for (const auto& e : p->result.events) l.monitors_fired.push_back(e.condition);
-      l.navigate_outcome =
-          l.mission_outcome + (p->result.message.empty() ? "" : ": " + p->result.message);
       spott_launch::MissionSpec spec;  // no scenario: the executive's word
       if (scenario && missions_seen < scenario->missions.size())
         spec = scenario->missions[missions_seen];
       ++missions_seen;
-      leg->refusal = spott_launch::MissionMismatch(spec, l.mission_outcome, p->result.message,
-                                                   l.monitors_fired);
+      leg->refusal = spott_launch::ApplyMissionResult(p->result, spec, leg->leg);
       replay.End(*leg, p->header.stamp.toSec());
     } else if (kind == RunKind::kTask && topic == "/task/goal") {
       if (auto p = m.instantiate<spott_msgs::TaskActionGoal>()) {

@@ -390,25 +390,20 @@ NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
       done_time.Reset();
     }
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
-    std::string message;
-    if (done) {
-      const auto result = client.getResult();
-      leg.mission_outcome = result ? result->outcome : "no result";
-      if (result) {
-        message = result->message;
-        for (const auto& e : result->events) leg.monitors_fired.push_back(e.condition);
-      }
+    std::string mismatch;
+    const auto result = done ? client.getResult() : nullptr;
+    if (result) {
+      mismatch = ApplyMissionResult(*result, spec, leg);
     } else {
-      client.cancelGoal();
-      client.waitForResult(ros::Duration(5.0));
-      leg.mission_outcome = TimedOutText(leg_timeout_s);
+      if (!done) {
+        client.cancelGoal();
+        client.waitForResult(ros::Duration(5.0));
+      }
+      leg.mission_outcome = done ? "no result" : TimedOutText(leg_timeout_s);
+      leg.navigate_outcome = mismatch = leg.mission_outcome;
     }
-    leg.navigate_outcome = leg.mission_outcome + (message.empty() ? "" : ": " + message);
     leg.sim_time_s = (CloseLeg(watcher, done_time) - started).toSec();
     Measure(watcher, leg.has_target ? leg.target.Position() : watcher.Pose().Position(), leg);
-    const std::string mismatch =
-        done ? MissionMismatch(spec, leg.mission_outcome, message, leg.monitors_fired)
-             : leg.mission_outcome;
     JudgeMissionLeg(mismatch, goal_tolerance_m, leg);
     report.legs.push_back(leg);
   }

@@ -27,6 +27,15 @@ void NavigateFeedbackLog::On(const spott_msgs::NavigateFeedback& feedback) {
   recovering = now;
 }
 
+std::string ApplyMissionResult(const spott_msgs::MissionResult& result, const MissionSpec& spec,
+                               NavigationLeg& leg) {
+  leg.mission_outcome = result.outcome;
+  leg.monitors_fired.clear();
+  for (const auto& e : result.events) leg.monitors_fired.push_back(e.condition);
+  leg.navigate_outcome = result.outcome + (result.message.empty() ? "" : ": " + result.message);
+  return MissionMismatch(spec, result.outcome, result.message, leg.monitors_fired);
+}
+
 bool ApplyTaskResult(const spott_msgs::TaskResult& result,
                      std::vector<std::string>& features_before, NavigationLeg& leg) {
   leg.interpretation = result.interpretation;

@@ -9,6 +9,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
+#include <spott_msgs/MissionResult.h>
 #include <spott_msgs/NavigateFeedback.h>
 #include <spott_msgs/TaskResult.h>
 
@@ -36,6 +37,12 @@ struct NavigateFeedbackLog {
 /// added since `features_before` (updated), the goal point it sent. True when it says reached.
 bool ApplyTaskResult(const spott_msgs::TaskResult& result,
                      std::vector<std::string>& features_before, NavigationLeg& leg);
+
+/// rpl_executive's result into `leg`: its outcome, the monitors that fired (conditions, in
+/// order), the outcome with the message as the report shows it. Returns why the mission did not
+/// go as `spec` says ("" = as it says), from MissionMismatch.
+std::string ApplyMissionResult(const spott_msgs::MissionResult& result, const MissionSpec& spec,
+                               NavigationLeg& leg);
 
 /// robot_sim's /sim/faults message as the report's faults.
 std::vector<DemoReport::Fault> FaultsFrom(const diagnostic_msgs::DiagnosticArray& message);

@@ -158,7 +158,7 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
   }
   if (!root || root.IsNull()) {
     in.Error(spott_map::SourceLocation{file, 1, 1},
-             "empty scenario: it needs at least `world:` and `tasks:` or `goals:`");
+             "empty scenario: it needs at least `world:` and `tasks:`, `goals:` or `missions:`");
     result.errors = in.errors();
     return result;
   }
@@ -296,6 +296,22 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
   return args;
 }
 
+std::string FileStems(const std::string& dir, const std::string& ext) {
+  std::vector<std::string> names;
+  if (DIR* d = opendir(dir.c_str())) {
+    while (const dirent* e = readdir(d)) {
+      const std::string n = e->d_name;
+      if (n.size() > ext.size() && n.compare(n.size() - ext.size(), ext.size(), ext) == 0)
+        names.push_back(n.substr(0, n.size() - ext.size()));
+    }
+    closedir(d);
+  }
+  std::sort(names.begin(), names.end());
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
+  return joined;
+}
+
 std::vector<SourceError> CheckMissionNames(const Scenario& s, const std::string& rpl_dir) {
   std::vector<SourceError> errors;
   for (std::size_t i = 0; i < s.missions.size(); ++i) {
@@ -304,18 +320,7 @@ std::vector<SourceError> CheckMissionNames(const Scenario& s, const std::string&
     const std::string dir = rpl_dir + (rpl ? "/plans" : "/missions");
     const std::string ext = rpl ? ".rpl" : ".nc";
     if (std::ifstream(dir + "/" + m.name.text + ext)) continue;
-    std::vector<std::string> names;
-    if (DIR* d = opendir(dir.c_str())) {
-      while (const dirent* e = readdir(d)) {
-        const std::string n = e->d_name;
-        if (n.size() > ext.size() && n.compare(n.size() - ext.size(), ext.size(), ext) == 0)
-          names.push_back(n.substr(0, n.size() - ext.size()));
-      }
-      closedir(d);
-    }
-    std::sort(names.begin(), names.end());
-    std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    const std::string known = FileStems(dir, ext);
     errors.push_back({m.name.where, "missions[" + std::to_string(i) + "].name: no shipped " +
                                         (rpl ? "RPL plan '" : "Noreils-Chatila mission '") +
                                         m.name.text + "' in " + dir + " (there are: " + known +

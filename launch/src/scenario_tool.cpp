@@ -5,7 +5,6 @@
 // (demo_report's parameters), DIR/faults.yaml (robot_sim's ~faults, when the scenario has any)
 // and DIR/time_limit_s. --seed replaces the scenario's seed (a suite runs one file with many).
 // ROS-free.
-#include <dirent.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -28,28 +27,12 @@ int Usage(const std::string& why) {
   return 2;
 }
 
-/// The names NAME of the files NAME.yaml in `dir`, sorted ("" when there are none).
-std::string YamlNames(const std::string& dir) {
-  std::vector<std::string> names;
-  if (DIR* d = opendir(dir.c_str())) {
-    while (const dirent* e = readdir(d)) {
-      const std::string n = e->d_name;
-      if (n.size() > 5 && n.substr(n.size() - 5) == ".yaml")
-        names.push_back(n.substr(0, n.size() - 5));
-    }
-    closedir(d);
-  }
-  std::sort(names.begin(), names.end());
-  std::string joined;
-  for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
-  return joined;
-}
-
 /// An error at `where` when `dir` has no NAME.yaml for `name`, listing what it has.
 bool Known(const spott_launch::Located& name, const std::string& what, const std::string& dir) {
   if (name.text.empty() || std::ifstream(dir + "/" + name.text + ".yaml")) return true;
   std::cerr << spott_map::SourceError{name.where, what + ": no " + what + " '" + name.text +
-                                                      "' (there are: " + YamlNames(dir) + ")"}
+                                                      "' (there are: " +
+                                                      spott_launch::FileStems(dir, ".yaml") + ")"}
                    .ToString()
             << "\n";
   return false;

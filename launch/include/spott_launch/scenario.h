@@ -88,6 +88,9 @@ std::vector<std::string> LaunchArguments(const Scenario& scenario);
 /// ParseScenario.
 std::string DemoParametersYaml(const Scenario& scenario, const std::string& file = "");
 
+/// "a, b, c": the names NAME of the files NAME<ext> in `dir`, sorted ("" when there are none).
+std::string FileStems(const std::string& dir, const std::string& ext);
+
 /// Errors for missions whose NAME has no file in `rpl_dir` (rpl_executive's directory:
 /// plans/NAME.rpl, missions/NAME.nc), listing the shipped ones.
 std::vector<spott_map::SourceError> CheckMissionNames(const Scenario& scenario,
