@@ -109,6 +109,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("nc/obstacle_avoidance/front_half_angle_rad", oa.front_half_angle_rad, "(0, pi]");
   ExpectIn("nc/obstacle_avoidance/max_angular_rps", oa.max_angular_rps, "(0, inf)");
   Expect(oa.insufficient_data_limit >= 1, "nc/obstacle_avoidance/insufficient_data_limit < 1");
+  ExpectIn("nc/obstacle_avoidance/robot_radius_m", oa.robot_radius_m, "[0, inf)");
+  ExpectIn("nc/obstacle_avoidance/way_clearance_m", oa.way_clearance_m, "[0, inf)");
+  ExpectIn("nc/obstacle_avoidance/way_check_distance_m", oa.way_check_distance_m, "(0, inf)");
+  ExpectIn("nc/obstacle_avoidance/max_travel_m", oa.max_travel_m, "(0, inf)");
+  ExpectIn("nc/obstacle_avoidance/goal_turn_gain", oa.goal_turn_gain, "(0, inf)");
+  ExpectIn("nc/obstacle_avoidance/forget_margin_m", oa.forget_margin_m, "[0, inf)");
 
   try {
     rpl::Executive executive(p.rpl);  // what RplBinding builds

@@ -1,5 +1,8 @@
 #include "rpl_executive/noreils_chatila/geometry.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace rpl_executive::noreils_chatila {
 
 double WrapAngle(double angle) {
@@ -42,6 +45,14 @@ double SignedDistanceToLine(const Point2& p, const Point2& origin, double direct
   const double dx = p.x - origin.x;
   const double dy = p.y - origin.y;
   return std::cos(direction) * dy - std::sin(direction) * dx;
+}
+
+double DistanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double len2 = dx * dx + dy * dy;
+  const double t =
+      len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
 }
 
 }  // namespace rpl_executive::noreils_chatila

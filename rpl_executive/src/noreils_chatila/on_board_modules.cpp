@@ -50,7 +50,8 @@ OnBoardModules::OnBoardModules(const OnBoardParameters& parameters, const SonarR
       ring_(ring),
       pilot_(parameters.pilot),
       wall_following_(parameters.wall_following, ring, parameters.sonar),
-      avoidance_(parameters.obstacle_avoidance, ring) {
+      avoidance_(parameters.obstacle_avoidance, ring),
+      avoid_obstacle_(parameters.obstacle_avoidance, ring) {
   const std::vector<std::string> errors = ValidateParameters(parameters);
   if (!errors.empty()) {
     std::string all;
@@ -108,10 +109,14 @@ OperatorReply OnBoardModules::Send(OperatorHandle handle, const OperatorCommand&
   if (std::holds_alternative<AvoidObstacleCommand>(command) ||
       std::holds_alternative<ObstacleAvoidanceCommand>(command)) {
     Release(OperatorStatus::kInterrupted, "another movement took the wheels");
-    avoidance_.Activate();
+    elementary_task_ = std::holds_alternative<AvoidObstacleCommand>(command);
+    if (elementary_task_) {
+      avoid_obstacle_.Start(pilot_.RemainingVertices());
+    } else {
+      avoidance_.Activate();
+    }
     holder_ = Holder::kAvoidance;
     handle_ = handle;
-    elementary_task_ = std::holds_alternative<AvoidObstacleCommand>(command);
     reply.status = OperatorStatus::kRunning;
     return reply;
   }
@@ -167,14 +172,20 @@ void OnBoardModules::OnSonar(const SonarScan& scan) {
     if (process_output_.failed) {
       Release(OperatorStatus::kFailed, "wall-following: repeatedly insufficient data (no wall)");
     }
+  } else if (holder_ == Holder::kAvoidance && elementary_task_) {
+    if (!pose_) return;
+    const AvoidObstacleTask::Step step =
+        avoid_obstacle_.Update(pose_->pose, scan, pilot_.speed_mps());
+    process_output_.command = step.command;
+    if (step.status == AvoidObstacleTask::Status::kCompleted) {
+      Release(OperatorStatus::kCompleted, step.message);
+    } else if (step.status == AvoidObstacleTask::Status::kFailed) {
+      Release(OperatorStatus::kFailed, "avoid-obstacle: " + step.message);
+    }
   } else if (holder_ == Holder::kAvoidance) {
     process_output_ = avoidance_.Update(scan, pilot_.speed_mps());
     if (process_output_.failed) {
-      if (elementary_task_) {
-        Release(OperatorStatus::kCompleted, "nothing left to avoid");
-      } else {
-        Release(OperatorStatus::kFailed, "obstacle-avoidance: repeatedly insufficient data");
-      }
+      Release(OperatorStatus::kFailed, "obstacle-avoidance: repeatedly insufficient data");
     }
   }
 }

@@ -51,8 +51,7 @@ void Pilot::Start(const Pose2& pose, const std::vector<Point2>& vertices,
       path_.samples.size() < 2 ? (final_yaw_ ? State::kFinalTurn : State::kDone) : State::kTracking;
 }
 
-bool Pilot::Resume(const Pose2& pose) {
-  if (vertices_.empty()) return false;
+size_t Pilot::NextVertexIndex() const {
   // The vertices not passed yet: those beyond the progress made along the path.
   const double s_now = path_.samples.empty() ? 0.0 : path_.samples[progress_].s;
   size_t next = first_vertex_;
@@ -63,7 +62,17 @@ bool Pilot::Resume(const Pose2& pose) {
     }
     next = first_vertex_ + i + 1;
   }
-  if (next >= vertices_.size()) next = vertices_.size() - 1;
+  return std::min(next, vertices_.size() - 1);
+}
+
+std::vector<Point2> Pilot::RemainingVertices() const {
+  if (vertices_.empty()) return {};
+  return std::vector<Point2>(vertices_.begin() + NextVertexIndex(), vertices_.end());
+}
+
+bool Pilot::Resume(const Pose2& pose) {
+  if (vertices_.empty()) return false;
+  const size_t next = NextVertexIndex();
   const std::vector<Point2> rest(vertices_.begin() + next, vertices_.end());
   const std::vector<Point2> all = vertices_;
   const std::optional<double> yaw = final_yaw_;

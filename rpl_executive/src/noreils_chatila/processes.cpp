@@ -33,6 +33,12 @@ std::vector<std::string> ValidateParameters(const ObstacleAvoidanceParameters& p
   }
   if (!(p.max_angular_rps > 0.0)) v.push_back("max_angular_rps: must be above 0");
   if (p.insufficient_data_limit < 1) v.push_back("insufficient_data_limit: must be 1 or more");
+  if (!(p.robot_radius_m >= 0.0)) v.push_back("robot_radius_m: must be 0 or more");
+  if (!(p.way_clearance_m >= 0.0)) v.push_back("way_clearance_m: must be 0 or more");
+  if (!(p.way_check_distance_m > 0.0)) v.push_back("way_check_distance_m: must be above 0");
+  if (!(p.max_travel_m > 0.0)) v.push_back("max_travel_m: must be above 0");
+  if (!(p.goal_turn_gain > 0.0)) v.push_back("goal_turn_gain: must be above 0");
+  if (!(p.forget_margin_m >= 0.0)) v.push_back("forget_margin_m: must be 0 or more");
   return v;
 }
 
@@ -127,33 +133,45 @@ void ObstacleAvoidanceProcess::Activate() {
 
 void ObstacleAvoidanceProcess::Halt() { active_ = false; }
 
+FrontEchoes NearestFrontEchoes(const SonarScan& scan, const SonarRing& ring,
+                               double front_half_angle_rad) {
+  FrontEchoes f{kNoEcho, kNoEcho, kNoEcho};
+  const size_t n = std::min(scan.ranges_m.size(), ring.mounts.size());
+  for (size_t i = 0; i < n; ++i) {
+    const double r = scan.ranges_m[i];
+    const double a = WrapAngle(ring.mounts[i].yaw_rad);
+    if (!ring.IsEcho(r) || std::fabs(a) > front_half_angle_rad + 1e-9) continue;
+    f.nearest = std::min(f.nearest, r);
+    if (a >= -1e-9) f.left = std::min(f.left, r);
+    if (a <= 1e-9) f.right = std::min(f.right, r);
+  }
+  return f;
+}
+
+VelocityCommand AvoidanceCommand(const ObstacleAvoidanceParameters& p, double nearest, double side,
+                                 double speed_mps) {
+  const double span = p.detect_distance_m - p.stop_distance_m;
+  const double closeness = std::clamp((p.detect_distance_m - nearest) / span, 0.0, 1.0);
+  VelocityCommand c;
+  c.linear_mps = speed_mps * std::clamp((nearest - p.stop_distance_m) / span, 0.0, 1.0);
+  c.angular_rps = side * p.max_angular_rps * std::max(0.3, closeness);
+  return c;
+}
+
 ProcessOutput ObstacleAvoidanceProcess::Update(const SonarScan& scan, double speed_cap_mps) {
   ProcessOutput out;
   if (!active_) return out;
   const double speed = std::min(parameters_.speed_mps, speed_cap_mps);
-  double nearest = kNoEcho, left = kNoEcho, right = kNoEcho;
-  const size_t n = std::min(scan.ranges_m.size(), ring_.mounts.size());
-  for (size_t i = 0; i < n; ++i) {
-    const double r = scan.ranges_m[i];
-    const double a = WrapAngle(ring_.mounts[i].yaw_rad);
-    if (!ring_.IsEcho(r) || std::fabs(a) > parameters_.front_half_angle_rad + 1e-9) continue;
-    nearest = std::min(nearest, r);
-    if (a >= -1e-9) left = std::min(left, r);
-    if (a <= 1e-9) right = std::min(right, r);
-  }
-  if (!(nearest < parameters_.detect_distance_m)) {
+  const FrontEchoes f = NearestFrontEchoes(scan, ring_, parameters_.front_half_angle_rad);
+  if (!(f.nearest < parameters_.detect_distance_m)) {
     out.insufficient = true;
     out.failed = ++insufficient_ >= parameters_.insufficient_data_limit;
     out.command.linear_mps = speed;
     return out;
   }
   insufficient_ = 0;
-  const double span = parameters_.detect_distance_m - parameters_.stop_distance_m;
-  const double closeness = std::clamp((parameters_.detect_distance_m - nearest) / span, 0.0, 1.0);
-  out.command.linear_mps =
-      speed * std::clamp((nearest - parameters_.stop_distance_m) / span, 0.0, 1.0);
-  const double turn = left >= right ? 1.0 : -1.0;  // towards the freer side; left on a tie
-  out.command.angular_rps = turn * parameters_.max_angular_rps * std::max(0.3, closeness);
+  // Towards the freer side; left on a tie.
+  out.command = AvoidanceCommand(parameters_, f.nearest, f.left >= f.right ? 1.0 : -1.0, speed);
   return out;
 }
 

@@ -142,6 +142,12 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("nc/obstacle_avoidance/front_half_angle_rad", oa.front_half_angle_rad, "rad");
   r.Get("nc/obstacle_avoidance/max_angular_rps", oa.max_angular_rps, "rad/s");
   r.Get("nc/obstacle_avoidance/insufficient_data_limit", oa.insufficient_data_limit);
+  r.Get("nc/obstacle_avoidance/robot_radius_m", oa.robot_radius_m, "m");
+  r.Get("nc/obstacle_avoidance/way_clearance_m", oa.way_clearance_m, "m");
+  r.Get("nc/obstacle_avoidance/way_check_distance_m", oa.way_check_distance_m, "m");
+  r.Get("nc/obstacle_avoidance/max_travel_m", oa.max_travel_m, "m");
+  r.Get("nc/obstacle_avoidance/goal_turn_gain", oa.goal_turn_gain, "1/s");
+  r.Get("nc/obstacle_avoidance/forget_margin_m", oa.forget_margin_m, "m");
   Prefixed(r, "nc/", noreils_chatila::ValidateParameters(ob));
   r.Get("nc/control_rate_hz", p.control_rate_hz, "Hz");
   r.Get("nc/pose_source", p.pose_source);

@@ -32,6 +32,9 @@ bool PointInPolygon(const Point2& p, const std::vector<Point2>& polygon);
 /// (rad): positive on the left of the direction.
 double SignedDistanceToLine(const Point2& p, const Point2& origin, double direction);
 
+/// Distance of `p` from the segment from `a` to `b` (from `a` when they coincide).
+double DistanceToSegment(const Point2& p, const Point2& a, const Point2& b);
+
 inline double Distance(const Point2& a, const Point2& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }

@@ -9,8 +9,8 @@
 // The Pilot is the only effector: whatever runs (path, wall following, avoidance) holds the
 // wheels, and a new movement interrupts the one before (reported kInterrupted). `stop`
 // halts the wheels' holder and reports its interruption on the next Update (Fig. 5, message 7).
-// avoid-obstacle completes when the avoidance process repeatedly has nothing to avoid; a
-// RUN process that repeatedly lacks data fails.
+// avoid-obstacle completes when the way back to the interrupted order is clear
+// (avoid_obstacle.h); a RUN process that repeatedly lacks data fails.
 #pragma once
 
 #include <optional>
@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "rpl_executive/noreils_chatila/avoid_obstacle.h"
 #include "rpl_executive/noreils_chatila/pilot.h"
 #include "rpl_executive/noreils_chatila/processes.h"
 #include "rpl_executive/noreils_chatila/robot_modules.h"
@@ -67,6 +68,7 @@ class OnBoardModules : public RobotModules {
   Pilot pilot_;
   WallFollowingProcess wall_following_;
   ObstacleAvoidanceProcess avoidance_;
+  AvoidObstacleTask avoid_obstacle_;
   Holder holder_ = Holder::kNone;
   OperatorHandle handle_ = 0;
   bool elementary_task_ = false;  // avoid-obstacle rather than RUN (obstacle-avoidance)

@@ -54,6 +54,8 @@ class Pilot {
   /// Goes on along what is left of the last path from `pose` (resume-order). False when there
   /// is no path to resume.
   bool Resume(const Pose2& pose);
+  /// The vertices Resume would drive along (empty without a path).
+  std::vector<Point2> RemainingVertices() const;
   void SetSpeed(double speed_mps);
   /// Back to default_speed_mps (a new mission).
   void ResetSpeed() { speed_mps_ = parameters_.default_speed_mps; }
@@ -69,6 +71,7 @@ class Pilot {
 
  private:
   VelocityCommand Track(const Pose2& pose);
+  size_t NextVertexIndex() const;
 
   PilotParameters parameters_;
   State state_ = State::kIdle;

@@ -60,8 +60,30 @@ struct ObstacleAvoidanceParameters {
   double front_half_angle_rad = 1.2;  ///< (0, pi]: 1.2 rad covers sensors 14-16 and 1-4
   double max_angular_rps = 0.8;       ///< (0, inf)
   int insufficient_data_limit = 5;    ///< [1, inf)
+  // The elementary task avoid-obstacle (avoid_obstacle.h):
+  double robot_radius_m = 0.4;        ///< centre to side (HILARE's belt radius), [0, inf)
+  double way_clearance_m = 0.2;       ///< beyond the radius, an echo to the way back, [0, inf)
+  double way_check_distance_m = 2.0;  ///< the way back is checked this far, (0, inf)
+  double max_travel_m = 4.0;          ///< driven without the way clearing: fails, (0, inf)
+  double goal_turn_gain = 1.0;        ///< rad/s per rad towards the way back, (0, inf)
+  double forget_margin_m = 0.1;       ///< a beam reading this far past an echo forgets it, [0, inf)
 };
 std::vector<std::string> ValidateParameters(const ObstacleAvoidanceParameters& p);
+
+/// The nearest echo of the front sensors (axis within `front_half_angle_rad` of the heading),
+/// and of those on each side (the sensor on the axis counts for both); infinity when none.
+struct FrontEchoes {
+  double nearest;
+  double left;
+  double right;
+};
+FrontEchoes NearestFrontEchoes(const SonarScan& scan, const SonarRing& ring,
+                               double front_half_angle_rad);
+
+/// The avoidance law for a front echo at `nearest` (< detect_distance_m): slower as it nears,
+/// stopped at stop_distance_m, turning towards `side` (+1 left, -1 right).
+VelocityCommand AvoidanceCommand(const ObstacleAvoidanceParameters& p, double nearest, double side,
+                                 double speed_mps);
 
 class WallFollowingProcess {
  public:
