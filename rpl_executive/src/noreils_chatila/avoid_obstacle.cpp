@@ -19,11 +19,10 @@ constexpr int kArcPoints = AvoidObstacleTask::kArcPoints;
 constexpr double kArcSpan = 0.75;
 constexpr int kForgetData = 5;
 // A heading is taken when its first kProbeM pass every remembered echo by the robot's radius
-// plus kProbeMarginM: the obstacle extends beyond the echoes it gave (the sonar is blind to it
+// plus way_clearance_m: the obstacle extends beyond the echoes it gave (the sonar is blind to it
 // at close range and at grazing angles), and an unseen part of a cylinder touched the robot
 // with a 5 cm margin here.
 constexpr double kProbeM = 1.0;
-constexpr double kProbeMarginM = 0.2;
 // Near the vertex, the way need only pass the echoes by the robot's radius plus this (m).
 constexpr double kContactMarginM = 0.05;
 // Only echoes this near the heading turn the robot away; wider (the process's 1.2 rad), an
