@@ -99,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("nc/wall_following/k_heading", wf.k_heading, "(0, inf)");
   ExpectIn("nc/wall_following/max_angular_rps", wf.max_angular_rps, "(0, inf)");
   ExpectIn("nc/wall_following/front_distance_m", wf.front_distance_m, "(0, inf)");
-  ExpectIn("nc/wall_following/side_window_rad", wf.side_window_rad, "(0, pi/2]");
+  ExpectIn("nc/wall_following/side_window_rad", wf.side_window_rad, "(0, pi]");
   Expect(wf.insufficient_data_limit >= 1, "nc/wall_following/insufficient_data_limit < 1");
   const auto& oa = p.on_board.obstacle_avoidance;
   ExpectIn("nc/obstacle_avoidance/speed_mps", oa.speed_mps, "(0, inf)");

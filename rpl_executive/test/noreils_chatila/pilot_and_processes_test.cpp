@@ -203,5 +203,17 @@ TEST(OnBoardModules, ParametersAreValidatedByName) {
   EXPECT_THROW(OnBoardModules(p, HilareRing()), std::invalid_argument);
 }
 
+// The parameter fuzzer's finding (corpus side_window_above_half_pi): the wall window's range is
+// (0, pi], as validated; the header said (0, pi/2].
+TEST(OnBoardModules, TheWallWindowMayBeWiderThanAQuarterTurnButNotAboveAHalfTurn) {
+  OnBoardParameters p;
+  p.wall_following.side_window_rad = 2.1;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.wall_following.side_window_rad = 3.2;
+  const auto v = ValidateParameters(p);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_EQ(v[0], "wall_following.side_window_rad: must be in (0, pi]");
+}
+
 }  // namespace
 }  // namespace rpl_executive::noreils_chatila

@@ -11,9 +11,10 @@
 //     e = (rho - robot_radius_m) - d,   w = k_heading psi + s k_distance e,
 //     v = speed max(0, cos psi)
 // (psi = 0 when the robot runs parallel; e > 0 turns it towards the wall; the robot slows down
-// while it is not parallel and turns in place when the wall is across its way). The window is
-// wide (100 degrees by default) so that a wall reached head-on, as Example 1's, is the one
-// followed: psi = 90 degrees turns the robot in place until the wall is on the side. A wall
+// while it is not parallel and turns in place when the wall is across its way). The window
+// (side_window_rad, 60 degrees by default, up to 180) bounds which lines count as the wall; one
+// wider than 90 degrees takes a wall reached head-on, and psi = 90 degrees turns the robot in
+// place until the wall is on the side. A wall
 // ahead nearer than front_distance_m turns it away from the side in place (an inside corner).
 // Without a line, the nearest echo within 35 degrees of the side gives rho (psi = 0); without
 // either the datum is insufficient.
@@ -48,7 +49,7 @@ struct WallFollowingParameters {
   double max_angular_rps = 0.8;      ///< (0, inf)
   double front_distance_m = 0.35;    ///< a front echo nearer (range) is an inside corner, (0, inf)
   double robot_radius_m = 0.4;       ///< centre to side (HILARE's belt radius), [0, inf)
-  double side_window_rad = 1.05;     ///< lines whose normal is this near the side, (0, pi/2]
+  double side_window_rad = 1.05;     ///< lines whose normal is this near the side, (0, pi]
   int insufficient_data_limit = 10;  ///< [1, inf)
 };
 std::vector<std::string> ValidateParameters(const WallFollowingParameters& p);
