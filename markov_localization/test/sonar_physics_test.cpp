@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "../src/worker_pool.h"
 #include "markov_localization/lost_detector.h"
 #include "test_helpers.h"
 
@@ -60,6 +61,31 @@ TEST(SonarPhysics, ACone30DegreesWideReadsTheNearestEchoInIt) {
   EXPECT_EQ(SensorModel(map, kHeadings, Sonar(cone, M_PI / 2)).ExpectedBin(0, cell), 4);
   // Specular: that ray's echo is the corner's 7.765 m; the head-on 7.5 m is nearest.
   EXPECT_EQ(SensorModel(map, kHeadings, Sonar(cone, 0.35)).ExpectedBin(0, cell), 15);
+}
+
+// The expected ranges are filled on the worker thread too: the table must not depend on it.
+TEST(SonarPhysics, TheExpectedRangesAreTheSameOnOneThreadAndTwo) {
+  const auto world = testing::LoadWorld("bonn_department");
+  const MapModel map = MapModel::FromWorld(world, MapModelParameters());
+  SensorModelParameters sonar = Sonar(0.3, 0.35);
+  sonar.beam_angles_rad = SonarRingAngles(24);
+  sonar.sensor_offset_m = 0.3;
+  const bool threads = WorkerThreadsEnabled();
+  EnableWorkerThreads(false);
+  const SensorModel one(map, 72, sonar);
+  EnableWorkerThreads(true);
+  const SensorModel two(map, 72, sonar);
+  EnableWorkerThreads(threads);
+  std::size_t states = 0, short_echoes = 0;
+  for (int d = 0; d < 72; ++d)
+    for (std::size_t c = 0; c < map.NumCells(); ++c) {
+      if (!map.state_mask()[c]) continue;
+      ++states;
+      ASSERT_EQ(one.ExpectedBin(d, c), two.ExpectedBin(d, c)) << "heading " << d << " cell " << c;
+      if (one.ExpectedBin(d, c) < 10) ++short_echoes;
+    }
+  EXPECT_GT(states, 10000u);
+  EXPECT_GT(short_echoes, states / 10);  // walls are in the table, not only max range
 }
 
 TEST(SonarPhysics, InvalidParametersAreNamed) {
