@@ -18,17 +18,26 @@
 //                        again (static, the obstacle is still there): FAIL.
 //   avoidance_before_zone  Example 2, someone on PATH who walks away once the robot stopped: S2,
 //                        avoid-obstacle finishes before the zone, resume-order, S1, S1-2; success.
+//   bad_messages         Issue 21: a sonar ring without a usable max range, one with a mount that
+//                        is not finite, a localization status that is not finite and places with
+//                        a path that is not are refused by rpl_executive (counted on
+//                        /diagnostics); Example 2's zone mission then runs as before.
 //
 // ~report_file ("" = none): one line per case for rpl_executive/scripts/run_hilare_missions.sh.
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <spott_msgs/AddObstacle.h>
 #include <spott_msgs/Kidnap.h>
+#include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/RangeRing.h>
 #include <spott_msgs/RemoveObstacle.h>
+#include <spott_msgs/WorldPlaces.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -448,6 +457,74 @@ TEST_F(HilareMissions, Example2AvoidanceFinishingBeforeTheZoneResumesTheOrderAnd
   ASSERT_EQ(r.fired, (std::vector<std::string>{kObstacle, kIn, kOut}));
   EXPECT_GE(resumed_at, 0) << "resume-order";
   EXPECT_LT(resumed_x, 1.5) << "the avoidance finished before the zone";
+  EXPECT_EQ(r.contacts, 0);
+}
+
+TEST_F(HilareMissions, BadMessagesAreRefusedAndTheNextMissionRunsAsBefore) {
+  std::mutex mutex;
+  std::map<std::string, std::string> causes;  // "topic field" -> "count: reason"
+  ros::Subscriber diagnostics = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 50, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (const auto& st : a->status)
+          if (st.name == "rpl_executive: input")
+            for (const auto& kv : st.values) causes[kv.key] = kv.value;
+      });
+  auto refused = [&](const std::string& cause) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return causes.count(cause) > 0;
+  };
+  ros::Publisher sonar = nh_.advertise<spott_msgs::RangeRing>("/sonar", 5);
+  ros::Publisher status = nh_.advertise<spott_msgs::LocalizationStatus>("/localization_status", 5);
+  ros::Publisher places = nh_.advertise<spott_msgs::WorldPlaces>("/world_places", 5);
+  ASSERT_TRUE(WaitUntil(
+      [&] {
+        return sonar.getNumSubscribers() > 0 && status.getNumSubscribers() > 0 &&
+               places.getNumSubscribers() > 0;
+      },
+      20.0));
+  spott_msgs::RangeRing blind;  // every reading would be "no echo"
+  blind.header.frame_id = "base_link";
+  blind.field_of_view = 0.44f;
+  blind.min_range = 0.15f;
+  blind.max_range = std::nanf("");
+  blind.mounts.resize(16);
+  blind.ranges.assign(16, 1.0f);
+  spott_msgs::RangeRing skewed = blind;  // a mount that is not finite
+  skewed.max_range = 6.5f;
+  skewed.mounts[3].theta = std::nan("");
+  spott_msgs::LocalizationStatus lost_in_nan;
+  lost_in_nan.estimate.x = std::nan("");
+  lost_in_nan.certainty = 0.99;
+  spott_msgs::WorldPlaces bad_places;
+  spott_msgs::NamedPath path;
+  path.id = "PATH";
+  path.points.resize(2);
+  path.points[1].y = std::nan("");
+  bad_places.paths.push_back(path);
+  ASSERT_TRUE(WaitUntil(
+      [&] {
+        const ros::Time now = ros::Time::now();
+        blind.header.stamp = skewed.header.stamp = lost_in_nan.header.stamp = now;
+        sonar.publish(blind);
+        sonar.publish(skewed);
+        status.publish(lost_in_nan);
+        places.publish(bad_places);
+        return refused("sonar max_range") && refused("sonar mounts[3]") &&
+               refused("localization_status estimate") && refused("world_places paths[0].points");
+      },
+      30.0))
+      << "rpl_executive did not count every bad message on /diagnostics";
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_NE(causes["sonar max_range"].find("is not in (0, 1000) m"), std::string::npos);
+  }
+  // Nothing changed: the zone mission goes as in Example2ZoneEnteredFirst...
+  Place(0.8, 5.2, 0.0);
+  const MissionRun r = RunMission("example2_zone_surveillance", 150.0);
+  Report("bad_messages", r, "");
+  ASSERT_EQ(r.outcome, "completed") << r.message;
+  EXPECT_EQ(r.fired, (std::vector<std::string>{kIn, kOut}));
   EXPECT_EQ(r.contacts, 0);
 }
 

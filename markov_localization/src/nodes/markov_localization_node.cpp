@@ -45,6 +45,7 @@
 #include "spott_map/world_loader.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/pose_conversions.h"
+#include "spott_ros/range_readings.h"
 
 namespace ml = markov_localization;
 namespace conv = markov_localization::ros_conversions;
@@ -63,19 +64,6 @@ std::string RingProblem(const spott_msgs::RangeRing& ring) {
   if (!(std::isfinite(ring.max_range) && ring.max_range > 0.0f && ring.max_range < 1000.0f))
     return "max_range " + std::to_string(ring.max_range) + " is not in (0, 1000) m";
   return "";
-}
-
-// A reading below 0 or beyond max_range is discarded (sensor_msgs/Range's rule): made NaN, the
-// ring's "dropped out", which the update leaves out. Returns the first such index, or -1.
-int DiscardImpossibleReadings(double max_range, std::vector<double>* ranges) {
-  int first = -1;
-  for (std::size_t i = 0; i < ranges->size(); ++i) {
-    double& r = (*ranges)[i];
-    if (std::isnan(r) || (r >= 0.0 && r <= max_range * 1.001)) continue;
-    if (first < 0) first = static_cast<int>(i);
-    r = std::numeric_limits<double>::quiet_NaN();
-  }
-  return first;
 }
 
 class LocalizationNode {
@@ -429,7 +417,7 @@ class LocalizationNode {
       return;
     }
     ranges_.assign(ring.ranges.begin(), ring.ranges.end());
-    if (const int i = DiscardImpossibleReadings(ring.max_range, &ranges_); i >= 0) {
+    if (const int i = spott_ros::DiscardImpossibleRanges(ring.max_range, &ranges_); i >= 0) {
       refusals_.Refuse(params_.ring_topic, "ranges",
                        "ranges[" + std::to_string(i) + "] = " + std::to_string(ring.ranges[i]) +
                            " is outside [0, max_range]: discarded as dropped out");

@@ -72,9 +72,10 @@ class MissionNode {
  public:
   MissionNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const ros_parameters::NodeParameters& p)
       : params_(p),
+        refusals_(nh, "rpl_executive"),
         server_(nh, "mission", false),
-        rpl_(nh, p, [this] { Changed(false); }),
-        nc_(nh, p, [this] { Changed(false); }) {
+        rpl_(nh, p, &refusals_, [this] { Changed(false); }),
+        nc_(nh, p, &refusals_, [this] { Changed(false); }) {
     state_pub_ = pnh.advertise<spott_msgs::ExecutiveState>("state", 1, true);
     text_pub_ = pnh.advertise<visualization_msgs::Marker>("text_view", 1, true);
     server_.registerGoalCallback([this] { OnGoal(); });
@@ -250,6 +251,7 @@ class MissionNode {
   }
 
   ros_parameters::NodeParameters params_;
+  spott_ros::InputRefusals refusals_;  // before the bindings, which count into it
   actionlib::SimpleActionServer<spott_msgs::MissionAction> server_;
   RplBinding rpl_;
   NcBinding nc_;

@@ -1,11 +1,14 @@
 #include "conversions.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "rpl_executive/rpl/reader.h"
+#include "spott_map/ros/conversions.h"
 #include "spott_ros/markers.h"
 #include "spott_ros/pose_conversions.h"
+#include "spott_ros/range_readings.h"
 
 namespace rpl_executive::ros_conversions {
 
@@ -162,6 +165,96 @@ std::string TaskTreeText(const std::vector<spott_msgs::PlanTask>& tasks,
   return s.str();
 }
 
+// ---- input checks -------------------------------------------------------------------------------
+
+namespace {
+
+constexpr double kFar = 1e4;  // m: a map coordinate beyond 10 km is absurd (spott_map's bound)
+
+bool Plausible(double v) { return std::isfinite(v) && std::abs(v) <= kFar; }
+bool Plausible(double x, double y) { return Plausible(x) && Plausible(y); }
+std::string Index(const char* field, std::size_t i) {
+  return std::string(field) + "[" + std::to_string(i) + "]";
+}
+
+}  // namespace
+
+std::string StatusProblem(const spott_msgs::LocalizationStatus& status) {
+  if (!Plausible(status.estimate.x, status.estimate.y) || !std::isfinite(status.estimate.theta))
+    return "estimate: not finite or beyond 10 km";
+  if (!(status.certainty >= 0.0 && status.certainty <= 1.0))
+    return "certainty: " + std::to_string(status.certainty) + " is not in [0, 1]";
+  return "";
+}
+
+std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph) {
+  std::string error;
+  if (!spott_map::ros_conversions::FromMsg(graph, &error)) return "rooms/doors: " + error;
+  return "";
+}
+
+std::string PlacesProblem(const spott_msgs::WorldPlaces& places) {
+  for (std::size_t i = 0; i < places.places.size(); ++i) {
+    const auto& p = places.places[i].pose;
+    if (!Plausible(p.x, p.y) || !std::isfinite(p.theta))
+      return Index("places", i) + ".pose: not finite or beyond 10 km";
+  }
+  for (std::size_t i = 0; i < places.zones.size(); ++i) {
+    const auto& points = places.zones[i].polygon.points;
+    if (points.size() < 3) return Index("zones", i) + ".polygon: fewer than 3 points";
+    for (const auto& q : points)
+      if (!Plausible(q.x, q.y)) return Index("zones", i) + ".polygon: not finite or beyond 10 km";
+  }
+  for (std::size_t i = 0; i < places.paths.size(); ++i) {
+    const auto& path = places.paths[i];
+    if (path.points.empty()) return Index("paths", i) + ".points: empty";
+    for (const auto& q : path.points)
+      if (!Plausible(q.x, q.y)) return Index("paths", i) + ".points: not finite or beyond 10 km";
+    if (path.has_final_heading && !std::isfinite(path.final_heading))
+      return Index("paths", i) + ".final_heading: not finite";
+  }
+  return "";
+}
+
+std::string RingProblem(const spott_msgs::RangeRing& ring) {
+  if (!(std::isfinite(ring.max_range) && ring.max_range > 0.0f && ring.max_range < 1000.0f))
+    return "max_range: " + std::to_string(ring.max_range) + " is not in (0, 1000) m";
+  if (!(ring.min_range >= 0.0f && ring.min_range < ring.max_range))
+    return "min_range: " + std::to_string(ring.min_range) + " is not in [0, max_range)";
+  if (!(ring.field_of_view >= 0.0f && ring.field_of_view <= M_PI))
+    return "field_of_view: " + std::to_string(ring.field_of_view) + " is not in [0, pi] rad";
+  if (ring.mounts.size() != ring.ranges.size())
+    return "mounts: " + std::to_string(ring.mounts.size()) + " mounts for " +
+           std::to_string(ring.ranges.size()) + " ranges";
+  for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
+    const auto& m = ring.mounts[i];
+    if (!(std::isfinite(m.theta) && std::abs(m.x) < 10.0 && std::abs(m.y) < 10.0))
+      return Index("mounts", i) + ": not finite or beyond 10 m of the base";
+  }
+  return "";
+}
+
+std::string LaserScanProblem(const sensor_msgs::LaserScan& scan) {
+  if (!std::isfinite(scan.angle_min) || std::abs(scan.angle_min) > 2 * M_PI)
+    return "angle_min: not finite or beyond a turn";
+  if (!std::isfinite(scan.angle_increment) || scan.angle_increment == 0.0f ||
+      std::abs(scan.angle_increment) > M_PI)
+    return "angle_increment: not finite, 0 or beyond half a turn";
+  if (!(std::isfinite(scan.range_max) && scan.range_max > 0.0f && scan.range_max < 1000.0f))
+    return "range_max: " + std::to_string(scan.range_max) + " is not in (0, 1000) m";
+  if (!(scan.range_min >= 0.0f && scan.range_min < scan.range_max))
+    return "range_min: " + std::to_string(scan.range_min) + " is not in [0, range_max)";
+  if (scan.ranges.size() > 100000)
+    return "ranges: " + std::to_string(scan.ranges.size()) + " beams (at most 100,000)";
+  return "";
+}
+
+std::string TwistProblem(const geometry_msgs::Twist& t) {
+  for (double v : {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z})
+    if (!std::isfinite(v)) return "linear/angular: not finite";
+  return "";
+}
+
 std::optional<std::pair<std::string, rpl::Value>> ParseBinding(const std::string& binding,
                                                                std::string* error) {
   const rpl::ReadResult r = rpl::ReadPlanText(binding, "binding '" + binding + "'");
@@ -221,9 +314,11 @@ nc::SonarRing RingFromMsg(const spott_msgs::RangeRing& ring) {
   return r;
 }
 
-nc::SonarScan ScanFromMsg(const spott_msgs::RangeRing& ring) {
+nc::SonarScan ScanFromMsg(const spott_msgs::RangeRing& ring, int* discarded) {
   nc::SonarScan s;
   s.ranges_m.assign(ring.ranges.begin(), ring.ranges.end());
+  const int first = spott_ros::DiscardImpossibleRanges(ring.max_range, &s.ranges_m);
+  if (discarded) *discarded = first;
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include <sensor_msgs/BatteryState.h>
 #include <sensor_msgs/LaserScan.h>
 #include <spott_msgs/Fluent.h>
+#include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MonitorEvent.h>
 #include <spott_msgs/PlanTask.h>
 #include <spott_msgs/RangeRing.h>
@@ -26,6 +27,26 @@
 #include "rpl_executive/rpl/navigation_plan.h"
 
 namespace rpl_executive::ros_conversions {
+
+// ---- input checks (issue 21) -------------------------------------------------------------------
+// What the node refuses at its edge, as "field: why" ("" = usable). A refused message changes
+// nothing; the node counts it on /diagnostics (spott_ros::InputRefusals).
+
+/// The localization's estimate must be finite and its certainty a probability.
+std::string StatusProblem(const spott_msgs::LocalizationStatus& status);
+/// The room/door graph as world_server's validation has it (spott_map: finite points within
+/// 10 km, rooms of >= 3 points, doors with two opening ends and a known state).
+std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph);
+/// Places and paths finite within 10 km, zones of >= 3 finite points, a final heading finite.
+std::string PlacesProblem(const spott_msgs::WorldPlaces& places);
+/// A ring's limits finite (0 <= min_range < max_range < 1000 m, field of view in [0, pi]), one
+/// finite mount per range.
+std::string RingProblem(const spott_msgs::RangeRing& ring);
+/// A scan's angles finite (increment not 0), 0 <= range_min < range_max < 1000 m, at most
+/// 100,000 beams.
+std::string LaserScanProblem(const sensor_msgs::LaserScan& scan);
+/// A command to relay: every number finite.
+std::string TwistProblem(const geometry_msgs::Twist& twist);
 
 // ---- RPL ----------------------------------------------------------------------------------------
 
@@ -53,8 +74,10 @@ rpl::office::BuildingMap FromMsg(const spott_msgs::RoomDoorGraph& graph);
 
 /// The belt's geometry from a ring message (mounts in base_link, half the field of view).
 noreils_chatila::SonarRing RingFromMsg(const spott_msgs::RangeRing& ring);
-/// The ranges (NaN for a dropped-out sensor: no echo).
-noreils_chatila::SonarScan ScanFromMsg(const spott_msgs::RangeRing& ring);
+/// The ranges (NaN for a dropped-out sensor: no echo). A reading below 0 or beyond max_range is
+/// impossible and discarded as dropped out (sensor_msgs/Range's rule); `*discarded` (if given)
+/// gets the first such index, or -1.
+noreils_chatila::SonarScan ScanFromMsg(const spott_msgs::RangeRing& ring, int* discarded = nullptr);
 /// A laser scan whose frame sits at `yaw_in_base_rad` about base_link's origin (the scan's own
 /// translation from base_link is not representable in the core's LaserScan and is ignored).
 noreils_chatila::LaserScan FromMsg(const sensor_msgs::LaserScan& scan, double yaw_in_base_rad);

@@ -17,8 +17,8 @@ namespace conv = ros_conversions;
 namespace nc = noreils_chatila;
 
 NcBinding::NcBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters& params,
-                     std::function<void()> changed)
-    : params_(params), changed_(std::move(changed)), nh_(nh), listener_(tf_) {
+                     spott_ros::InputRefusals* refusals, std::function<void()> changed)
+    : params_(params), changed_(std::move(changed)), nh_(nh), refusals_(refusals), listener_(tf_) {
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   sonar_sub_ = nh.subscribe(params.sonar_topic, 5, &NcBinding::OnSonar, this, hints);
   laser_sub_ = nh.subscribe(params.laser_topic, 2, &NcBinding::OnLaser, this, hints);
@@ -155,6 +155,10 @@ std::vector<std::string> NcBinding::TakeEvents() {
 // ---- data --------------------------------------------------------------------------------------
 
 void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
+  if (const std::string problem = conv::RingProblem(ring); !problem.empty()) {
+    refusals_->Refuse(params_.sonar_topic, problem.substr(0, problem.find(':')), problem);
+    return;
+  }
   if (!exec_) {
     if (ring.mounts.empty() || ring.mounts.size() != ring.ranges.size()) {
       not_ready_ = "the sonar ring has no mounts (or not one per range)";
@@ -169,7 +173,14 @@ void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
     return;
   }
   const double now = Now();
-  const nc::SonarScan scan = conv::ScanFromMsg(ring);
+  int discarded = -1;
+  const nc::SonarScan scan = conv::ScanFromMsg(ring, &discarded);
+  if (discarded >= 0) {
+    refusals_->Refuse(params_.sonar_topic, "ranges",
+                      "ranges[" + std::to_string(discarded) +
+                          "] = " + std::to_string(ring.ranges[discarded]) +
+                          " is outside [0, max_range]: discarded as dropped out");
+  }
   UpdatePose(now);
   kit_->OnSonar(scan);
   exec_->OnSonar(scan, now);  // a monitor that fires runs its reflex here ...
@@ -178,6 +189,10 @@ void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
 
 void NcBinding::OnLaser(const sensor_msgs::LaserScan& scan) {
   if (!exec_) return;
+  if (const std::string problem = conv::LaserScanProblem(scan); !problem.empty()) {
+    refusals_->Refuse(params_.laser_topic, problem.substr(0, problem.find(':')), problem);
+    return;
+  }
   if (!laser_yaw_ || laser_frame_ != scan.header.frame_id) {
     try {
       const auto t = tf_.lookupTransform(params_.base_frame, scan.header.frame_id, ros::Time(0));
@@ -196,6 +211,13 @@ void NcBinding::OnLaser(const sensor_msgs::LaserScan& scan) {
 
 void NcBinding::OnBattery(const sensor_msgs::BatteryState& battery) {
   if (!exec_) return;
+  // NaN: not measured (sensor_msgs/BatteryState), nothing to say; beyond [0, 1]: not a charge.
+  if (!std::isnan(battery.percentage) &&
+      !(battery.percentage >= 0.0f && battery.percentage <= 1.0f)) {
+    refusals_->Refuse(params_.battery_topic, "percentage",
+                      std::to_string(battery.percentage) + " is not a fraction in [0, 1]");
+    return;
+  }
   const auto datum = conv::FromMsg(battery);
   if (!datum) return;
   exec_->OnBattery(*datum, Now());
@@ -203,6 +225,10 @@ void NcBinding::OnBattery(const sensor_msgs::BatteryState& battery) {
 }
 
 void NcBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
+  if (const std::string problem = conv::PlacesProblem(places); !problem.empty()) {
+    refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+    return;
+  }
   places_ = places;
   ApplyPlaces();
 }

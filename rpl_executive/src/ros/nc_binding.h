@@ -35,13 +35,15 @@
 #include "rpl_executive/noreils_chatila/executive.h"
 #include "rpl_executive/noreils_chatila/mission_parser.h"
 #include "rpl_executive/noreils_chatila/on_board_modules.h"
+#include "spott_ros/input_refusals.h"
 
 namespace rpl_executive {
 
 class NcBinding {
  public:
+  /// `refusals` counts the input refused at the node's edge (the node's; outlives this).
   NcBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters& params,
-            std::function<void()> changed);
+            spott_ros::InputRefusals* refusals, std::function<void()> changed);
   ~NcBinding();
 
   /// "" when missions can start; else why not (no sonar ring yet, no robot description).
@@ -84,6 +86,7 @@ class NcBinding {
   ros_parameters::NodeParameters params_;
   std::function<void()> changed_;
   ros::NodeHandle nh_;
+  spott_ros::InputRefusals* refusals_;
   std::string not_ready_ = "no sonar ring on the sonar topic yet";
   std::unique_ptr<noreils_chatila::OnBoardModules> kit_;
   std::unique_ptr<noreils_chatila::Executive> exec_;

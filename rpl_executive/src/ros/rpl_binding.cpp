@@ -19,10 +19,11 @@ namespace conv = ros_conversions;
 namespace office = rpl::office;
 
 RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters& params,
-                       std::function<void()> changed)
+                       spott_ros::InputRefusals* refusals, std::function<void()> changed)
     : params_(params),
       changed_(std::move(changed)),
       nh_(nh),
+      refusals_(refusals),
       executive_(params.rpl),
       navigate_(nh, params.navigate_action, false),
       active_(nh, params.active_localize_action, false) {
@@ -173,6 +174,10 @@ void RplBinding::ArmWakeUp() {
 // ---------------------------------------------------------------------------------
 
 void RplBinding::OnStatus(const spott_msgs::LocalizationStatus& status) {
+  if (const std::string problem = conv::StatusProblem(status); !problem.empty()) {
+    refusals_->Refuse("localization_status", problem.substr(0, problem.find(':')), problem);
+    return;
+  }
   const double now = Now();
   have_status_ = true;
   executive_.SetFluent(office::kX, rpl::Value::Number(status.estimate.x), now);
@@ -185,10 +190,23 @@ void RplBinding::OnStatus(const spott_msgs::LocalizationStatus& status) {
 }
 
 void RplBinding::OnGraph(const spott_msgs::RoomDoorGraph& graph) {
+  if (const std::string problem = conv::GraphProblem(graph); !problem.empty()) {
+    refusals_->Refuse("room_door_graph", "rooms/doors", problem);
+    return;
+  }
+  if (graph.rooms.empty() && have_graph_) {
+    refusals_->Refuse("room_door_graph", "rooms", "an empty graph would replace the building's");
+    return;
+  }
+  have_graph_ = !graph.rooms.empty();
   navigation_->SetMap(conv::FromMsg(graph));
 }
 
 void RplBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
+  if (const std::string problem = conv::PlacesProblem(places); !problem.empty()) {
+    refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+    return;
+  }
   places_.clear();
   for (const spott_msgs::NamedPlace& p : places.places) {
     // Plans write names as strings or symbols; symbols are upper-cased by the reader.
@@ -432,6 +450,11 @@ void RplBinding::OnArbiter(const spott_msgs::ArbiterStatus& status) {
 }
 
 void RplBinding::Relay(const geometry_msgs::Twist& cmd, bool wander) {
+  if (const std::string problem = conv::TwistProblem(cmd); !problem.empty()) {
+    refusals_->Refuse(wander ? params_.wander_cmd_topic : params_.planner_cmd_topic,
+                      "linear/angular", problem);
+    return;
+  }
   if (!have_wheels_ || seized_) return;
   const bool drives =
       wander ? localization_->active() : (navigation_->active() || localization_->active());

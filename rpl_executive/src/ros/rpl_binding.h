@@ -35,6 +35,7 @@
 #include "parameters.h"
 #include "rpl_executive/rpl/executive.h"
 #include "rpl_executive/rpl/office_modules.h"
+#include "spott_ros/input_refusals.h"
 
 namespace rpl_executive {
 
@@ -43,8 +44,9 @@ class RplBinding : public rpl::office::NavigateClient,
                    public rpl::office::TravelModeSwitch {
  public:
   /// `changed` is called after every Tick that ran a step or logged an event.
+  /// `refusals` counts the input refused at the node's edge (the node's; outlives this).
   RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters& params,
-             std::function<void()> changed);
+             spott_ros::InputRefusals* refusals, std::function<void()> changed);
   ~RplBinding() override;
 
   /// Reads and checks a plan; "" or every error with file:line:column. Refused while one runs.
@@ -108,6 +110,8 @@ class RplBinding : public rpl::office::NavigateClient,
   ros_parameters::NodeParameters params_;
   std::function<void()> changed_;
   ros::NodeHandle nh_;
+  spott_ros::InputRefusals* refusals_;
+  bool have_graph_ = false;  // a non-empty room/door graph was taken
   rpl::Executive executive_;
   std::shared_ptr<rpl::office::NavigationModule> navigation_;
   std::shared_ptr<rpl::office::ActiveLocalizationModule> localization_;

@@ -186,6 +186,111 @@ TEST(RplExecutiveConversions, LaserAndBattery) {
   EXPECT_FALSE(conv::FromMsg(b));
 }
 
+// Issue 21: what the node refuses at its edge, each with the field named first.
+TEST(RplExecutiveConversions, TheSonarRingIsCheckedAndImpossibleReadingsAreDroppedOut) {
+  EXPECT_EQ(conv::RingProblem(TwoSonars()), "");
+  auto bad = TwoSonars();
+  bad.max_range = NAN;  // every reading would be "no echo": a blind robot
+  EXPECT_EQ(conv::RingProblem(bad).rfind("max_range: ", 0), 0u) << conv::RingProblem(bad);
+  bad = TwoSonars();
+  bad.min_range = 5.0f;
+  EXPECT_EQ(conv::RingProblem(bad).rfind("min_range: ", 0), 0u);
+  bad = TwoSonars();
+  bad.field_of_view = INFINITY;
+  EXPECT_EQ(conv::RingProblem(bad).rfind("field_of_view: ", 0), 0u);
+  bad = TwoSonars();
+  bad.mounts[1].theta = NAN;
+  EXPECT_EQ(conv::RingProblem(bad), "mounts[1]: not finite or beyond 10 m of the base");
+  bad = TwoSonars();
+  bad.ranges.push_back(1.0f);
+  EXPECT_EQ(conv::RingProblem(bad), "mounts: 2 mounts for 3 ranges");
+  // A negative or beyond-max reading would be an echo at an impossible distance: dropped out.
+  auto ring = TwoSonars();
+  ring.ranges = {-1.0f, 9.0f};
+  int discarded = -1;
+  const nc::SonarScan scan = conv::ScanFromMsg(ring, &discarded);
+  EXPECT_EQ(discarded, 0);
+  EXPECT_TRUE(std::isnan(scan.ranges_m[0]));
+  EXPECT_TRUE(std::isnan(scan.ranges_m[1]));
+  conv::ScanFromMsg(TwoSonars(), &discarded);
+  EXPECT_EQ(discarded, -1);
+}
+
+TEST(RplExecutiveConversions, ScansStatusesPlacesAndCommandsAreChecked) {
+  sensor_msgs::LaserScan l;
+  l.angle_min = -1.0f;
+  l.angle_increment = 0.5f;
+  l.range_min = 0.1f;
+  l.range_max = 10.0f;
+  l.ranges = {1.0f, NAN};
+  EXPECT_EQ(conv::LaserScanProblem(l), "");
+  l.angle_increment = 0.0f;
+  EXPECT_EQ(conv::LaserScanProblem(l).rfind("angle_increment: ", 0), 0u);
+  l.angle_increment = 0.5f;
+  l.range_max = -1.0f;
+  EXPECT_EQ(conv::LaserScanProblem(l).rfind("range_max: ", 0), 0u);
+
+  spott_msgs::LocalizationStatus st;
+  st.estimate.x = 1.2;
+  st.estimate.y = 8.25;
+  st.certainty = 0.9;
+  EXPECT_EQ(conv::StatusProblem(st), "");
+  st.estimate.theta = NAN;
+  EXPECT_EQ(conv::StatusProblem(st), "estimate: not finite or beyond 10 km");
+  st.estimate.theta = 0.0;
+  st.certainty = 1.5;
+  EXPECT_EQ(conv::StatusProblem(st).rfind("certainty: ", 0), 0u);
+
+  spott_msgs::WorldPlaces places;
+  spott_msgs::NamedPath path;
+  geometry_msgs::Point a;
+  a.x = 1.0;
+  path.points = {a};
+  places.paths = {path};
+  spott_msgs::Zone zone;
+  zone.polygon.points.resize(3);
+  places.zones = {zone};
+  EXPECT_EQ(conv::PlacesProblem(places), "");
+  places.paths[0].has_final_heading = true;
+  places.paths[0].final_heading = INFINITY;
+  EXPECT_EQ(conv::PlacesProblem(places), "paths[0].final_heading: not finite");
+  places.paths[0].has_final_heading = false;
+  places.zones[0].polygon.points[2].x = 2e4;  // 20 km
+  EXPECT_EQ(conv::PlacesProblem(places), "zones[0].polygon: not finite or beyond 10 km");
+  places.zones[0].polygon.points.pop_back();
+  EXPECT_EQ(conv::PlacesProblem(places), "zones[0].polygon: fewer than 3 points");
+
+  geometry_msgs::Twist t;
+  t.linear.x = 0.3;
+  EXPECT_EQ(conv::TwistProblem(t), "");
+  t.angular.z = NAN;
+  EXPECT_EQ(conv::TwistProblem(t), "linear/angular: not finite");
+}
+
+TEST(RplExecutiveConversions, AGraphWithANonFiniteDoorIsRefusedAsWorldServerWould) {
+  spott_msgs::RoomDoorGraph g;
+  spott_msgs::Room hall;
+  hall.id = "hall";
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {4.0, 0.0}, {4.0, 2.0}}) {
+    geometry_msgs::Point32 p;
+    p.x = x;
+    p.y = y;
+    hall.polygon.points.push_back(p);
+  }
+  g.rooms.push_back(hall);
+  EXPECT_EQ(conv::GraphProblem(g), "");
+  spott_msgs::Door d;
+  d.id = "d1";
+  d.room_a = d.room_b = "hall";
+  d.state = spott_msgs::Door::OPEN;
+  d.centre.x = NAN;
+  d.opening.resize(2);
+  g.doors.push_back(d);
+  EXPECT_EQ(conv::GraphProblem(g).rfind("rooms/doors: door d1: ", 0), 0u) << conv::GraphProblem(g);
+  g.rooms[0].polygon.points.pop_back();
+  EXPECT_EQ(conv::GraphProblem(g).rfind("rooms/doors: room hall: fewer than 3 points", 0), 0u);
+}
+
 TEST(RplExecutiveConversions, PathsAreMissionValuesInCentimetresAndTenthsOfADegree) {
   spott_msgs::NamedPath path;
   for (auto [x, y] : {std::pair{1.8, 5.2}, {3.5, 5.2}, {3.6, 3.2}}) {
