@@ -221,8 +221,8 @@ std::string RingProblem(const spott_msgs::RangeRing& ring) {
     return "max_range: " + std::to_string(ring.max_range) + " is not in (0, 1000) m";
   if (!(ring.min_range >= 0.0f && ring.min_range < ring.max_range))
     return "min_range: " + std::to_string(ring.min_range) + " is not in [0, max_range)";
-  if (!(ring.field_of_view >= 0.0f && ring.field_of_view <= M_PI))
-    return "field_of_view: " + std::to_string(ring.field_of_view) + " is not in [0, pi] rad";
+  if (!(ring.field_of_view > 0.0f && ring.field_of_view < M_PI))  // the belt's half: (0, pi/2)
+    return "field_of_view: " + std::to_string(ring.field_of_view) + " is not in (0, pi) rad";
   if (ring.mounts.size() != ring.ranges.size())
     return "mounts: " + std::to_string(ring.mounts.size()) + " mounts for " +
            std::to_string(ring.ranges.size()) + " ranges";
@@ -347,8 +347,9 @@ nc::Value PathToValue(const spott_msgs::NamedPath& path) {
     std::vector<nc::Value> p{nc::Value::Number(std::round(path.points[i].x * 1000.0) / 10.0),
                              nc::Value::Number(std::round(path.points[i].y * 1000.0) / 10.0)};
     if (i + 1 == path.points.size() && path.has_final_heading) {
-      double deg = path.final_heading * 180.0 / M_PI;
-      deg = std::fmod(deg, 360.0);
+      // Wrapped in radians first: degrees of a huge finite heading overflow to infinity (the
+      // message fuzzer's finding).
+      double deg = std::remainder(path.final_heading, 2.0 * M_PI) * 180.0 / M_PI;
       if (deg < 0) deg += 360.0;
       p.push_back(nc::Value::Number(std::round(deg * 10.0)));
     }

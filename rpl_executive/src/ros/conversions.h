@@ -39,7 +39,7 @@ std::string StatusProblem(const spott_msgs::LocalizationStatus& status);
 std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph);
 /// Places and paths finite within 10 km, zones of >= 3 finite points, a final heading finite.
 std::string PlacesProblem(const spott_msgs::WorldPlaces& places);
-/// A ring's limits finite (0 <= min_range < max_range < 1000 m, field of view in [0, pi]), one
+/// A ring's limits finite (0 <= min_range < max_range < 1000 m, field of view in (0, pi)), one
 /// finite mount per range.
 std::string RingProblem(const spott_msgs::RangeRing& ring);
 /// A scan's angles finite (increment not 0), 0 <= range_min < range_max < 1000 m, at most

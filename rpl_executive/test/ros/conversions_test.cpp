@@ -306,6 +306,20 @@ TEST(RplExecutiveConversions, PathsAreMissionValuesInCentimetresAndTenthsOfADegr
   EXPECT_EQ(conv::PathToValue(path).ToText(), "((180 520) (350 520) (360 320))");
 }
 
+// executive_messages_fuzz's finding: a finite but huge final heading overflowed to infinity in
+// degrees and gave PATH a NaN heading.
+TEST(RplExecutiveConversions, AHugeFiniteFinalHeadingStillGivesATenthOfADegree) {
+  spott_msgs::NamedPath path;
+  path.points.resize(1);
+  path.has_final_heading = true;
+  path.final_heading = 1e308;  // * 180 overflows a double
+  const std::string text = conv::PathToValue(path).ToText();
+  EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+  EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+  path.final_heading = 2 * M_PI + M_PI / 2;  // a turn and a quarter: 90 degrees
+  EXPECT_EQ(conv::PathToValue(path).ToText(), "((0 0 900))");
+}
+
 TEST(RplExecutiveConversions, MonitorEventsByKind) {
   nc::MonitorEvent e;
   e.id = 2;
