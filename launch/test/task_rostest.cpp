@@ -1,8 +1,15 @@
 // The TR+ controller serving /task on the full stack (task.test): a malformed command is
 // rejected with its column and changes nothing; a new task preempts the running one after the
 // robot has stopped; `go in room(lab)` from the hall of cim_office brings the robot into the
-// lab (ground truth) without a bumper contact.
+// lab (ground truth) without a bumper contact. Bad sensor rings and places sent to the
+// controller before it (issue 21) are refused and counted on /diagnostics, and change nothing.
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
+#include <spott_msgs/RangeRing.h>
+#include <spott_msgs/WorldPlaces.h>
+
+#include <cmath>
+#include <map>
 
 #include "task_test_helpers.h"
 
@@ -44,6 +51,52 @@ TEST_F(Task, MalformedTaskIsRejectedWithItsColumn) {
   EXPECT_FALSE(r->success);
   EXPECT_NE(r->message.find("task:1:9:"), std::string::npos) << r->message;
   EXPECT_NE(r->message.find("tabel"), std::string::npos) << r->message;
+  EXPECT_LT((watch_->position() - start).norm(), 0.05) << "the robot moved";
+}
+
+TEST_F(Task, BadRingsAndPlacesAreRefusedAndCounted) {
+  std::mutex mutex;
+  std::map<std::string, std::string> causes;  // "topic field" -> "count: reason"
+  ros::Subscriber diagnostics = nh_->subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 50, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (const auto& st : a->status)
+          if (st.name == "tr_plus_controller: input")
+            for (const auto& kv : st.values) causes[kv.key] = kv.value;
+      });
+  ros::Publisher sonar = nh_->advertise<spott_msgs::RangeRing>("/sonar", 5);
+  ros::Publisher infrared = nh_->advertise<spott_msgs::RangeRing>("/infrared", 5);
+  ros::Publisher places = nh_->advertise<spott_msgs::WorldPlaces>("/world_places", 5);
+  spott_msgs::RangeRing blind;  // mapped, every reading would clear the cells as "no echo"
+  blind.header.frame_id = "base_link";
+  blind.field_of_view = 0.52f;
+  blind.min_range = 0.43f;
+  blind.max_range = std::nanf("");
+  blind.mounts.resize(16);
+  blind.ranges.assign(16, 1.0f);
+  spott_msgs::RangeRing skewed = blind;
+  skewed.max_range = 0.8f;
+  skewed.min_range = 0.05f;
+  skewed.mounts[0].theta = std::nan("");
+  spott_msgs::WorldPlaces bad_places;
+  bad_places.places.resize(1);
+  bad_places.places[0].name = "meeting_room";
+  bad_places.places[0].pose.x = std::nan("");
+  const auto start = watch_->position();
+  auto refused = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return causes.count("sonar max_range") && causes.count("infrared mounts[0]") &&
+           causes.count("world_places places[0].pose");
+  };
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (!refused() && ros::WallTime::now() < until) {
+    blind.header.stamp = skewed.header.stamp = ros::Time::now();
+    sonar.publish(blind);
+    infrared.publish(skewed);
+    places.publish(bad_places);
+    ros::WallDuration(0.2).sleep();
+  }
+  EXPECT_TRUE(refused()) << "tr_plus_controller did not count every bad message on /diagnostics";
   EXPECT_LT((watch_->position() - start).norm(), 0.05) << "the robot moved";
 }
 

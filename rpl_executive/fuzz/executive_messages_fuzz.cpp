@@ -18,6 +18,8 @@
 #include "conversions.h"
 #include "fuzz_values.h"
 #include "rpl_executive/noreils_chatila/on_board_modules.h"
+#include "spott_map/ros/conversions.h"
+#include "spott_ros/range_readings.h"
 
 namespace conv = rpl_executive::ros_conversions;
 namespace nc = rpl_executive::noreils_chatila;
@@ -50,7 +52,7 @@ void Ring(FuzzedDataProvider& in) {
   }
   const int ranges = in.ConsumeBool() ? n : in.ConsumeIntegralInRange<int>(0, 25);
   for (int i = 0; i < ranges; ++i) ring.ranges.push_back(AnyNumber<float>(in, -1.0f, 12.0f));
-  const std::string problem = conv::RingProblem(ring);
+  const std::string problem = spott_ros::RangeRingProblem(ring);
   if (!problem.empty()) return CheckRefusal(problem);
   const nc::SonarRing belt = conv::RingFromMsg(ring);
   Check(belt.mounts.size() == ring.ranges.size(), "not one mount per reading");
@@ -197,7 +199,7 @@ void Places(FuzzedDataProvider& in) {
     path.final_heading = AnyNumber<double>(in, -7.0, 7.0);
     places.paths.push_back(path);
   }
-  const std::string problem = conv::PlacesProblem(places);
+  const std::string problem = spott_map::ros_conversions::PlacesProblem(places);
   if (!problem.empty()) return CheckRefusal(problem);
   for (const auto& z : places.zones) {
     const auto polygon = conv::PolygonFromMsg(z.polygon);

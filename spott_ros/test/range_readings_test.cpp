@@ -1,4 +1,4 @@
-// The one rule for impossible range readings (spott_ros/range_readings.h).
+// The rules for range rings and their readings (spott_ros/range_readings.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,6 +27,39 @@ TEST(RangeReadings, NegativeAndBeyondMaxRangeBecomeDroppedOutTheRestStays) {
   std::vector<double> fine{0.3, 2.0, nan};
   EXPECT_EQ(DiscardImpossibleRanges(6.5, &fine), -1);
   EXPECT_EQ(fine[1], 2.0);
+}
+
+spott_msgs::RangeRing TwoSonars() {
+  spott_msgs::RangeRing r;
+  r.field_of_view = 0.5f;
+  r.min_range = 0.1f;
+  r.max_range = 4.0f;
+  r.mounts.resize(2);
+  r.mounts[1].y = 0.4;
+  r.mounts[1].theta = M_PI / 2;
+  r.ranges = {0.5f, NAN};
+  return r;
+}
+
+TEST(RangeReadings, ARingIsRefusedByTheFieldThatMakesItUnusable) {
+  EXPECT_EQ(RangeRingProblem(TwoSonars()), "");
+  auto bad = TwoSonars();
+  bad.max_range = NAN;  // every reading would be "no echo": a blind robot
+  EXPECT_EQ(RangeRingProblem(bad).rfind("max_range: ", 0), 0u) << RangeRingProblem(bad);
+  bad = TwoSonars();
+  bad.min_range = 5.0f;
+  EXPECT_EQ(RangeRingProblem(bad).rfind("min_range: ", 0), 0u);
+  bad = TwoSonars();
+  bad.field_of_view = INFINITY;
+  EXPECT_EQ(RangeRingProblem(bad).rfind("field_of_view: ", 0), 0u);
+  bad.field_of_view = 0.0f;
+  EXPECT_EQ(RangeRingProblem(bad).rfind("field_of_view: ", 0), 0u);
+  bad = TwoSonars();
+  bad.mounts[1].theta = NAN;
+  EXPECT_EQ(RangeRingProblem(bad), "mounts[1]: not finite or beyond 10 m of the base");
+  bad = TwoSonars();
+  bad.ranges.push_back(1.0f);
+  EXPECT_EQ(RangeRingProblem(bad), "mounts: 2 mounts for 3 ranges");
 }
 
 }  // namespace

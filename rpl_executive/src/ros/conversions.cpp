@@ -173,9 +173,6 @@ constexpr double kFar = 1e4;  // m: a map coordinate beyond 10 km is absurd (spo
 
 bool Plausible(double v) { return std::isfinite(v) && std::abs(v) <= kFar; }
 bool Plausible(double x, double y) { return Plausible(x) && Plausible(y); }
-std::string Index(const char* field, std::size_t i) {
-  return std::string(field) + "[" + std::to_string(i) + "]";
-}
 
 }  // namespace
 
@@ -190,47 +187,6 @@ std::string StatusProblem(const spott_msgs::LocalizationStatus& status) {
 std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph) {
   std::string error;
   if (!spott_map::ros_conversions::FromMsg(graph, &error)) return "rooms/doors: " + error;
-  return "";
-}
-
-std::string PlacesProblem(const spott_msgs::WorldPlaces& places) {
-  for (std::size_t i = 0; i < places.places.size(); ++i) {
-    const auto& p = places.places[i].pose;
-    if (!Plausible(p.x, p.y) || !std::isfinite(p.theta))
-      return Index("places", i) + ".pose: not finite or beyond 10 km";
-  }
-  for (std::size_t i = 0; i < places.zones.size(); ++i) {
-    const auto& points = places.zones[i].polygon.points;
-    if (points.size() < 3) return Index("zones", i) + ".polygon: fewer than 3 points";
-    for (const auto& q : points)
-      if (!Plausible(q.x, q.y)) return Index("zones", i) + ".polygon: not finite or beyond 10 km";
-  }
-  for (std::size_t i = 0; i < places.paths.size(); ++i) {
-    const auto& path = places.paths[i];
-    if (path.points.empty()) return Index("paths", i) + ".points: empty";
-    for (const auto& q : path.points)
-      if (!Plausible(q.x, q.y)) return Index("paths", i) + ".points: not finite or beyond 10 km";
-    if (path.has_final_heading && !std::isfinite(path.final_heading))
-      return Index("paths", i) + ".final_heading: not finite";
-  }
-  return "";
-}
-
-std::string RingProblem(const spott_msgs::RangeRing& ring) {
-  if (!(std::isfinite(ring.max_range) && ring.max_range > 0.0f && ring.max_range < 1000.0f))
-    return "max_range: " + std::to_string(ring.max_range) + " is not in (0, 1000) m";
-  if (!(ring.min_range >= 0.0f && ring.min_range < ring.max_range))
-    return "min_range: " + std::to_string(ring.min_range) + " is not in [0, max_range)";
-  if (!(ring.field_of_view > 0.0f && ring.field_of_view < M_PI))  // the belt's half: (0, pi/2)
-    return "field_of_view: " + std::to_string(ring.field_of_view) + " is not in (0, pi) rad";
-  if (ring.mounts.size() != ring.ranges.size())
-    return "mounts: " + std::to_string(ring.mounts.size()) + " mounts for " +
-           std::to_string(ring.ranges.size()) + " ranges";
-  for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
-    const auto& m = ring.mounts[i];
-    if (!(std::isfinite(m.theta) && std::abs(m.x) < 10.0 && std::abs(m.y) < 10.0))
-      return Index("mounts", i) + ": not finite or beyond 10 m of the base";
-  }
   return "";
 }
 

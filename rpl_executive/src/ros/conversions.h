@@ -37,11 +37,7 @@ std::string StatusProblem(const spott_msgs::LocalizationStatus& status);
 /// The room/door graph as world_server's validation has it (spott_map: finite points within
 /// 10 km, rooms of >= 3 points, doors with two opening ends and a known state).
 std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph);
-/// Places and paths finite within 10 km, zones of >= 3 finite points, a final heading finite.
-std::string PlacesProblem(const spott_msgs::WorldPlaces& places);
-/// A ring's limits finite (0 <= min_range < max_range < 1000 m, field of view in (0, pi)), one
-/// finite mount per range.
-std::string RingProblem(const spott_msgs::RangeRing& ring);
+// Rings: spott_ros::RangeRingProblem; places: spott_map::ros_conversions::PlacesProblem.
 /// A scan's angles finite (increment not 0), 0 <= range_min < range_max < 1000 m, at most
 /// 100,000 beams.
 std::string LaserScanProblem(const sensor_msgs::LaserScan& scan);

@@ -8,7 +8,9 @@
 #include <cmath>
 
 #include "conversions.h"
+#include "spott_map/ros/conversions.h"
 #include "spott_ros/pose_conversions.h"
+#include "spott_ros/range_readings.h"
 #include "spott_ros/robot_geometry.h"
 
 namespace rpl_executive {
@@ -155,7 +157,7 @@ std::vector<std::string> NcBinding::TakeEvents() {
 // ---- data --------------------------------------------------------------------------------------
 
 void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
-  if (const std::string problem = conv::RingProblem(ring); !problem.empty()) {
+  if (const std::string problem = spott_ros::RangeRingProblem(ring); !problem.empty()) {
     refusals_->Refuse(params_.sonar_topic, problem.substr(0, problem.find(':')), problem);
     return;
   }
@@ -225,7 +227,8 @@ void NcBinding::OnBattery(const sensor_msgs::BatteryState& battery) {
 }
 
 void NcBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
-  if (const std::string problem = conv::PlacesProblem(places); !problem.empty()) {
+  if (const std::string problem = spott_map::ros_conversions::PlacesProblem(places);
+      !problem.empty()) {
     refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
     return;
   }

@@ -11,6 +11,7 @@
 
 #include "conversions.h"
 #include "rpl_executive/rpl/office_robot.h"
+#include "spott_map/ros/conversions.h"
 #include "spott_ros/pose_conversions.h"
 
 namespace rpl_executive {
@@ -203,7 +204,8 @@ void RplBinding::OnGraph(const spott_msgs::RoomDoorGraph& graph) {
 }
 
 void RplBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
-  if (const std::string problem = conv::PlacesProblem(places); !problem.empty()) {
+  if (const std::string problem = spott_map::ros_conversions::PlacesProblem(places);
+      !problem.empty()) {
     refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
     return;
   }

@@ -248,6 +248,37 @@ std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& m, std::st
   }
 }
 
+namespace {
+std::string Indexed(const char* field, std::size_t i) {
+  return std::string(field) + "[" + std::to_string(i) + "]";
+}
+}  // namespace
+
+std::string PlacesProblem(const spott_msgs::WorldPlaces& places) {
+  for (std::size_t i = 0; i < places.places.size(); ++i) {
+    const auto& p = places.places[i].pose;
+    if (!Plausible(Vec2(p.x, p.y)) || !std::isfinite(p.theta))
+      return Indexed("places", i) + ".pose: not finite or beyond 10 km";
+  }
+  for (std::size_t i = 0; i < places.zones.size(); ++i) {
+    const auto& points = places.zones[i].polygon.points;
+    if (points.size() < 3) return Indexed("zones", i) + ".polygon: fewer than 3 points";
+    for (const auto& q : points)
+      if (!Plausible(Vec2(q.x, q.y)))
+        return Indexed("zones", i) + ".polygon: not finite or beyond 10 km";
+  }
+  for (std::size_t i = 0; i < places.paths.size(); ++i) {
+    const auto& path = places.paths[i];
+    if (path.points.empty()) return Indexed("paths", i) + ".points: empty";
+    for (const auto& q : path.points)
+      if (!Plausible(Vec2(q.x, q.y)))
+        return Indexed("paths", i) + ".points: not finite or beyond 10 km";
+    if (path.has_final_heading && !std::isfinite(path.final_heading))
+      return Indexed("paths", i) + ".final_heading: not finite";
+  }
+  return "";
+}
+
 spott_msgs::NamedPlace ToMsg(const Place& place) {
   spott_msgs::NamedPlace m;
   m.name = place.name;

@@ -104,6 +104,33 @@ TEST(Conversions, GraphRoundTripKeepsRoomsDoorsAndStates) {
   EXPECT_NE(error.find("attic"), std::string::npos);
 }
 
+TEST(Conversions, PlacesZonesAndPathsThatAreNotFiniteOrTooFewAreRefusedByField) {
+  spott_msgs::WorldPlaces places;
+  spott_msgs::NamedPath path;
+  path.points.resize(1);
+  path.points[0].x = 1.0;
+  places.paths = {path};
+  spott_msgs::Zone zone;
+  zone.polygon.points.resize(3);
+  places.zones = {zone};
+  places.places.resize(1);
+  EXPECT_EQ(conv::PlacesProblem(places), "");
+  places.places[0].pose.theta = NAN;
+  EXPECT_EQ(conv::PlacesProblem(places), "places[0].pose: not finite or beyond 10 km");
+  places.places[0].pose.theta = 0.0;
+  places.paths[0].has_final_heading = true;
+  places.paths[0].final_heading = INFINITY;
+  EXPECT_EQ(conv::PlacesProblem(places), "paths[0].final_heading: not finite");
+  places.paths[0].has_final_heading = false;
+  places.paths[0].points.clear();
+  EXPECT_EQ(conv::PlacesProblem(places), "paths[0].points: empty");
+  places.paths[0].points.resize(1);
+  places.zones[0].polygon.points[2].x = 2e4;  // 20 km
+  EXPECT_EQ(conv::PlacesProblem(places), "zones[0].polygon: not finite or beyond 10 km");
+  places.zones[0].polygon.points.pop_back();
+  EXPECT_EQ(conv::PlacesProblem(places), "zones[0].polygon: fewer than 3 points");
+}
+
 TEST(Conversions, OccupancyGridRoundTrip) {
   OccupancyRaster r(Vec2(-1, 2), 4, 3, 0.5);
   r.Mark(1, 2, Cell::kObstacle);

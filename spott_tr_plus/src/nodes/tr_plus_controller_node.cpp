@@ -44,11 +44,13 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "spott_map/ros/conversions.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
+#include "spott_ros/range_readings.h"
 #include "spott_ros/robot_geometry.h"
 #include "spott_ros/robot_pose.h"
 #include "spott_tr_plus/checker.h"
@@ -371,6 +373,10 @@ class ControllerNode : public ControllerIo {
   }
 
   void OnPlaces(const spott_msgs::WorldPlaces& msg) {
+    if (const std::string problem = mconv::PlacesProblem(msg); !problem.empty()) {
+      refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+      return;
+    }
     std::vector<spott_map::Place> places;
     for (const auto& p : msg.places) {
       spott_map::Place place;
@@ -405,14 +411,35 @@ class ControllerNode : public ControllerIo {
     }
   }
 
+  // A ring the mapper and the reflexes can use (issue 21: a ring without a usable max range
+  // would map every reading as "no echo" and clear the sensed obstacles); impossible readings
+  // dropped out. nullopt when refused.
+  std::optional<RangeRing> CheckedRing(const std::string& topic, const spott_msgs::RangeRing& msg) {
+    if (const std::string problem = spott_ros::RangeRingProblem(msg); !problem.empty()) {
+      refusals_->Refuse(topic, problem.substr(0, problem.find(':')), problem);
+      return std::nullopt;
+    }
+    RangeRing ring = ToRing(msg);
+    if (const int i = spott_ros::DiscardImpossibleRanges(msg.max_range, &ring.ranges); i >= 0) {
+      refusals_->Refuse(topic, "ranges",
+                        "ranges[" + std::to_string(i) + "] = " + std::to_string(msg.ranges[i]) +
+                            " is outside [0, max_range]: discarded as dropped out");
+    }
+    return ring;
+  }
+
   void OnSonar(const spott_msgs::RangeRing& msg) {
+    const auto ring = CheckedRing("sonar", msg);
+    if (!ring) return;
     UpdatePose();
-    core_->Sonar(ToRing(msg), Now());
+    core_->Sonar(*ring, Now());
     AfterEvent();
   }
 
   void OnInfrared(const spott_msgs::RangeRing& msg) {
-    core_->Infrared(ToRing(msg), Now());
+    const auto ring = CheckedRing("infrared", msg);
+    if (!ring) return;
+    core_->Infrared(*ring, Now());
     AfterEvent();
   }
 

@@ -67,6 +67,10 @@ spott_msgs::RoomDoorGraph ToMsg(const RoomDoorGraph& graph, const std::string& w
 /// fewer than three points, or a value is not finite or outside the size rule.
 std::optional<RoomDoorGraph> FromMsg(const spott_msgs::RoomDoorGraph& msg, std::string* error);
 
+/// Why world_server's places cannot be taken, as "field: why", or "": a pose, a zone's point or
+/// a path's point that is not finite or lies beyond 10 km, a zone of fewer than 3 points, an
+/// empty path, a final heading that is not finite.
+std::string PlacesProblem(const spott_msgs::WorldPlaces& places);
 spott_msgs::NamedPlace ToMsg(const Place& place);
 spott_msgs::Zone ToMsg(const Zone& zone);
 spott_msgs::NamedPath ToMsg(const NamedPath& path);
