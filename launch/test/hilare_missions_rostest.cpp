@@ -24,7 +24,6 @@
 //                        /diagnostics); Example 2's zone mission then runs as before.
 //
 // ~report_file ("" = none): one line per case for rpl_executive/scripts/run_hilare_missions.sh.
-#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -43,6 +42,7 @@
 #include <sstream>
 
 #include "executive_test_support.h"
+#include "node_refusals.h"
 #include "spott_ros/pose_conversions.h"
 
 namespace {
@@ -461,19 +461,7 @@ TEST_F(HilareMissions, Example2AvoidanceFinishingBeforeTheZoneResumesTheOrderAnd
 }
 
 TEST_F(HilareMissions, BadMessagesAreRefusedAndTheNextMissionRunsAsBefore) {
-  std::mutex mutex;
-  std::map<std::string, std::string> causes;  // "topic field" -> "count: reason"
-  ros::Subscriber diagnostics = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
-      "/diagnostics", 50, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
-        std::lock_guard<std::mutex> lock(mutex);
-        for (const auto& st : a->status)
-          if (st.name == "rpl_executive: input")
-            for (const auto& kv : st.values) causes[kv.key] = kv.value;
-      });
-  auto refused = [&](const std::string& cause) {
-    std::lock_guard<std::mutex> lock(mutex);
-    return causes.count(cause) > 0;
-  };
+  spott_launch::testing::NodeRefusals refusals(nh_, "rpl_executive");
   ros::Publisher sonar = nh_.advertise<spott_msgs::RangeRing>("/sonar", 5);
   ros::Publisher status = nh_.advertise<spott_msgs::LocalizationStatus>("/localization_status", 5);
   ros::Publisher places = nh_.advertise<spott_msgs::WorldPlaces>("/world_places", 5);
@@ -510,15 +498,13 @@ TEST_F(HilareMissions, BadMessagesAreRefusedAndTheNextMissionRunsAsBefore) {
         sonar.publish(skewed);
         status.publish(lost_in_nan);
         places.publish(bad_places);
-        return refused("sonar max_range") && refused("sonar mounts[3]") &&
-               refused("localization_status estimate") && refused("world_places paths[0].points");
+        return refusals.Has("sonar max_range") && refusals.Has("sonar mounts[3]") &&
+               refusals.Has("localization_status estimate") &&
+               refusals.Has("world_places paths[0].points");
       },
       30.0))
       << "rpl_executive did not count every bad message on /diagnostics";
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    EXPECT_NE(causes["sonar max_range"].find("is not in (0, 1000) m"), std::string::npos);
-  }
+  EXPECT_NE(refusals.Value("sonar max_range").find("is not in (0, 1000) m"), std::string::npos);
   // Nothing changed: the zone mission goes as in Example2ZoneEnteredFirst...
   Place(0.8, 5.2, 0.0);
   const MissionRun r = RunMission("example2_zone_surveillance", 150.0);

@@ -3,14 +3,13 @@
 // robot has stopped; `go in room(lab)` from the hall of cim_office brings the robot into the
 // lab (ground truth) without a bumper contact. Bad sensor rings and places sent to the
 // controller before it (issue 21) are refused and counted on /diagnostics, and change nothing.
-#include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
 #include <spott_msgs/RangeRing.h>
 #include <spott_msgs/WorldPlaces.h>
 
 #include <cmath>
-#include <map>
 
+#include "node_refusals.h"
 #include "task_test_helpers.h"
 
 namespace {
@@ -55,15 +54,7 @@ TEST_F(Task, MalformedTaskIsRejectedWithItsColumn) {
 }
 
 TEST_F(Task, BadRingsAndPlacesAreRefusedAndCounted) {
-  std::mutex mutex;
-  std::map<std::string, std::string> causes;  // "topic field" -> "count: reason"
-  ros::Subscriber diagnostics = nh_->subscribe<diagnostic_msgs::DiagnosticArray>(
-      "/diagnostics", 50, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& a) {
-        std::lock_guard<std::mutex> lock(mutex);
-        for (const auto& st : a->status)
-          if (st.name == "tr_plus_controller: input")
-            for (const auto& kv : st.values) causes[kv.key] = kv.value;
-      });
+  spott_launch::testing::NodeRefusals refusals(*nh_, "tr_plus_controller");
   ros::Publisher sonar = nh_->advertise<spott_msgs::RangeRing>("/sonar", 5);
   ros::Publisher infrared = nh_->advertise<spott_msgs::RangeRing>("/infrared", 5);
   ros::Publisher places = nh_->advertise<spott_msgs::WorldPlaces>("/world_places", 5);
@@ -84,9 +75,8 @@ TEST_F(Task, BadRingsAndPlacesAreRefusedAndCounted) {
   bad_places.places[0].pose.x = std::nan("");
   const auto start = watch_->position();
   auto refused = [&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    return causes.count("sonar max_range") && causes.count("infrared mounts[0]") &&
-           causes.count("world_places places[0].pose");
+    return refusals.Has("sonar max_range") && refusals.Has("infrared mounts[0]") &&
+           refusals.Has("world_places places[0].pose");
   };
   const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(30.0);
   while (!refused() && ros::WallTime::now() < until) {
