@@ -382,7 +382,9 @@ float ScaleLayer(float* data, const std::uint8_t* flags, const std::uint8_t* sta
 namespace markov_localization {
 namespace kernels {
 
-#if defined(MARKOV_X86_KERNELS) && defined(__has_attribute)
+// Not under ThreadSanitizer (tools/tsan): the loader runs the clones' ifunc resolvers before
+// TSan's runtime is up, and instrumented they crash; a TSan build takes the default versions.
+#if defined(MARKOV_X86_KERNELS) && defined(__has_attribute) && !defined(__SANITIZE_THREAD__)
 #if __has_attribute(target_clones)
 #define MARKOV_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
