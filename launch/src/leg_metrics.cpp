@@ -211,6 +211,13 @@ std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
   }
   if (spec.monitors && fired != *spec.monitors)
     return "the monitors fired " + listed(fired) + ", expected " + listed(*spec.monitors);
+  // monitors_include: a subsequence of what fired.
+  std::size_t next = 0;
+  for (const auto& c : fired)
+    if (next < spec.monitors_include.size() && c == spec.monitors_include[next]) ++next;
+  if (next < spec.monitors_include.size())
+    return "the monitors fired " + listed(fired) + ", expected " + listed(spec.monitors_include) +
+           " among them in this order";
   if (!spec.message_contains.empty() && message.find(spec.message_contains) == std::string::npos)
     return "the executive said '" + message + "', expected it to say '" + spec.message_contains +
            "'";

@@ -81,9 +81,9 @@ std::vector<MissionSpec> Missions(YamlReader& in, const YAML::Node& map) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const YAML::Node item = list[i];
     const std::string what = "missions[" + std::to_string(i) + "]";
-    if (!in.ExpectMap(
-            item, what,
-            {"name", "language", "bindings", "goal", "outcome", "monitors", "message_contains"})) {
+    if (!in.ExpectMap(item, what,
+                      {"name", "language", "bindings", "goal", "outcome", "monitors",
+                       "monitors_include", "message_contains"})) {
       continue;
     }
     MissionSpec m;
@@ -122,6 +122,13 @@ std::vector<MissionSpec> Missions(YamlReader& in, const YAML::Node& map) {
     } else if (item["monitors"]) {
       m.monitors = std::vector<std::string>{};  // `monitors: []` or `monitors:`: none may fire
     }
+    for (const Located& c : Strings(in, item, "monitors_include"))
+      m.monitors_include.push_back(c.text);
+    if (m.monitors && item["monitors_include"])
+      in.Error(item["monitors_include"],
+               what +
+                   ".monitors_include: give monitors (exactly these) or monitors_include "
+                   "(these in order, others between), not both");
     m.message_contains = in.String(item, "message_contains", what, false).value_or("");
     out.push_back(std::move(m));
   }

@@ -180,6 +180,16 @@ TEST(LegMetrics, AMissionIsJudgedOnItsOutcomeMonitorsMessageAndGoal) {
             std::string::npos);
   spec.monitors.reset();  // not judged: any
   EXPECT_EQ(MissionMismatch(spec, "failed", "MNTR STATIC", {}), "");
+  // monitors_include: these in order, a static monitor's re-firings between them allowed.
+  const std::string s = "(S_us-threshold sensors-list)", in = "(S_zone IN ZONE109)",
+                    out = "(S_zone OUT ZONE109)";
+  MissionSpec among;
+  among.monitors_include = {s, in, out};
+  EXPECT_EQ(MissionMismatch(among, "completed", "", {s, s, in, s, out, s}), "");
+  EXPECT_NE(MissionMismatch(among, "completed", "", {s, out, in}).find("among them in this order"),
+            std::string::npos);
+  EXPECT_NE(MissionMismatch(among, "completed", "", {s, in}).find("among them in this order"),
+            std::string::npos);
   NavigationLeg leg;
   leg.has_target = true;
   leg.final_error_m = 0.6;

@@ -206,11 +206,16 @@ TEST(Scenario, MissionsAreReadWithWhatTheRunMustShow) {
       "    monitors: [\"(S_zone IN ZONE109)\", \"(S_us-threshold sensors-list)\"]\n"
       "    message_contains: FAIL\n"
       "    goal: [2.5, 6]\n"
-      "  - {name: example1_wall_following, language: noreils_chatila, monitors: []}\n",
+      "  - {name: example1_wall_following, language: noreils_chatila, monitors: []}\n"
+      "  - {name: example2_zone_surveillance, language: noreils_chatila,\n"
+      "     monitors_include: [\"(S_zone IN ZONE109)\", \"(S_zone OUT ZONE109)\"]}\n",
       "s.yaml");
   ASSERT_TRUE(r.ok()) << Errors(r);
   const auto& m = r.scenario->missions;
-  ASSERT_EQ(m.size(), 3u);
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_FALSE(m[3].monitors.has_value());
+  EXPECT_EQ(m[3].monitors_include,
+            (std::vector<std::string>{"(S_zone IN ZONE109)", "(S_zone OUT ZONE109)"}));
   EXPECT_EQ(m[0].name.text, "office_delivery");
   EXPECT_EQ(m[0].language, "rpl");
   EXPECT_EQ(m[0].bindings, std::vector<std::string>{"DEST (19.6 6.0)"});
@@ -233,7 +238,7 @@ TEST(Scenario, MissionsAreReadWithWhatTheRunMustShow) {
   const YAML::Node params = YAML::Load(DemoParametersYaml(*r.scenario, "/x/s.yaml"));
   EXPECT_EQ(params["missions_file"].as<std::string>(), "/x/s.yaml");
   EXPECT_FALSE(params["goals"]);
-  EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 3 * 240.0);
+  EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 4 * 240.0);
   // Places are the world's; names are rpl_executive's shipped plans and missions.
   EXPECT_TRUE(CheckAgainstWorld(*r.scenario, World("hilare_room")).empty());
   EXPECT_TRUE(CheckMissionNames(*r.scenario, RPL_EXECUTIVE_DIR).empty());
@@ -246,9 +251,13 @@ TEST(Scenario, BadMissionsAreNamedAtTheirLineAndColumn) {
       "  - {name: example1_wall_following, language: nc}\n"
       "  - {name: example1_wall_following, language: noreils_chatila, bindings: [\"X 1\"]}\n"
       "  - {name: office_delivery, outcome: reached}\n"
-      "  - {name: \"office delivery\"}\n",
+      "  - {name: \"office delivery\"}\n"
+      "  - {name: office_delivery, monitors: [], monitors_include: [\"(X)\"]}\n",
       "s.yaml");
   ASSERT_FALSE(r.ok());
+  EXPECT_NE(Errors(r).find("s.yaml:8:"), std::string::npos) << Errors(r);
+  EXPECT_NE(Errors(r).find("give monitors (exactly these) or monitors_include"), std::string::npos)
+      << Errors(r);
   const std::string e = Errors(r);
   EXPECT_NE(e.find("s.yaml:3:"), std::string::npos) << e;
   EXPECT_NE(e.find("langauge"), std::string::npos) << e;

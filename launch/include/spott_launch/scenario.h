@@ -34,6 +34,9 @@ struct MissionSpec {
   std::string outcome = "completed";          ///< The executive's outcome expected.
   /// The surveillance monitors expected to fire, their conditions in order; none = not judged.
   std::optional<std::vector<std::string>> monitors;
+  /// Monitors that must fire in this order, others allowed before, between and after them (a
+  /// static monitor that re-fires while the robot passes its obstacle); empty = not judged.
+  std::vector<std::string> monitors_include;
   /// A text the executive's result message must contain ("" = not judged).
   std::string message_contains;
 };
