@@ -471,13 +471,7 @@ TEST_F(HilareMissions, BadMessagesAreRefusedAndTheNextMissionRunsAsBefore) {
                places.getNumSubscribers() > 0;
       },
       20.0));
-  spott_msgs::RangeRing blind;  // every reading would be "no echo"
-  blind.header.frame_id = "base_link";
-  blind.field_of_view = 0.44f;
-  blind.min_range = 0.15f;
-  blind.max_range = std::nanf("");
-  blind.mounts.resize(16);
-  blind.ranges.assign(16, 1.0f);
+  spott_msgs::RangeRing blind = spott_launch::testing::BlindRing(0.44f, 0.15f, 16);
   spott_msgs::RangeRing skewed = blind;  // a mount that is not finite
   skewed.max_range = 6.5f;
   skewed.mounts[3].theta = std::nan("");

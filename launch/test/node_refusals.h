@@ -4,7 +4,9 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/ros.h>
+#include <spott_msgs/RangeRing.h>
 
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <string>
@@ -40,5 +42,18 @@ class NodeRefusals {
   std::map<std::string, std::string> causes_;
   ros::Subscriber sub_;
 };
+
+/// A ring of `n` transducers in base_link reading 1 m each, but with a max_range that is not a
+/// number: every node must refuse it (mapped, each reading would be "no echo").
+inline spott_msgs::RangeRing BlindRing(float field_of_view, float min_range, int n) {
+  spott_msgs::RangeRing ring;
+  ring.header.frame_id = "base_link";
+  ring.field_of_view = field_of_view;
+  ring.min_range = min_range;
+  ring.max_range = std::nanf("");
+  ring.mounts.resize(n);
+  ring.ranges.assign(n, 1.0f);
+  return ring;
+}
 
 }  // namespace spott_launch::testing

@@ -58,13 +58,7 @@ TEST_F(Task, BadRingsAndPlacesAreRefusedAndCounted) {
   ros::Publisher sonar = nh_->advertise<spott_msgs::RangeRing>("/sonar", 5);
   ros::Publisher infrared = nh_->advertise<spott_msgs::RangeRing>("/infrared", 5);
   ros::Publisher places = nh_->advertise<spott_msgs::WorldPlaces>("/world_places", 5);
-  spott_msgs::RangeRing blind;  // mapped, every reading would clear the cells as "no echo"
-  blind.header.frame_id = "base_link";
-  blind.field_of_view = 0.52f;
-  blind.min_range = 0.43f;
-  blind.max_range = std::nanf("");
-  blind.mounts.resize(16);
-  blind.ranges.assign(16, 1.0f);
+  spott_msgs::RangeRing blind = spott_launch::testing::BlindRing(0.52f, 0.43f, 16);
   spott_msgs::RangeRing skewed = blind;
   skewed.max_range = 0.8f;
   skewed.min_range = 0.05f;
