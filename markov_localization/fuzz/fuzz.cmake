@@ -14,7 +14,7 @@ spott_add_parameter_fuzzer(markov_localization_parameters_fuzz
 # OccupancyGrid): needs a built workspace for spott_msgs' headers.
 spott_ros_fuzzcore(markov_localization_ros HEADER spott_msgs/RangeProfile.h
                    SOURCES "${SPOTT_ROOT}/markov_localization/src/ros/conversions.cpp"
-                   CORES markov_localization spott_map_ros)
+                   CORES markov_localization spott_map_ros spott_ros_messages)
 if(TARGET markov_localization_ros_fuzzcore)
   spott_add_fuzzer(sensor_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/sensor_messages_fuzz.cpp"
                    CORES markov_localization_ros)

@@ -1,8 +1,8 @@
 // markov_localization's inbound message conversions on messages built field by field from the
 // fuzzer's bytes (any sizes, NaN, infinities, huge and negative numbers), as the node takes
-// them: a LaserScan through LaserScanProblem, then LaserBeams / LaserBeamAngles / LaserRanges;
-// a RangeProfile through ProfileReadings; an OccupancyGrid through FromOccupancyGrid and
-// MapModel::FromOccupancy. Whatever is accepted must be usable by the sensor model: beam
+// them: a LaserScan through spott_ros::LaserScanProblem, then LaserBeams / LaserBeamAngles /
+// LaserRanges; a RangeProfile through ProfileReadings; an OccupancyGrid through FromOccupancyGrid
+// and MapModel::FromOccupancy. Whatever is accepted must be usable by the sensor model: beam
 // indices inside the scan, finite beam angles, readings that are NaN (left out), +infinity (no
 // echo) or a finite distance in range. A refusal must say why.
 #include <fuzzer/FuzzedDataProvider.h>
@@ -18,6 +18,7 @@
 #include "fuzz_values.h"
 #include "markov_localization/map_model.h"
 #include "markov_localization/ros/conversions.h"
+#include "spott_ros/range_readings.h"
 
 namespace conv = markov_localization::ros_conversions;
 
@@ -35,7 +36,7 @@ void Scan(FuzzedDataProvider& in) {
   const int n = in.ConsumeIntegralInRange<int>(0, 400);
   for (int i = 0; i < n; ++i) scan.ranges.push_back(AnyNumber<float>(in, -1.0f, 120.0f));
   const int max_beams = in.ConsumeIntegralInRange<int>(-2, 500);
-  const std::string problem = conv::LaserScanProblem(scan);
+  const std::string problem = spott_ros::LaserScanProblem(scan);
   if (!problem.empty()) {
     Check(problem.find(": ") != std::string::npos, "a refusal without 'field: why'");
     return;

@@ -90,7 +90,7 @@ void Laser(FuzzedDataProvider& in) {
   scan.range_max = AnyNumber<float>(in, -1.0f, 40.0f);
   const int n = in.ConsumeIntegralInRange<int>(0, 400);
   for (int i = 0; i < n; ++i) scan.ranges.push_back(AnyNumber<float>(in, -1.0f, 50.0f));
-  const std::string problem = conv::LaserScanProblem(scan);
+  const std::string problem = spott_ros::LaserScanProblem(scan);
   if (!problem.empty()) return CheckRefusal(problem);
   const double yaw = in.ConsumeFloatingPointInRange<double>(-M_PI, M_PI);  // from tf
   const nc::LaserScan s = conv::FromMsg(scan, yaw);

@@ -15,9 +15,8 @@ spott_add_parameter_fuzzer(rpl_executive_parameters_fuzz
 spott_ros_fuzzcore(rpl_executive_ros HEADER spott_msgs/MissionAction.h
                    SOURCES "${SPOTT_ROOT}/rpl_executive/src/ros/conversions.cpp"
                            "${SPOTT_ROOT}/spott_ros/src/pose_conversions.cpp"
-                           "${SPOTT_ROOT}/spott_ros/src/range_readings.cpp"
                    INCLUDES "${SPOTT_ROOT}/spott_ros/include" "${SPOTT_ROOT}/rpl_executive/src/ros"
-                   CORES rpl_executive spott_map_ros)
+                   CORES rpl_executive spott_map_ros spott_ros_messages)
 if(TARGET rpl_executive_ros_fuzzcore)
   spott_add_fuzzer(executive_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/executive_messages_fuzz.cpp"
                    CORES rpl_executive_ros)

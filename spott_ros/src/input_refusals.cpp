@@ -38,6 +38,12 @@ diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const std::string& node,
   return s;
 }
 
+std::pair<std::string, std::string> SplitProblem(const std::string& problem) {
+  const auto colon = problem.find(": ");
+  if (colon == std::string::npos) return {"message", problem};
+  return {problem.substr(0, colon), problem.substr(colon + 2)};
+}
+
 InputRefusals::InputRefusals(ros::NodeHandle& nh, std::string node, double period_s)
     : node_(std::move(node)) {
   pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
@@ -56,6 +62,11 @@ void InputRefusals::Refuse(const std::string& topic, const std::string& field,
     ROS_WARN("%s: %s: refused (%s): %s%s", node_.c_str(), topic.c_str(), field.c_str(), why.c_str(),
              times.c_str());
   }
+}
+
+void InputRefusals::RefuseProblem(const std::string& topic, const std::string& problem) {
+  const auto [field, why] = SplitProblem(problem);
+  Refuse(topic, field, why);
 }
 
 std::uint64_t InputRefusals::count(const std::string& topic, const std::string& field) const {

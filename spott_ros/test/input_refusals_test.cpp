@@ -17,6 +17,16 @@ TEST(RefusalCounts, CountsPerTopicAndFieldKeepingTheLastReason) {
   EXPECT_EQ(c.causes().at("initialpose pose.pose.position").last_reason, "still not finite");
 }
 
+TEST(RefusalCounts, AProblemIsSplitIntoItsFieldAndItsReason) {
+  EXPECT_EQ(
+      SplitProblem("range_max: -1.000000 is not in (0, 1000) m"),
+      std::make_pair(std::string("range_max"), std::string("-1.000000 is not in (0, 1000) m")));
+  EXPECT_EQ(SplitProblem("mounts[2]: not finite: or beyond 10 m"),
+            std::make_pair(std::string("mounts[2]"), std::string("not finite: or beyond 10 m")));
+  EXPECT_EQ(SplitProblem("no field here"),
+            std::make_pair(std::string("message"), std::string("no field here")));
+}
+
 TEST(RefusalCounts, StatusWarnsOnlyForRefusalsOfTheLastPeriodAndListsEveryCause) {
   RefusalCounts c;
   auto s = ToDiagnosticStatus("markov_localization", c, 0);

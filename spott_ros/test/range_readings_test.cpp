@@ -1,8 +1,9 @@
-// The rules for range rings and their readings (spott_ros/range_readings.h).
+// The rules for range rings, laser scans and their readings (spott_ros/range_readings.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "spott_ros/range_readings.h"
@@ -60,6 +61,55 @@ TEST(RangeReadings, ARingIsRefusedByTheFieldThatMakesItUnusable) {
   bad = TwoSonars();
   bad.ranges.push_back(1.0f);
   EXPECT_EQ(RangeRingProblem(bad), "mounts: 2 mounts for 3 ranges");
+}
+
+TEST(RangeReadings, TheDiscardedReadingIsNamedWithItsIndexAndValue) {
+  EXPECT_EQ(DiscardedReadingWhy(3, -0.5),
+            "ranges[3] = -0.500000 is outside [0, max_range]: discarded as dropped out");
+}
+
+TEST(RangeReadings, AScanIsRefusedWithTheFieldThatMakesItUnusable) {
+  sensor_msgs::LaserScan scan;
+  scan.angle_min = -M_PI / 2;
+  scan.angle_increment = M_PI / 180;
+  scan.range_min = 0.05f;
+  scan.range_max = 30.0f;
+  scan.ranges.assign(181, 2.0f);
+  EXPECT_EQ(LaserScanProblem(scan), "");
+  auto refused = [&](auto change) {
+    sensor_msgs::LaserScan s = scan;
+    change(s);
+    const std::string why = LaserScanProblem(s);
+    return why.substr(0, why.find(':'));
+  };
+  EXPECT_EQ(refused([](auto& s) { s.angle_min = NAN; }), "angle_min");
+  EXPECT_EQ(refused([](auto& s) { s.angle_min = 7.0f; }), "angle_min");
+  EXPECT_EQ(refused([](auto& s) { s.angle_increment = 0.0f; }), "angle_increment");
+  EXPECT_EQ(refused([](auto& s) { s.angle_increment = NAN; }), "angle_increment");
+  EXPECT_EQ(refused([](auto& s) { s.angle_increment = 1e38f; }), "angle_increment");
+  // Each step under half a turn, but 180 of them are not: the beams' directions would wrap.
+  EXPECT_EQ(refused([](auto& s) { s.angle_increment = 0.5f; }), "angle_min/angle_increment");
+  EXPECT_EQ(refused([](auto& s) { s.range_max = INFINITY; }), "range_max");
+  EXPECT_EQ(refused([](auto& s) { s.range_max = -1.0f; }), "range_max");
+  EXPECT_EQ(refused([](auto& s) { s.range_min = -1.0f; }), "range_min");
+  EXPECT_EQ(refused([](auto& s) { s.range_min = NAN; }), "range_min");
+  EXPECT_EQ(refused([](auto& s) { s.range_min = 40.0f; }), "range_min");
+  EXPECT_EQ(refused([](auto& s) { s.ranges.clear(); }), "ranges");
+  EXPECT_EQ(refused([](auto& s) {
+              s.angle_increment = 1e-6f;
+              s.ranges.assign(100001, 1.0f);
+            }),
+            "ranges");
+  // A full turn from 0 (some lasers count 0 .. 2 pi) is fine; so are NaN and inf readings
+  // (REP 117: each reading is judged by itself).
+  EXPECT_EQ(refused([](auto& s) {
+              s.angle_min = 0.0f;
+              s.angle_increment = 2 * M_PI / 360;
+              s.ranges.assign(360, 1.0f);
+              s.ranges[0] = NAN;
+              s.ranges[1] = INFINITY;
+            }),
+            "");
 }
 
 }  // namespace

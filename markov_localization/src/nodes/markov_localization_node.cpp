@@ -419,8 +419,7 @@ class LocalizationNode {
     ranges_.assign(ring.ranges.begin(), ring.ranges.end());
     if (const int i = spott_ros::DiscardImpossibleRanges(ring.max_range, &ranges_); i >= 0) {
       refusals_.Refuse(params_.ring_topic, "ranges",
-                       "ranges[" + std::to_string(i) + "] = " + std::to_string(ring.ranges[i]) +
-                           " is outside [0, max_range]: discarded as dropped out");
+                       spott_ros::DiscardedReadingWhy(i, ring.ranges[i]));
     }
     if (!sonar_on_ && (ros::Time::now() - sonar_off_since_).toSec() > params_.sonar_off_max_s) {
       ROS_WARN("markov_localization: sonar readings used again: switched off for more than %.0f s",
@@ -439,10 +438,9 @@ class LocalizationNode {
   }
 
   void OnScan(const sensor_msgs::LaserScan& scan) {
-    const std::string problem = conv::LaserScanProblem(scan);
+    const std::string problem = spott_ros::LaserScanProblem(scan);
     if (!problem.empty()) {
-      const auto colon = problem.find(':');
-      refusals_.Refuse(params_.laser.topic, problem.substr(0, colon), problem.substr(colon + 2));
+      refusals_.RefuseProblem(params_.laser.topic, problem);
       return;
     }
     if (!odom_) return;

@@ -130,23 +130,6 @@ OccupancyMap FromOccupancyGrid(const nav_msgs::OccupancyGrid& grid) {
   return m;
 }
 
-std::string LaserScanProblem(const sensor_msgs::LaserScan& scan) {
-  if (!std::isfinite(scan.angle_min)) return "angle_min: not finite";
-  if (!std::isfinite(scan.angle_increment) || scan.angle_increment == 0.0f)
-    return "angle_increment: zero or not finite";
-  if (!(std::isfinite(scan.range_max) && scan.range_max > 0.0f && scan.range_max < 1000.0f))
-    return "range_max: not in (0, 1000) m";
-  if (!(std::isfinite(scan.range_min) && scan.range_min >= 0.0f && scan.range_min < scan.range_max))
-    return "range_min: not in [0, range_max)";
-  if (scan.ranges.empty()) return "ranges: empty";
-  const double last = scan.angle_min + (static_cast<double>(scan.ranges.size()) - 1.0) *
-                                           static_cast<double>(scan.angle_increment);
-  const double limit = 2.0 * M_PI + 1e-3;
-  if (std::abs(scan.angle_min) > limit || !(std::abs(last) <= limit))
-    return "angle_min/angle_increment: beams beyond [-2 pi, 2 pi]";
-  return "";
-}
-
 std::vector<int> LaserBeams(int readings, int max_beams) {
   std::vector<int> beams;
   if (readings <= 0) return beams;

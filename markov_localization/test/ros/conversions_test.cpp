@@ -221,36 +221,5 @@ TEST(Conversions, LaserBeamsAreSubsampledAsAmclDoes) {
   EXPECT_NEAR(r[6], 9.99, 1e-5);
 }
 
-TEST(Conversions, AScanIsRefusedWithTheFieldThatMakesItUnusable) {
-  sensor_msgs::LaserScan scan;
-  scan.angle_min = -M_PI / 2;
-  scan.angle_increment = M_PI / 180;
-  scan.range_min = 0.05f;
-  scan.range_max = 30.0f;
-  scan.ranges.assign(181, 2.0f);
-  EXPECT_EQ(conv::LaserScanProblem(scan), "");
-  auto refused = [&](auto change) {
-    sensor_msgs::LaserScan s = scan;
-    change(s);
-    const std::string why = conv::LaserScanProblem(s);
-    return why.substr(0, why.find(':'));
-  };
-  EXPECT_EQ(refused([](auto& s) { s.angle_min = NAN; }), "angle_min");
-  EXPECT_EQ(refused([](auto& s) { s.angle_increment = 0.0f; }), "angle_increment");
-  // Finite, but 180 beams of it are not: the model's beam directions would be inf / NaN.
-  EXPECT_EQ(refused([](auto& s) { s.angle_increment = 1e38f; }), "angle_min/angle_increment");
-  EXPECT_EQ(refused([](auto& s) { s.range_max = INFINITY; }), "range_max");
-  EXPECT_EQ(refused([](auto& s) { s.range_min = -1.0f; }), "range_min");
-  EXPECT_EQ(refused([](auto& s) { s.range_min = 40.0f; }), "range_min");
-  EXPECT_EQ(refused([](auto& s) { s.ranges.clear(); }), "ranges");
-  // A full turn from 0 (some lasers count 0 .. 2 pi) is fine.
-  EXPECT_EQ(refused([](auto& s) {
-              s.angle_min = 0.0f;
-              s.angle_increment = 2 * M_PI / 360;
-              s.ranges.assign(360, 1.0f);
-            }),
-            "");
-}
-
 }  // namespace
 }  // namespace markov_localization

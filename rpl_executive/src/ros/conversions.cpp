@@ -190,21 +190,6 @@ std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph) {
   return "";
 }
 
-std::string LaserScanProblem(const sensor_msgs::LaserScan& scan) {
-  if (!std::isfinite(scan.angle_min) || std::abs(scan.angle_min) > 2 * M_PI)
-    return "angle_min: not finite or beyond a turn";
-  if (!std::isfinite(scan.angle_increment) || scan.angle_increment == 0.0f ||
-      std::abs(scan.angle_increment) > M_PI)
-    return "angle_increment: not finite, 0 or beyond half a turn";
-  if (!(std::isfinite(scan.range_max) && scan.range_max > 0.0f && scan.range_max < 1000.0f))
-    return "range_max: " + std::to_string(scan.range_max) + " is not in (0, 1000) m";
-  if (!(scan.range_min >= 0.0f && scan.range_min < scan.range_max))
-    return "range_min: " + std::to_string(scan.range_min) + " is not in [0, range_max)";
-  if (scan.ranges.size() > 100000)
-    return "ranges: " + std::to_string(scan.ranges.size()) + " beams (at most 100,000)";
-  return "";
-}
-
 std::string TwistProblem(const geometry_msgs::Twist& t) {
   for (double v : {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z})
     if (!std::isfinite(v)) return "linear/angular: not finite";

@@ -37,10 +37,8 @@ std::string StatusProblem(const spott_msgs::LocalizationStatus& status);
 /// The room/door graph as world_server's validation has it (spott_map: finite points within
 /// 10 km, rooms of >= 3 points, doors with two opening ends and a known state).
 std::string GraphProblem(const spott_msgs::RoomDoorGraph& graph);
-// Rings: spott_ros::RangeRingProblem; places: spott_map::ros_conversions::PlacesProblem.
-/// A scan's angles finite (increment not 0), 0 <= range_min < range_max < 1000 m, at most
-/// 100,000 beams.
-std::string LaserScanProblem(const sensor_msgs::LaserScan& scan);
+// Rings and scans: spott_ros::RangeRingProblem, LaserScanProblem; places:
+// spott_map::ros_conversions::PlacesProblem.
 /// A command to relay: every number finite.
 std::string TwistProblem(const geometry_msgs::Twist& twist);
 

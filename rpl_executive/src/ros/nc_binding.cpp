@@ -158,7 +158,7 @@ std::vector<std::string> NcBinding::TakeEvents() {
 
 void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
   if (const std::string problem = spott_ros::RangeRingProblem(ring); !problem.empty()) {
-    refusals_->Refuse(params_.sonar_topic, problem.substr(0, problem.find(':')), problem);
+    refusals_->RefuseProblem(params_.sonar_topic, problem);
     return;
   }
   if (!exec_) {
@@ -179,9 +179,7 @@ void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
   const nc::SonarScan scan = conv::ScanFromMsg(ring, &discarded);
   if (discarded >= 0) {
     refusals_->Refuse(params_.sonar_topic, "ranges",
-                      "ranges[" + std::to_string(discarded) +
-                          "] = " + std::to_string(ring.ranges[discarded]) +
-                          " is outside [0, max_range]: discarded as dropped out");
+                      spott_ros::DiscardedReadingWhy(discarded, ring.ranges[discarded]));
   }
   UpdatePose(now);
   kit_->OnSonar(scan);
@@ -191,8 +189,8 @@ void NcBinding::OnSonar(const spott_msgs::RangeRing& ring) {
 
 void NcBinding::OnLaser(const sensor_msgs::LaserScan& scan) {
   if (!exec_) return;
-  if (const std::string problem = conv::LaserScanProblem(scan); !problem.empty()) {
-    refusals_->Refuse(params_.laser_topic, problem.substr(0, problem.find(':')), problem);
+  if (const std::string problem = spott_ros::LaserScanProblem(scan); !problem.empty()) {
+    refusals_->RefuseProblem(params_.laser_topic, problem);
     return;
   }
   if (!laser_yaw_ || laser_frame_ != scan.header.frame_id) {
@@ -229,7 +227,7 @@ void NcBinding::OnBattery(const sensor_msgs::BatteryState& battery) {
 void NcBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
   if (const std::string problem = spott_map::ros_conversions::PlacesProblem(places);
       !problem.empty()) {
-    refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+    refusals_->RefuseProblem("world_places", problem);
     return;
   }
   places_ = places;

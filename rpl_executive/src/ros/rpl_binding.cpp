@@ -176,7 +176,7 @@ void RplBinding::ArmWakeUp() {
 
 void RplBinding::OnStatus(const spott_msgs::LocalizationStatus& status) {
   if (const std::string problem = conv::StatusProblem(status); !problem.empty()) {
-    refusals_->Refuse("localization_status", problem.substr(0, problem.find(':')), problem);
+    refusals_->RefuseProblem("localization_status", problem);
     return;
   }
   const double now = Now();
@@ -206,7 +206,7 @@ void RplBinding::OnGraph(const spott_msgs::RoomDoorGraph& graph) {
 void RplBinding::OnPlaces(const spott_msgs::WorldPlaces& places) {
   if (const std::string problem = spott_map::ros_conversions::PlacesProblem(places);
       !problem.empty()) {
-    refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+    refusals_->RefuseProblem("world_places", problem);
     return;
   }
   places_.clear();

@@ -200,20 +200,7 @@ TEST(RplExecutiveConversions, ImpossibleRingReadingsAreDroppedOut) {
   EXPECT_EQ(discarded, -1);
 }
 
-TEST(RplExecutiveConversions, ScansStatusesAndCommandsAreChecked) {
-  sensor_msgs::LaserScan l;
-  l.angle_min = -1.0f;
-  l.angle_increment = 0.5f;
-  l.range_min = 0.1f;
-  l.range_max = 10.0f;
-  l.ranges = {1.0f, NAN};
-  EXPECT_EQ(conv::LaserScanProblem(l), "");
-  l.angle_increment = 0.0f;
-  EXPECT_EQ(conv::LaserScanProblem(l).rfind("angle_increment: ", 0), 0u);
-  l.angle_increment = 0.5f;
-  l.range_max = -1.0f;
-  EXPECT_EQ(conv::LaserScanProblem(l).rfind("range_max: ", 0), 0u);
-
+TEST(RplExecutiveConversions, StatusesAndCommandsAreChecked) {
   spott_msgs::LocalizationStatus st;
   st.estimate.x = 1.2;
   st.estimate.y = 8.25;

@@ -35,6 +35,10 @@ class RefusalCounts {
   std::uint64_t total_ = 0;
 };
 
+/// A check's answer "field: why" (the form of every *Problem function) split at its first ": ";
+/// a problem without one is all reason, field "message".
+std::pair<std::string, std::string> SplitProblem(const std::string& problem);
+
 /// The node's status "<node>: input": OK while nothing was refused since the last status, WARN
 /// otherwise; one value per cause ("topic field" -> "count: last reason").
 diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const std::string& node,
@@ -47,6 +51,8 @@ class InputRefusals {
   /// Publishes on /diagnostics every `period_s` through `nh`'s callback queue.
   InputRefusals(ros::NodeHandle& nh, std::string node, double period_s = 1.0);
   void Refuse(const std::string& topic, const std::string& field, const std::string& why);
+  /// Refuse with a check's "field: why" (SplitProblem).
+  void RefuseProblem(const std::string& topic, const std::string& problem);
   std::uint64_t count(const std::string& topic, const std::string& field) const;
 
  private:

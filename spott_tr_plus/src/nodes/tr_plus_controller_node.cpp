@@ -374,7 +374,7 @@ class ControllerNode : public ControllerIo {
 
   void OnPlaces(const spott_msgs::WorldPlaces& msg) {
     if (const std::string problem = mconv::PlacesProblem(msg); !problem.empty()) {
-      refusals_->Refuse("world_places", problem.substr(0, problem.find(':')), problem);
+      refusals_->RefuseProblem("world_places", problem);
       return;
     }
     std::vector<spott_map::Place> places;
@@ -416,14 +416,12 @@ class ControllerNode : public ControllerIo {
   // dropped out. nullopt when refused.
   std::optional<RangeRing> CheckedRing(const std::string& topic, const spott_msgs::RangeRing& msg) {
     if (const std::string problem = spott_ros::RangeRingProblem(msg); !problem.empty()) {
-      refusals_->Refuse(topic, problem.substr(0, problem.find(':')), problem);
+      refusals_->RefuseProblem(topic, problem);
       return std::nullopt;
     }
     RangeRing ring = ToRing(msg);
     if (const int i = spott_ros::DiscardImpossibleRanges(msg.max_range, &ring.ranges); i >= 0) {
-      refusals_->Refuse(topic, "ranges",
-                        "ranges[" + std::to_string(i) + "] = " + std::to_string(msg.ranges[i]) +
-                            " is outside [0, max_range]: discarded as dropped out");
+      refusals_->Refuse(topic, "ranges", spott_ros::DiscardedReadingWhy(i, msg.ranges[i]));
     }
     return ring;
   }

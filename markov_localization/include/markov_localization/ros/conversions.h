@@ -50,10 +50,7 @@ spott_msgs::BeliefModes ToBeliefModes(const std::vector<Mode>& modes, const std:
 /// validates it.
 OccupancyMap FromOccupancyGrid(const nav_msgs::OccupancyGrid& grid);
 
-/// Why a scan cannot be used (empty when it can), as "field: why": angles and ranges finite,
-/// 0 <= range_min < range_max < 1000 m, a non-zero angle_increment, and every beam's angle within
-/// [-2 pi, 2 pi] (an increment of 1e38 is finite, the beams' angles would not be).
-std::string LaserScanProblem(const sensor_msgs::LaserScan& scan);
+// A scan's check: spott_ros::LaserScanProblem.
 
 /// The beams of a scan the laser model uses: AMCL's laser_max_beams subsampling, every
 /// ((n - 1) / (max_beams - 1))-th reading from the first. Indices into msg.ranges.
