@@ -206,10 +206,12 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   report.objects_not_in_cad = static_cast<int>(scenario.world->objects.size());
 
   const spott_map::Vec2 start_position = scenario.world->robot_start.Position();
+  // No room at all: a stack without an a priori map (its database starts empty).
   const spott_map::Room* start_room = graph->RoomContaining(start_position);
-  if (!start_room) return fail("the robot start is outside every room of the served graph");
-  report.start_room = start_room->id;
-  report.reachable = Reachable(*graph, start_room->id);
+  if (!start_room && !graph->rooms().empty())
+    return fail("the robot start is outside every room of the served graph");
+  report.start_room = start_room ? start_room->id : "";
+  if (start_room) report.reachable = Reachable(*graph, start_room->id);
   for (const spott_map::Room& r : graph->rooms()) {
     if (std::find(report.reachable.begin(), report.reachable.end(), r.id) ==
         report.reachable.end()) {
@@ -236,7 +238,7 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   }
   std::vector<std::string> before = report.reachable;
   std::vector<std::pair<std::string, std::uint8_t>> restore;
-  for (const std::string& door : doors_to_close) {
+  for (const std::string& door : start_room ? doors_to_close : std::vector<std::string>{}) {
     DemoReport::DoorExperiment e;
     e.door = door;
     if (const spott_map::Door* d = graph->FindDoor(door))
@@ -321,9 +323,13 @@ std::string FormatReport(const DemoReport& r) {
       << std::setprecision(2) << r.map_resolution << " m, " << r.map_occupied << " occupied\n"
       << "   objects not in the CAD map (for the robot to discover): " << r.objects_not_in_cad
       << "\n\n";
-  out << " Robot start is in " << r.start_room
-      << "; reachable through passable doors: " << r.reachable.size() << " of " << r.rooms
-      << " rooms\n";
+  if (r.start_room.empty()) {
+    out << " No a priori map: no room, door or wall is known; the robot maps what it senses\n";
+  } else {
+    out << " Robot start is in " << r.start_room
+        << "; reachable through passable doors: " << r.reachable.size() << " of " << r.rooms
+        << " rooms\n";
+  }
   for (const std::string& u : r.unreachable) out << "   unreachable: " << u << "\n";
   out << "\n Closing doors through world_server/set_door_state:\n";
   for (const auto& e : r.door_experiments) {

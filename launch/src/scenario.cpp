@@ -172,7 +172,7 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
   const std::string what = "scenario";
   if (!in.ExpectMap(root, what,
                     {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
-                     "localization", "tasks", "goals", "missions", "doors_to_close",
+                     "localization", "a_priori_map", "tasks", "goals", "missions", "doors_to_close",
                      "leg_timeout_s", "goal_tolerance_m", "time_limit_s", "faults"})) {
     result.errors = in.errors();
     return result;
@@ -204,9 +204,10 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
       s.real_time_factor = *rtf;
   }
   s.localization = in.String(root, "localization", what, false).value_or("markov");
-  if (s.localization != "markov" && s.localization != "truth")
+  if (s.localization != "markov" && s.localization != "truth" && s.localization != "odometry")
     in.Error(root["localization"],
-             "localization: expected markov or truth, got '" + s.localization + "'");
+             "localization: expected markov, truth or odometry, got '" + s.localization + "'");
+  s.a_priori_map = in.Bool(root, "a_priori_map", what, false).value_or(true);
   s.tasks = Strings(in, root, "tasks");
   s.goals = Strings(in, root, "goals");
   s.doors_to_close = Strings(in, root, "doors_to_close");
@@ -298,6 +299,7 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
   args.push_back("seed:=" + std::to_string(s.seed));
   args.push_back("real_time_factor:=" + number(s.real_time_factor));
   args.push_back("localization:=" + s.localization);
+  if (!s.a_priori_map) args.push_back("a_priori_map:=false");
   args.push_back("controller:=" + s.Controller());
   args.push_back("executive:=" + s.Executive());
   return args;

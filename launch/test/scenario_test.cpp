@@ -109,6 +109,7 @@ TEST(Scenario, NumbersOutOfTheirRangesAreNamed) {
            {"leg_timeout_s: 0", "leg_timeout_s"},
            {"goal_tolerance_m: .nan", "goal_tolerance_m"},
            {"localization: amcl", "localization"},
+           {"a_priori_map: partly", "a_priori_map"},
            {"start_pose: [1, 2]", "start_pose"}}) {
     const auto r = ParseScenario(head + line + "\n", "s.yaml");
     ASSERT_FALSE(r.ok()) << line;
@@ -194,6 +195,24 @@ TEST(Scenario, LaunchArgumentsAndDemoParametersSayWhatTheFileSays) {
   EXPECT_FALSE(params["goals"]);
   EXPECT_DOUBLE_EQ(params["leg_timeout_s"].as<double>(), 100.0);
   EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 2 * 100.0);
+}
+
+TEST(Scenario, AStackWithoutAPrioriMapRunsOnDeadReckoning) {
+  const auto r = ParseScenario(
+      "world: cim_office\nlocalization: odometry\na_priori_map: false\n"
+      "tasks: [\"go to point(19, 15.5)\"]\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  EXPECT_FALSE(r.scenario->a_priori_map);
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(), "localization:=odometry"), args.end());
+  EXPECT_NE(std::find(args.begin(), args.end(), "a_priori_map:=false"), args.end());
+  // The default says nothing: the stack's own default (the map) holds.
+  const auto with_map = ParseScenario("world: cim_office\ngoals: [lab_bench]\n", "s.yaml");
+  ASSERT_TRUE(with_map.ok());
+  EXPECT_TRUE(with_map.scenario->a_priori_map);
+  const auto plain = LaunchArguments(*with_map.scenario);
+  EXPECT_EQ(std::find(plain.begin(), plain.end(), "a_priori_map:=false"), plain.end());
 }
 
 TEST(Scenario, MissionsAreReadWithWhatTheRunMustShow) {

@@ -35,6 +35,9 @@ std::vector<std::string> ValidateParameters(const SimNodeParameters& p) {
   for (const std::string* f : {&p.map_frame, &p.odom_frame, &p.base_frame}) {
     if (f->empty()) e.push_back("frames must not be empty (map_frame, odom_frame, base_frame)");
   }
+  if (p.publish_truth_map_to_odom && p.publish_start_map_to_odom) {
+    e.push_back("publish_truth_map_to_odom and publish_start_map_to_odom: at most one of them");
+  }
   for (const std::string& w : ValidateParameters(p.world)) e.push_back(w);
   for (const std::string& w : ValidateParameters(p.consumers)) e.push_back(w);
   for (const std::string& w : ValidateParameters(p.odometry)) e.push_back(w);

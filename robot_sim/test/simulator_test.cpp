@@ -212,6 +212,16 @@ TEST(NodeParametersTest, EveryViolationIsNamed) {
   EXPECT_NE(e[3].find("odometry/linear_scale"), std::string::npos);
 }
 
+TEST(NodeParametersTest, MapToOdomComesFromTheTruthOrTheStartNotBoth) {
+  SimNodeParameters p;
+  p.world_file = "w.yaml";
+  p.publish_start_map_to_odom = true;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.publish_truth_map_to_odom = true;
+  ASSERT_EQ(ValidateParameters(p).size(), 1u);
+  EXPECT_NE(ValidateParameters(p)[0].find("at most one"), std::string::npos);
+}
+
 // Found by robot_sim_parameters_fuzz: a real_time_factor of 5e-324 was accepted, and the loop's
 // ros::WallDuration(step * dt / real_time_factor) throws beyond 2^31 s; a rate of 1e-300 Hz made
 // lround(physics_rate_hz / rate) overflow (published on every step instead of never).

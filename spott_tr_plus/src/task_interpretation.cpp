@@ -518,8 +518,13 @@ GoalRegion PathGoalRegion(const TargetGeometry& pg, Vec robot,
 // Fits goal regions into the map's free space, built at the first goal (TaskMap).
 class GoalFitter {
  public:
+  // A database without rooms (no a priori map: SPOTT's Fig. 12) has no free space to fit into:
+  // the goal is the geometry's, as without a map; sensed obstacles are the planners' to avoid.
   GoalFitter(const TaskMap* map, Vec robot, const TaskInterpretationParameters& p, Reporter& rep)
-      : map_(map && map->database ? map : nullptr), robot_(robot), params_(p), rep_(rep) {}
+      : map_(map && map->database && !map->database->graph().rooms().empty() ? map : nullptr),
+        robot_(robot),
+        params_(p),
+        rep_(rep) {}
 
   bool Fit(GoalRegion& r, const Target& t, const std::string& preposition, Location robot_where) {
     if (!map_) return true;

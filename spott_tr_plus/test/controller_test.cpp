@@ -583,6 +583,29 @@ TEST(SensorMapper, RepeatedEchoesOfAnUnmappedObjectBecomeAFeatureButWallEchoesDo
   EXPECT_TRUE(m.Take(db).features.empty()) << "a confirmed cell is sent once";
 }
 
+TEST(SensorMapper, WithoutAPrioriMapTheGridIsLaidOutAroundTheRobotAndWallsAreMapped) {
+  // SPOTT's Experiment 1: the served map has no rooms and no walls. The hall's north wall (known
+  // and left out in the test above) is now something new.
+  const spott_map::MapDatabase empty;
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  const Pose2 robot{5.0, 8.25, 0.0};
+  m.SetMap(empty);  // no rooms and no pose: no grid yet, nothing to map into
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.9465), robot);
+  EXPECT_TRUE(m.Take(empty).features.empty());
+  m.SetMap(empty, robot.Position());
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.9465), robot);
+  const SensedBatch b = m.Take(empty);
+  ASSERT_EQ(b.features.size(), 1u);
+  EXPECT_NEAR(b.features[0].points[0].y(), 9.425, 0.0708);
+  // 19 m away, inside the 40 m square (mapless_extent_m): mapped too; beyond it: not.
+  const Pose2 far{24.0, 8.25, 0.0};
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(kRadius, 0, 0, 1.0), far);
+  EXPECT_EQ(m.Take(empty).features.size(), 1u);
+  const Pose2 beyond{26.5, 8.25, 0.0};
+  for (int k = 0; k < 6; ++k) m.AddRing(OneBeam(kRadius, 0, 0, 1.0), beyond);
+  EXPECT_TRUE(m.Take(empty).features.empty());
+}
+
 TEST(SensorMapper, AnEchoOfAJambInTheConeIsNoPhantomOnTheAxis) {
   const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);

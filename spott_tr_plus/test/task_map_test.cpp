@@ -94,6 +94,32 @@ TEST_F(TaskMapTest, NearADoorTheGoalKeepsThePaddingFromTheWall) {
   EXPECT_GT(g.free_area_m2, 1.0);
 }
 
+TEST_F(TaskMapTest, WithoutAPrioriMapTheGoalIsTheGeometrys) {
+  // SPOTT's Experiment 1: nothing known but what the sonar added (here one wall segment); no
+  // room holds the robot, and the goal point is where the command puts it.
+  spott_map::MapDatabase sensed;
+  spott_map::MapFeature f;
+  f.id = "sonar_1";
+  f.type = spott_map::FeatureType::kRectangle;
+  f.label = "wall";
+  f.pose = {3.0, 1.0, 0.0};
+  f.size_x = 2.0;
+  f.size_y = 0.1;
+  ASSERT_TRUE(sensed.AddFeature(f));
+  const TaskMap map{&sensed, kPadding};
+  const TaskParseResult p = ParseTaskCommand("go to point(5, 2)");
+  ASSERT_TRUE(p.ok());
+  const TaskInterpretResult r = InterpretTask(*p.command, 1, 1, 0, params_, map, resolve_);
+  ASSERT_TRUE(r.ok()) << FormatDiagnostics(r.diagnostics);
+  ASSERT_TRUE(r.interpretation->goal);
+  const GoalRegion geometric = Goal("go to point(5, 2)", 1, 1, false);
+  EXPECT_DOUBLE_EQ(r.interpretation->goal->goal_x, geometric.goal_x);
+  EXPECT_DOUBLE_EQ(r.interpretation->goal->goal_y, geometric.goal_y);
+  EXPECT_NEAR(std::hypot(geometric.goal_x - 5, geometric.goal_y - 2), 0.15, 0.01);  // "to": at it
+  // With the building's rooms the same robot outside every room is refused (nothing to fit in).
+  EXPECT_FALSE(InterpretTask(*p.command, -50, -50, 0, params_, map_, resolve_).ok());
+}
+
 TEST_F(TaskMapTest, AlongAHallwayStaysInTheHallway) {
   // The geometry alone took `along` as beside the hallway's long axis: in the closed room.
   const GoalRegion beside = Goal("go alongside hallway(hall)", 1, 1, false);

@@ -35,6 +35,10 @@ struct SimNodeParameters {
   /// Publish map->odom from the ground truth (demos and screenshots without localization only:
   /// off whenever a localization node publishes map->odom).
   bool publish_truth_map_to_odom = false;
+  /// Publish map->odom as it was at the start, held (dead reckoning: the robot knows where it
+  /// started and then only its odometry; SPOTT's Experiment 1 without a map to localize on).
+  /// Not with publish_truth_map_to_odom.
+  bool publish_start_map_to_odom = false;
   std::string octomap_file = "/tmp/robot_sim.bt";  ///< Where ~save_octomap writes.
   /// The stack's outputs whose lag holds the clock (consumer_pacer.h).
   PacerParameters consumers;

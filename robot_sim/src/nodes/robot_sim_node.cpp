@@ -213,12 +213,12 @@ class SimNode {
     odom_pub_.publish(
         conv::ToOdometry(odo.pose(), odo.twist(), params_.odom_frame, params_.base_frame, stamp));
     tf_.sendTransform(ToTransform(odo.pose(), params_.odom_frame, params_.base_frame, stamp));
-    if (params_.publish_truth_map_to_odom) {
-      // map->odom = truth * odom^-1.
-      const spott_map::Pose2& t = sim_->GroundTruth(robot_);
-      const spott_map::Pose2& o = odo.pose();
-      const double yaw = t.yaw - o.yaw, c = std::cos(yaw), s = std::sin(yaw);
-      const spott_map::Pose2 map_odom{t.x - (c * o.x - s * o.y), t.y - (s * o.x + c * o.y), yaw};
+    if (params_.publish_truth_map_to_odom || params_.publish_start_map_to_odom) {
+      spott_map::Pose2 map_odom = MapToOdom(sim_->GroundTruth(robot_), odo.pose());
+      if (params_.publish_start_map_to_odom) {  // dead reckoning: the start's, held
+        if (!start_map_odom_) start_map_odom_ = map_odom;
+        map_odom = *start_map_odom_;
+      }
       tf_.sendTransform(ToTransform(map_odom, params_.map_frame, params_.odom_frame, stamp));
     }
     truth_pub_.publish(conv::ToOdometry(sim_->GroundTruth(robot_), sim_->Velocity(robot_),
@@ -468,6 +468,7 @@ class SimNode {
   std::unique_ptr<Simulator> sim_;
   int robot_;
   std::vector<FaultEvent> schedule_;
+  std::optional<spott_map::Pose2> start_map_odom_;  ///< publish_start_map_to_odom's, once known.
   ros::Publisher faults_pub_;
   std::size_t next_event_ = 0;
   std::vector<FaultEvent> waiting_;  ///< Scheduled, blocked by a robot standing there.

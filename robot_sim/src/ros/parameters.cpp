@@ -92,6 +92,7 @@ void Read(spott_ros::ParameterReader& r, SimNodeParameters& p) {
   r.Get("publish_octomap_markers", p.publish_octomap_markers);
   r.Get("octomap_file", p.octomap_file);
   r.Get("publish_truth_map_to_odom", p.publish_truth_map_to_odom);
+  r.Get("publish_start_map_to_odom", p.publish_start_map_to_odom);
   r.Get("consumers/topics", p.consumers.topics);
   r.Get("consumers/max_lag_s", p.consumers.max_lag_s, "s");
   r.Get("consumers/max_hold_s", p.consumers.max_hold_s, "s");

@@ -32,7 +32,7 @@ class WorldServer {
  public:
   WorldServer(ros::NodeHandle& nh, ros::NodeHandle& pnh, WorldServerParameters params, World world)
       : params_(std::move(params)), world_(std::move(world)), refusals_(nh, "world_server") {
-    db_ = MapDatabase::FromWorld(world_);
+    db_ = InitialDatabase();
     map_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     graph_pub_ = nh.advertise<spott_msgs::RoomDoorGraph>("room_door_graph", 1, true);
     features_pub_ = nh.advertise<spott_msgs::MapFeatureArray>("map_features", 1, true);
@@ -44,12 +44,19 @@ class WorldServer {
     lookup_srv_ = pnh.advertiseService("lookup_place", &WorldServer::OnLookupPlace, this);
     load_srv_ = pnh.advertiseService("load_world", &WorldServer::OnLoadWorld, this);
     PublishAll();
-    ROS_INFO("world_server: serving world '%s' (%zu rooms, %zu doors, %zu walls) from %s",
+    ROS_INFO("world_server: serving world '%s' (%zu rooms, %zu doors, %zu walls%s) from %s",
              world_.name.c_str(), world_.rooms.size(), world_.doors.size(), world_.walls.size(),
+             params_.a_priori_map ? "" : "; no a priori map: the database starts empty",
              params_.world_file.c_str());
   }
 
  private:
+  // The world's map, or nothing of it (~a_priori_map false); the world's extent still sizes the
+  // occupancy map.
+  MapDatabase InitialDatabase() const {
+    return params_.a_priori_map ? MapDatabase::FromWorld(world_) : MapDatabase{};
+  }
+
   void PublishAll() {
     const ros::Time now = ros::Time::now();
     const Box b = world_.Bounds().Inflated(0.5);
@@ -157,7 +164,7 @@ class WorldServer {
     }
     world_ = std::move(*loaded.world);
     params_.world_file = req.path;
-    db_ = MapDatabase::FromWorld(world_);
+    db_ = InitialDatabase();
     PublishAll();
     ROS_INFO("world_server: now serving world '%s' from %s", world_.name.c_str(), req.path.c_str());
     return true;

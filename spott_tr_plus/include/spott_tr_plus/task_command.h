@@ -182,6 +182,7 @@ using PlaceResolver = std::function<std::optional<TargetGeometry>(const Target&)
 struct TaskMap {
   /// Walls and sensed features (every feature is an obstacle, as in the planners' rasters),
   /// rooms and doors with their states (closed doors are obstacles). Must outlive the call.
+  /// Without rooms (no a priori map) goals are not fitted: they are the geometry's.
   const spott_map::MapDatabase* database = nullptr;
   /// Robot radius + localization error (m), >= 0: the same padding as the planners'.
   double padding_m = 0.0;

@@ -743,14 +743,24 @@ void NavigationController::ApplyChange(MapChange change, double now) {
 }
 
 void NavigationController::MapChanged() {
-  if (!have_graph_) return;
-  sonar_mapper_.SetMap(db_);
-  quadris_mapper_.SetMap(db_);
-  infrared_mapper_.SetMap(db_);
+  // Without an a priori map the grids are laid out around the robot once it has a pose.
+  std::optional<Vec2> around;
+  if (!have_graph_ && mapless_ && pose_) around = pose_->Position();
+  if (!have_graph_ && !around) return;
+  sonar_mapper_.SetMap(db_, around);
+  quadris_mapper_.SetMap(db_, around);
+  infrared_mapper_.SetMap(db_, around);
 }
 
 void NavigationController::SetGraph(const spott_map::RoomDoorGraph& graph, double now) {
-  if (graph.rooms().empty()) return;
+  if (graph.rooms().empty()) {
+    // The map database has no rooms at all (no a priori map): map from nothing.
+    if (!have_graph_ && !mapless_) {
+      mapless_ = true;
+      MapChanged();
+    }
+    return;
+  }
   db_.SetGraph(graph);
   have_graph_ = true;
   MapChanged();
@@ -804,9 +814,11 @@ void NavigationController::SetPose(const Pose2& pose, double now) {
     }
     correction_ = correction;
   }
+  const bool first = !pose_;
   pose_ = pose;
   pose_time_ = now;
   dirty_ = true;  // conditions on the pose (in_room, in_that_room) see it at the next scan
+  if (first && mapless_) MapChanged();  // the grids wait for a pose to centre on
 }
 
 void NavigationController::SetOdometry(const Pose2& odom, double linear_mps, double angular_rps,

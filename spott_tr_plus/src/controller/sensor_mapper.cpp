@@ -58,6 +58,8 @@ std::vector<std::string> ValidateParameters(const MappingParameters& p) {
   positive("door_zone_m", p.door_zone_m);
   positive("segment_residual_m", p.segment_residual_m);
   positive("cluster_gap_m", p.cluster_gap_m);
+  if (!(p.mapless_extent_m >= 5 && p.mapless_extent_m <= 200))
+    v.push_back(Violation("mapless_extent_m", "in [5, 200]", p.mapless_extent_m));
   return v;
 }
 
@@ -84,25 +86,26 @@ SensorMapper::SensorMapper(std::string sensor, MappingParameters mapping,
                            DoorSensingParameters doors, bool sense_doors)
     : sensor_(std::move(sensor)), p_(mapping), d_(doors), sense_doors_(sense_doors) {}
 
-void SensorMapper::SetMap(const spott_map::MapDatabase& db) {
+void SensorMapper::SetMap(const spott_map::MapDatabase& db, const std::optional<Vec2>& robot) {
   // The grid covers every room (with a margin); it is laid out once, at the first map.
-  if (db.graph().rooms().empty()) return;
+  const bool rooms = !db.graph().rooms().empty();
+  if (!rooms && !robot && !have_map_) return;
   if (!have_map_) {
     spott_map::Box box;
     bool any = false;
-    for (const spott_map::Room& r : db.graph().rooms()) {
-      const spott_map::Box b = spott_map::BoundingBox(r.polygon);
+    const auto include = [&](const spott_map::Box& b) {
       if (!any) box = b;
       box.min = box.min.cwiseMin(b.min);
       box.max = box.max.cwiseMax(b.max);
       any = true;
-    }
-    for (const spott_map::MapFeature& f : db.features()) {
-      const spott_map::Box b = f.Bounds();
-      if (!any) box = b;
-      box.min = box.min.cwiseMin(b.min);
-      box.max = box.max.cwiseMax(b.max);
-      any = true;
+    };
+    if (rooms) {
+      for (const spott_map::Room& r : db.graph().rooms())
+        include(spott_map::BoundingBox(r.polygon));
+      for (const spott_map::MapFeature& f : db.features()) include(f.Bounds());
+    } else {
+      const Vec2 half = Vec2::Constant(p_.mapless_extent_m / 2);
+      include(spott_map::Box{*robot - half, *robot + half});
     }
     if (!any) return;
     box = box.Inflated(1.0);
@@ -124,7 +127,7 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db) {
       for (int ix = 0; ix < width_; ++ix) {
         const Vec2 c = origin_ + p_.cell_m * Vec2(ix + 0.5, iy + 0.5);
         std::uint8_t& f = flags_[Index(ix, iy)];
-        if (!db.graph().RoomContaining(c)) f |= kOutside;
+        if (rooms && !db.graph().RoomContaining(c)) f |= kOutside;
         for (const DoorZone& z : doors_) {
           const Vec2 dir = z.opening.Direction();
           const spott_map::Segment longer{z.opening.a - 0.1 * dir, z.opening.b + 0.1 * dir};

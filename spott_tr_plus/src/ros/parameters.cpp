@@ -77,6 +77,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("mapping/door_zone_m", m.door_zone_m, "m");
   r.Get("mapping/segment_residual_m", m.segment_residual_m, "m");
   r.Get("mapping/cluster_gap_m", m.cluster_gap_m, "m");
+  r.Get("mapping/mapless_extent_m", m.mapless_extent_m, "m");
   auto& d = c.doors;
   r.Get("doors/range_m", d.range_m, "m");
   r.Get("doors/end_margin_m", d.end_margin_m, "m");

@@ -287,6 +287,7 @@ class NavigationController {
   std::unique_ptr<Interpreter> interpreter_;
   spott_map::MapDatabase db_;
   bool have_graph_ = false, have_features_ = false;
+  bool mapless_ = false;  ///< The served map has no rooms: no a priori map (SPOTT's Experiment 1).
   std::vector<spott_map::Place> places_;
   SensorMapper sonar_mapper_, quadris_mapper_, infrared_mapper_;
   bool profiles_seen_ = false;  ///< QUADRIS profiles arrived: they sense the doors.

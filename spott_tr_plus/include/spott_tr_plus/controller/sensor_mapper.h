@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,6 +64,9 @@ struct MappingParameters {
   double door_zone_m = 0.3;          ///< Half depth of a door opening's zone (m), > 0.
   double segment_residual_m = 0.07;  ///< Fusion: cells this close to an axis form a segment (m).
   double cluster_gap_m = 0.15;       ///< Confirmed cells this close form one cluster (m), > 0.
+  /// Side of the square the grid covers, centred on the robot, when the map has no rooms (no a
+  /// priori map: SPOTT's Experiment 1) (m), in [5, 200].
+  double mapless_extent_m = 40.0;
 };
 
 /// Door states from the beams that cross a door's opening.
@@ -105,8 +109,10 @@ class SensorMapper {
 
   /// The map the echoes are compared with. Call when its features or door states change: what
   /// is known is redrawn. The grid, the rooms and the doors' openings are taken from the first
-  /// map that has rooms (they do not change while the robot runs).
-  void SetMap(const spott_map::MapDatabase& db);
+  /// map that has rooms (they do not change while the robot runs); a map without rooms (no a
+  /// priori map) lays the grid out as a square of mapless_extent_m around `robot`, with every
+  /// cell inside (nothing is known to be beyond a wall), or waits for `robot` when not given.
+  void SetMap(const spott_map::MapDatabase& db, const std::optional<Vec2>& robot = std::nullopt);
 
   /// Integrates a sonar (or infrared) ring read with the robot at `robot` (map frame).
   void AddRing(const RangeRing& ring, const Pose2& robot);
