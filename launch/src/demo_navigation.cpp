@@ -12,6 +12,8 @@
 #include <spott_msgs/MissionAction.h>
 #include <spott_msgs/NavigateAction.h>
 #include <spott_msgs/TaskAction.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +28,7 @@
 #include "spott_map/map_feature.h"
 #include "spott_move_base/conversions.h"
 #include "spott_ros/pose_conversions.h"
+#include "spott_ros/robot_pose.h"
 #include "spott_tr_plus/task_command.h"
 
 namespace spott_launch {
@@ -62,6 +65,12 @@ struct LegWatcher {
     std::lock_guard<std::mutex> lock(mutex);
     metrics.OnStatus(status.header.stamp.toSec(), status.estimate.x, status.estimate.y,
                      status.estimate.theta, status.lost);
+  }
+  // The stack's belief as tf has it (map -> odom -> base_link), for stacks without a
+  // localization_status (dead reckoning, the simulator's truth): never "lost".
+  void OnTfEstimate(const spott_ros::RobotPose& pose) {
+    std::lock_guard<std::mutex> lock(mutex);
+    metrics.OnStatus(pose.stamp.toSec(), pose.pose.x, pose.pose.y, pose.pose.theta, false);
   }
   void OnBumper(const spott_msgs::BumperRing& ring) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -118,8 +127,22 @@ struct RunWatch {
     subscribers.push_back(nh.subscribe("/sim/contact", 10, &LegWatcher::OnBodyContact, &watcher));
     subscribers.push_back(nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher));
     subscribers.push_back(nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher));
+    // demo_report's ~estimate_from_tf (validated in its main): sample tf at 5 Hz instead.
+    if (ros::NodeHandle("~").param("estimate_from_tf", false)) {
+      tf = std::make_unique<tf2_ros::Buffer>();
+      listener = std::make_unique<tf2_ros::TransformListener>(*tf);
+      tf_timer = nh.createTimer(ros::Duration(0.2), [this](const ros::TimerEvent&) {
+        try {
+          watcher.OnTfEstimate(spott_ros::LookupRobotPose(*tf, {"map", "odom", "base_link"}));
+        } catch (const tf2::TransformException&) {  // not yet: the next sample
+        }
+      });
+    }
   }
   void Start() { spinner.start(); }
+  std::unique_ptr<tf2_ros::Buffer> tf;
+  std::unique_ptr<tf2_ros::TransformListener> listener;
+  ros::Timer tf_timer;
 };
 
 // False (with why in the report) when the simulator's clock never came.
@@ -215,6 +238,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
   FeedbackLog log;
   RunWatch watch(nh, world);
   LegWatcher& watcher = watch.watcher;
+  if (watch.tf) report.estimate_source = "tf's map -> base_link";
   // What Navigate tells the TR+ controller (recoveries, the global path), overheard.
   watch.subscribers.push_back(watch.nh.subscribe<spott_msgs::NavigateActionFeedback>(
       "harmonic_planner/navigate/feedback", 20,
@@ -285,6 +309,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
   if (!WaitForClock(nh, connect_timeout_s, report)) return report;
   RunWatch watch(nh, world);
   LegWatcher& watcher = watch.watcher;
+  if (watch.tf) report.estimate_source = "tf's map -> base_link";
   watch.Start();
 
   NavigateClient client(nh, "harmonic_planner/navigate", true);
@@ -351,6 +376,7 @@ NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
   if (!WaitForClock(nh, connect_timeout_s, report)) return report;
   RunWatch watch(nh, world);
   LegWatcher& watcher = watch.watcher;
+  if (watch.tf) report.estimate_source = "tf's map -> base_link";
   watch.Start();
   MissionClient client(nh, "mission", true);
   if (!client.waitForServer(ros::Duration(connect_timeout_s))) {
@@ -499,10 +525,10 @@ std::string FormatNavigation(const NavigationReport& report) {
         << " m (centre), bumper contacts: " << leg.bumper_hits
         << ", body contacts (ground truth): " << leg.body_contacts << "\n";
     if (leg.estimates > 0) {
-      out << "     localization error (markov_localization vs ground truth, " << leg.estimates
-          << " estimates): mean " << leg.mean_position_error_m << " m / " << std::setprecision(1)
-          << leg.mean_heading_error_rad * 180.0 / M_PI << " deg, max " << std::setprecision(2)
-          << leg.max_position_error_m << " m / " << std::setprecision(1)
+      out << "     localization error (" << report.estimate_source << " vs ground truth, "
+          << leg.estimates << " estimates): mean " << leg.mean_position_error_m << " m / "
+          << std::setprecision(1) << leg.mean_heading_error_rad * 180.0 / M_PI << " deg, max "
+          << std::setprecision(2) << leg.max_position_error_m << " m / " << std::setprecision(1)
           << leg.max_heading_error_rad * 180.0 / M_PI << " deg; said lost " << leg.lost_reports
           << " times\n"
           << std::setprecision(2);

@@ -65,6 +65,9 @@ struct DemoOptions {
   double goal_tolerance_m = 0.25;  ///< Asked of Navigate and judged on ground truth (m).
   /// A recorder (rosbag record) takes the legs' goals: the first leg waits until it is connected.
   bool wait_for_recorder = false;
+  /// No localization_status (localization truth or odometry): the estimate judged against the
+  /// ground truth is tf's map -> base_link, sampled at 5 Hz (read by the legs' watcher).
+  bool estimate_from_tf = false;
 };
 
 /// Runs the demo against the running stack: reads the world server's latched topics, closes

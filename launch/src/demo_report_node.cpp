@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
         r.Get("leg_timeout_s", o.leg_timeout_s, "s");
         r.Get("goal_tolerance_m", o.goal_tolerance_m, "m");
         r.Get("wait_for_recorder", o.wait_for_recorder);
+        r.Get("estimate_from_tf", o.estimate_from_tf);
         if (o.world_file.empty()) r.Fail("world_file is required");
         r.Require(o.timeout_s > 0, "timeout_s", "> 0", o.timeout_s);
         r.Require(o.leg_timeout_s > 0, "leg_timeout_s", "> 0", o.leg_timeout_s);

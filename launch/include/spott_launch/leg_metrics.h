@@ -69,6 +69,9 @@ struct NavigationReport {
   bool ran = false;                         ///< The navigation stack was up and took goals.
   std::string skipped;                      ///< Why not, when !ran.
   double requested_real_time_factor = 0.0;  ///< The simulator's ~real_time_factor (0 = unknown).
+  /// Whose estimate the legs' localization error is: markov_localization's statuses, or tf's
+  /// map -> base_link for a stack without them (demo_report ~estimate_from_tf).
+  std::string estimate_source = "markov_localization";
   std::vector<NavigationLeg> legs;
 };
 
