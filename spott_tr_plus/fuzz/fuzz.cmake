@@ -21,3 +21,12 @@ spott_ros_fuzzcore(spott_tr_plus_ros HEADER spott_msgs/ConditionState.h
 if(TARGET spott_tr_plus_ros_fuzzcore)
   spott_add_fuzzer(condition_state_fuzz "${CMAKE_CURRENT_LIST_DIR}/condition_state_fuzz.cpp" CORES spott_tr_plus_ros)
 endif()
+
+# The controller's sensor messages (src/ros/sensor_conversions.cpp) into its evidence grids.
+spott_ros_fuzzcore(spott_tr_plus_sensors HEADER spott_msgs/RangeProfile.h
+                   SOURCES "${SPOTT_ROOT}/spott_tr_plus/src/ros/sensor_conversions.cpp"
+                   CORES spott_tr_plus spott_map_ros spott_ros_messages)
+if(TARGET spott_tr_plus_sensors_fuzzcore)
+  spott_add_fuzzer(controller_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/controller_messages_fuzz.cpp"
+                   CORES spott_tr_plus_sensors)
+endif()

@@ -59,11 +59,13 @@
 #include "spott_tr_plus/parser.h"
 #include "spott_tr_plus/ros/conversions.h"
 #include "spott_tr_plus/ros/parameters.h"
+#include "spott_tr_plus/ros/sensor_conversions.h"
 
 namespace spott_tr_plus::controller {
 namespace {
 
 namespace mconv = spott_map::ros_conversions;
+namespace conv = spott_tr_plus::ros_conversions;
 namespace tconv = spott_tr_plus::ros_conversions;
 
 using TaskServer = actionlib::ActionServer<spott_msgs::TaskAction>;
@@ -377,28 +379,10 @@ class ControllerNode : public ControllerIo {
       refusals_->RefuseProblem("world_places", problem);
       return;
     }
-    std::vector<spott_map::Place> places;
-    for (const auto& p : msg.places) {
-      spott_map::Place place;
-      place.name = p.name;
-      place.kind = p.kind;
-      place.pose = mconv::FromPose2D(p.pose);
-      places.push_back(place);
-    }
-    core_->SetPlaces(places);
+    core_->SetPlaces(conv::PlacesFromMsg(msg));
   }
 
   // --- Sensors -------------------------------------------------------------------------------
-
-  static RangeRing ToRing(const spott_msgs::RangeRing& msg) {
-    RangeRing ring;
-    for (const auto& m : msg.mounts) ring.mounts.push_back(Pose2{m.x, m.y, m.theta});
-    ring.ranges.assign(msg.ranges.begin(), msg.ranges.end());
-    ring.min_range_m = msg.min_range;
-    ring.max_range_m = msg.max_range;
-    ring.field_of_view_rad = msg.field_of_view;
-    return ring;
-  }
 
   void UpdatePose() {
     try {
@@ -415,14 +399,13 @@ class ControllerNode : public ControllerIo {
   // would map every reading as "no echo" and clear the sensed obstacles); impossible readings
   // dropped out. nullopt when refused.
   std::optional<RangeRing> CheckedRing(const std::string& topic, const spott_msgs::RangeRing& msg) {
-    if (const std::string problem = spott_ros::RangeRingProblem(msg); !problem.empty()) {
-      refusals_->RefuseProblem(topic, problem);
-      return std::nullopt;
-    }
-    RangeRing ring = ToRing(msg);
-    if (const int i = spott_ros::DiscardImpossibleRanges(msg.max_range, &ring.ranges); i >= 0) {
-      refusals_->Refuse(topic, "ranges", spott_ros::DiscardedReadingWhy(i, msg.ranges[i]));
-    }
+    std::string problem;
+    int discarded = -1;
+    auto ring = conv::RingFromMsg(msg, &problem, &discarded);
+    if (!ring) refusals_->RefuseProblem(topic, problem);
+    if (discarded >= 0)
+      refusals_->Refuse(topic, "ranges",
+                        spott_ros::DiscardedReadingWhy(discarded, msg.ranges[discarded]));
     return ring;
   }
 
@@ -442,11 +425,7 @@ class ControllerNode : public ControllerIo {
   }
 
   void OnBumper(const spott_msgs::BumperRing& msg) {
-    std::vector<double> pressed;
-    for (std::size_t i = 0; i < msg.pressed.size() && i < msg.segment_angles.size(); ++i) {
-      if (msg.pressed[i] && std::isfinite(msg.segment_angles[i]))
-        pressed.push_back(msg.segment_angles[i]);
-    }
+    const std::vector<double> pressed = conv::PressedAngles(msg);
     core_->Bumper(pressed, Now());
     if (!pressed.empty()) AfterEvent();
   }
@@ -469,25 +448,11 @@ class ControllerNode : public ControllerIo {
       ROS_WARN_THROTTLE(10.0, "tr_plus_controller: range profile frame: %s", e.what());
       return;
     }
-    // The points in 3-D in the base frame: a head tilted down sees the floor, which is no
-    // obstacle; only points between ptu/min_height_m and ptu/max_height_m are.
-    const auto& q = t.transform.rotation;
-    const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
-    const Eigen::Vector3d origin(t.transform.translation.x, t.transform.translation.y,
-                                 t.transform.translation.z);
-    if (!origin.allFinite() || rotation.norm() < 1e-6) return;
-    const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
-    std::vector<Vec2> points;
-    for (std::size_t i = 0; i < msg.points.size(); ++i) {
-      if (i < msg.ranges.size() && !(msg.ranges[i] < msg.max_range - 1e-3)) continue;
-      const Eigen::Vector3d p =
-          origin + r * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
-      if (!p.allFinite() || p.z() < params_.ptu_min_height_m || p.z() > params_.ptu_max_height_m) {
-        continue;
-      }
-      points.emplace_back(p.x(), p.y());
-    }
-    core_->RangeProfile(Vec2(origin.x(), origin.y()), points, Now());
+    Vec2 origin;
+    const auto points = conv::ProfilePoints(msg, t.transform, params_.ptu_min_height_m,
+                                            params_.ptu_max_height_m, &origin);
+    if (!points) return;
+    core_->RangeProfile(origin, *points, Now());
   }
 
   void OnOdom(const nav_msgs::Odometry& msg) {
