@@ -16,6 +16,7 @@
 #include <string>
 
 #include "conversions.h"
+#include "fuzz_messages.h"
 #include "fuzz_values.h"
 #include "rpl_executive/noreils_chatila/on_board_modules.h"
 #include "spott_map/ros/conversions.h"
@@ -30,28 +31,14 @@ namespace {
 using spott_fuzz::AnyNumber;
 void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "executive_messages_fuzz", what); }
 void CheckRefusal(const std::string& problem) {
-  Check(problem.find(": ") != std::string::npos && problem.find(": ") > 0,
-        "a refusal without 'field: why'");
+  Check(spott_fuzz::NamesField(problem), "a refusal without 'field: why'");
 }
 bool Finite(const std::string& text) {
   return text.find("nan") == std::string::npos && text.find("inf") == std::string::npos;
 }
 
 void Ring(FuzzedDataProvider& in) {
-  spott_msgs::RangeRing ring;
-  ring.field_of_view = AnyNumber<float>(in, -1.0f, 4.0f);
-  ring.min_range = AnyNumber<float>(in, -1.0f, 2.0f);
-  ring.max_range = AnyNumber<float>(in, -1.0f, 10.0f);
-  const int n = in.ConsumeIntegralInRange<int>(0, 24);
-  for (int i = 0; i < n; ++i) {
-    geometry_msgs::Pose2D m;
-    m.x = AnyNumber<double>(in, -1.0, 1.0);
-    m.y = AnyNumber<double>(in, -1.0, 1.0);
-    m.theta = AnyNumber<double>(in, -7.0, 7.0);
-    ring.mounts.push_back(m);
-  }
-  const int ranges = in.ConsumeBool() ? n : in.ConsumeIntegralInRange<int>(0, 25);
-  for (int i = 0; i < ranges; ++i) ring.ranges.push_back(AnyNumber<float>(in, -1.0f, 12.0f));
+  const spott_msgs::RangeRing ring = spott_fuzz::AnyRangeRing(in);
   const std::string problem = spott_ros::RangeRingProblem(ring);
   if (!problem.empty()) return CheckRefusal(problem);
   const nc::SonarRing belt = conv::RingFromMsg(ring);

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 
+#include "fuzz_messages.h"
 #include "fuzz_values.h"
 #include "spott_map/map_database.h"
 #include "spott_map/ros/conversions.h"
@@ -25,8 +26,7 @@ namespace {
 using spott_fuzz::AnyNumber;
 void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "controller_messages_fuzz", what); }
 void CheckRefusal(const std::string& problem) {
-  Check(problem.find(": ") != std::string::npos && problem.find(": ") > 0,
-        "a refusal without 'field: why'");
+  Check(spott_fuzz::NamesField(problem), "a refusal without 'field: why'");
 }
 
 ctl::Pose2 RobotPose(FuzzedDataProvider& in) {
@@ -46,20 +46,7 @@ void CheckFused(ctl::SensorMapper& mapper, const spott_map::MapDatabase& db) {
 }
 
 void Ring(FuzzedDataProvider& in) {
-  spott_msgs::RangeRing msg;
-  msg.field_of_view = AnyNumber<float>(in, -1.0f, 4.0f);
-  msg.min_range = AnyNumber<float>(in, -1.0f, 2.0f);
-  msg.max_range = AnyNumber<float>(in, -1.0f, 10.0f);
-  const int n = in.ConsumeIntegralInRange<int>(0, 24);
-  for (int i = 0; i < n; ++i) {
-    geometry_msgs::Pose2D m;
-    m.x = AnyNumber<double>(in, -1.0, 1.0);
-    m.y = AnyNumber<double>(in, -1.0, 1.0);
-    m.theta = AnyNumber<double>(in, -7.0, 7.0);
-    msg.mounts.push_back(m);
-  }
-  const int ranges = in.ConsumeBool() ? n : in.ConsumeIntegralInRange<int>(0, 25);
-  for (int i = 0; i < ranges; ++i) msg.ranges.push_back(AnyNumber<float>(in, -1.0f, 12.0f));
+  const spott_msgs::RangeRing msg = spott_fuzz::AnyRangeRing(in);
   std::string problem;
   int discarded = -2;
   const auto ring = conv::RingFromMsg(msg, &problem, &discarded);

@@ -623,6 +623,19 @@ TEST(SensorMapper, AnEchoOfAJambInTheConeIsNoPhantomOnTheAxis) {
   EXPECT_EQ(m.Take(db).features.size(), 1u);
 }
 
+// Found by controller_messages_fuzz (under UBSan): a profile's sample 1.6e39 m away overflowed
+// the int cell index. Such points are outside the grid: nothing is mapped, no evidence read.
+TEST(SensorMapper, APointFarBeyondTheGridIsOutsideIt) {
+  const spott_map::MapDatabase empty;
+  SensorMapper m("quadris", MappingParameters{}, DoorSensingParameters{}, true);
+  const Pose2 robot{5.0, 8.25, 0.0};
+  m.SetMap(empty, robot.Position());
+  for (int k = 0; k < 4; ++k) m.AddPoints(Vec2(0.1, 0), {Vec2(1.6e39, 0), Vec2(0, -3e38)}, robot);
+  EXPECT_TRUE(m.Take(empty).features.empty());
+  EXPECT_EQ(m.Score(Vec2(1.6e39, 8.25)), 0);
+  EXPECT_EQ(m.Score(Vec2(5.0, -1e300)), 0);
+}
+
 TEST(SensorMapper, ForgetDropsTheEvidenceGatheredSoFar) {
   const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);

@@ -162,9 +162,14 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db, const std::optional<
 }
 
 bool SensorMapper::CellOf(const Vec2& p, int* ix, int* iy) const {
-  *ix = static_cast<int>(std::floor((p.x() - origin_.x()) / p_.cell_m));
-  *iy = static_cast<int>(std::floor((p.y() - origin_.y()) / p_.cell_m));
-  return *ix >= 0 && *iy >= 0 && *ix < width_ && *iy < height_;
+  // Compared before the cast: a point 1e39 m away (a profile's finite but absurd sample) would
+  // overflow an int (found by controller_messages_fuzz).
+  const double fx = std::floor((p.x() - origin_.x()) / p_.cell_m);
+  const double fy = std::floor((p.y() - origin_.y()) / p_.cell_m);
+  if (!(fx >= 0 && fy >= 0 && fx < width_ && fy < height_)) return false;
+  *ix = static_cast<int>(fx);
+  *iy = static_cast<int>(fy);
+  return true;
 }
 
 int SensorMapper::Score(const Vec2& p) const {
