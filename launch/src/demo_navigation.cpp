@@ -120,15 +120,16 @@ struct RunWatch {
   std::vector<ros::Subscriber> subscribers;
   ros::AsyncSpinner spinner{1, &queue};
 
-  RunWatch(ros::NodeHandle& parent, const spott_map::World& world) : watcher(world), nh(parent) {
+  RunWatch(ros::NodeHandle& parent, const spott_map::World& world, bool estimate_from_tf)
+      : watcher(world), nh(parent) {
     nh.setCallbackQueue(&queue);
     subscribers.push_back(nh.subscribe("/sim/ground_truth", 200, &LegWatcher::OnTruth, &watcher));
     subscribers.push_back(nh.subscribe("/bumper", 10, &LegWatcher::OnBumper, &watcher));
     subscribers.push_back(nh.subscribe("/sim/contact", 10, &LegWatcher::OnBodyContact, &watcher));
     subscribers.push_back(nh.subscribe("global_path", 5, &LegWatcher::OnGlobalPath, &watcher));
     subscribers.push_back(nh.subscribe("localization_status", 20, &LegWatcher::OnStatus, &watcher));
-    // demo_report's ~estimate_from_tf (validated in its main): sample tf at 5 Hz instead.
-    if (ros::NodeHandle("~").param("estimate_from_tf", false)) {
+    // No localization_status (truth, dead reckoning): sample tf at 5 Hz instead.
+    if (estimate_from_tf) {
       tf = std::make_unique<tf2_ros::Buffer>();
       listener = std::make_unique<tf2_ros::TransformListener>(*tf);
       tf_timer = nh.createTimer(ros::Duration(0.2), [this](const ros::TimerEvent&) {
@@ -230,13 +231,14 @@ std::string CompactTrace(const std::vector<std::string>& trace) {
 
 NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
                           const std::vector<std::string>& tasks, double leg_timeout_s,
-                          double connect_timeout_s, double goal_tolerance_m) {
+                          double connect_timeout_s, double goal_tolerance_m,
+                          bool estimate_from_tf) {
   using TaskClient = actionlib::SimpleActionClient<spott_msgs::TaskAction>;
   NavigationReport report;
   report.by_task = true;
   if (!WaitForClock(nh, connect_timeout_s, report)) return report;
   FeedbackLog log;
-  RunWatch watch(nh, world);
+  RunWatch watch(nh, world, estimate_from_tf);
   LegWatcher& watcher = watch.watcher;
   if (watch.tf) report.estimate_source = "tf's map -> base_link";
   // What Navigate tells the TR+ controller (recoveries, the global path), overheard.
@@ -304,10 +306,11 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
 
 NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& world,
                                const std::vector<std::string>& goals, double leg_timeout_s,
-                               double connect_timeout_s, double goal_tolerance_m) {
+                               double connect_timeout_s, double goal_tolerance_m,
+                               bool estimate_from_tf) {
   NavigationReport report;
   if (!WaitForClock(nh, connect_timeout_s, report)) return report;
-  RunWatch watch(nh, world);
+  RunWatch watch(nh, world, estimate_from_tf);
   LegWatcher& watcher = watch.watcher;
   if (watch.tf) report.estimate_source = "tf's map -> base_link";
   watch.Start();
@@ -369,12 +372,13 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
 
 NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
                              const std::vector<MissionSpec>& missions, double leg_timeout_s,
-                             double connect_timeout_s, double goal_tolerance_m) {
+                             double connect_timeout_s, double goal_tolerance_m,
+                             bool estimate_from_tf) {
   using MissionClient = actionlib::SimpleActionClient<spott_msgs::MissionAction>;
   NavigationReport report;
   report.by_mission = true;
   if (!WaitForClock(nh, connect_timeout_s, report)) return report;
-  RunWatch watch(nh, world);
+  RunWatch watch(nh, world, estimate_from_tf);
   LegWatcher& watcher = watch.watcher;
   if (watch.tf) report.estimate_source = "tf's map -> base_link";
   watch.Start();

@@ -20,7 +20,8 @@ namespace spott_launch {
 /// judged on /sim/ground_truth and /bumper from robot_sim with `goal_tolerance_m`.
 NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& world,
                                const std::vector<std::string>& goals, double leg_timeout_s,
-                               double connect_timeout_s, double goal_tolerance_m);
+                               double connect_timeout_s, double goal_tolerance_m,
+                               bool estimate_from_tf = false);
 
 /// Gives the TR+ controller each command of `tasks` on /task (spott_msgs/Task), one after the
 /// other, each within `leg_timeout_s` of simulated time, and judges each leg on
@@ -31,7 +32,8 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
 /// feedback.
 NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
                           const std::vector<std::string>& tasks, double leg_timeout_s,
-                          double connect_timeout_s, double goal_tolerance_m);
+                          double connect_timeout_s, double goal_tolerance_m,
+                          bool estimate_from_tf = false);
 
 /// Gives rpl_executive each of `missions` on /mission (spott_msgs/Mission: a shipped RPL plan or
 /// Noreils-Chatila mission), one after the other, each within `leg_timeout_s` of simulated time.
@@ -40,7 +42,11 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
 /// within `goal_tolerance_m`, and no bumper was pressed and the body touched nothing.
 NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
                              const std::vector<MissionSpec>& missions, double leg_timeout_s,
-                             double connect_timeout_s, double goal_tolerance_m);
+                             double connect_timeout_s, double goal_tolerance_m,
+                             bool estimate_from_tf = false);
+
+/// `estimate_from_tf` (each of the three): the stack publishes no localization_status (truth or
+/// dead reckoning); the legs' localization error is tf's map -> base_link, sampled at 5 Hz.
 
 /// "SPOTT[2], INTERPRET_TASK[1], MAP_OBJECTS_WITH_SONAR[1] x3, ...": the trace's rules by
 /// program and index, repeats in a row counted.

@@ -282,13 +282,14 @@ DemoReport RunDemoSteps(ros::NodeHandle& nh, const DemoOptions& options) {
   }
   if (!options.tasks.empty()) {
     report.navigation = RunTasks(nh, *scenario.world, options.tasks, options.leg_timeout_s,
-                                 timeout_s, options.goal_tolerance_m);
+                                 timeout_s, options.goal_tolerance_m, options.estimate_from_tf);
   } else if (!options.goals.empty()) {
-    report.navigation = RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s,
-                                      timeout_s, options.goal_tolerance_m);
+    report.navigation =
+        RunNavigation(nh, *scenario.world, options.goals, options.leg_timeout_s, timeout_s,
+                      options.goal_tolerance_m, options.estimate_from_tf);
   } else if (!options.missions.empty()) {
     report.navigation = RunMissions(nh, *scenario.world, options.missions, options.leg_timeout_s,
-                                    timeout_s, options.goal_tolerance_m);
+                                    timeout_s, options.goal_tolerance_m, options.estimate_from_tf);
   }
   report.ok = true;
   report.elapsed_s = (ros::WallTime::now() - start).toSec();

@@ -66,7 +66,7 @@ struct DemoOptions {
   /// A recorder (rosbag record) takes the legs' goals: the first leg waits until it is connected.
   bool wait_for_recorder = false;
   /// No localization_status (localization truth or odometry): the estimate judged against the
-  /// ground truth is tf's map -> base_link, sampled at 5 Hz (read by the legs' watcher).
+  /// ground truth is tf's map -> base_link, sampled at 5 Hz.
   bool estimate_from_tf = false;
 };
 
