@@ -15,6 +15,7 @@
 
 #include "spott_move_base/conversions.h"
 #include "spott_move_base/parameters.h"
+#include "spott_ros/goal_ack_watch.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace spott_move_base {
@@ -35,6 +36,8 @@ class MoveBaseNode {
     server_.registerPreemptCallback([this] { OnPreempt(); });
     server_.start();
     simple_sub_ = nh.subscribe("move_base_simple/goal", 1, &MoveBaseNode::OnSimpleGoal, this);
+    ack_timer_ = nh.createSteadyTimer(
+        ros::WallDuration(0.5), [this](const ros::SteadyTimerEvent&) { CheckAcknowledged(); });
     ROS_INFO("move_base: /move_base and /move_base_simple/goal map onto %s",
              p.navigate_action.c_str());
   }
@@ -48,9 +51,17 @@ class MoveBaseNode {
                          "the Navigate server " + params_.navigate_action + " is not offered");
       return;
     }
-    const int generation = ++generation_;
+    ++generation_;
+    navigate_goal_ = ToNavigateGoal(*goal);
+    PublishNavigate();
+  }
+
+  // Sends navigate_goal_ (again, when actionlib lost it: spott_ros/goal_ack_watch.h).
+  void PublishNavigate() {
+    const int generation = generation_;
+    ack_watch_.Sent(ros::WallTime::now().toSec());
     navigate_.sendGoal(
-        ToNavigateGoal(*goal),
+        navigate_goal_,
         [this, generation](const actionlib::SimpleClientGoalState&,
                            const spott_msgs::NavigateResultConstPtr& result) {
           OnDone(generation, result);
@@ -85,8 +96,25 @@ class MoveBaseNode {
     }
   }
 
+  void CheckAcknowledged() {
+    if (!server_.isActive()) {
+      ack_watch_.Stop();
+      return;
+    }
+    if (!ack_watch_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
+                                 ros::WallTime::now().toSec())) {
+      return;
+    }
+    ROS_WARN(
+        "move_base: %s did not acknowledge the goal within %.1f s (lost in transport): "
+        "sent again",
+        params_.navigate_action.c_str(), ack_watch_.timeout_s());
+    PublishNavigate();
+  }
+
   void OnPreempt() {
     ++generation_;  // the Navigate goal's late end is not this goal's
+    ack_watch_.Stop();
     navigate_.cancelGoal();
     server_.setPreempted(move_base_msgs::MoveBaseResult(), "preempted");
   }
@@ -103,6 +131,9 @@ class MoveBaseNode {
   MoveBaseServer server_;
   MoveBaseClient self_;
   ros::Subscriber simple_sub_;
+  ros::SteadyTimer ack_timer_;
+  spott_msgs::NavigateGoal navigate_goal_;  ///< The running goal, kept to send it again.
+  spott_ros::GoalAckWatch ack_watch_;
   std::atomic<int> generation_{0};
 };
 
