@@ -88,7 +88,17 @@ void ActiveLocalizeServer::CancelNavigation() {
   if (!navigating_) return;
   ++generation_;  // its result, if any comes, is stale
   navigating_ = false;
+  nav_ack_.Stop();
   nav_->cancelGoal();
+}
+
+void ActiveLocalizeServer::PublishNavigate() {
+  const int generation = generation_;
+  nav_ack_.Sent(ros::WallTime::now().toSec());
+  nav_->sendGoal(nav_goal_, [this, generation](const actionlib::SimpleClientGoalState& state,
+                                               const spott_msgs::NavigateResultConstPtr& result) {
+    OnNavigationDone(generation, state, result);
+  });
 }
 
 void ActiveLocalizeServer::StopMotion() {
@@ -167,14 +177,11 @@ void ActiveLocalizeServer::Choose(const LocalizationUpdate& u, const RunInput& i
   feedback_.target_relative.y = choice.ay;
   feedback_.expected_entropy = choice.expected_entropy;
   feedback_.expected_cost = choice.cost;
-  const int generation = ++generation_;
+  ++generation_;
   navigating_ = true;
-  nav_->sendGoal(
-      conv::NavigateGoalTo(target, params_.position_tolerance_m, params_.map_frame, u.stamp),
-      [this, generation](const actionlib::SimpleClientGoalState& state,
-                         const spott_msgs::NavigateResultConstPtr& result) {
-        OnNavigationDone(generation, state, result);
-      });
+  nav_goal_ =
+      conv::NavigateGoalTo(target, params_.position_tolerance_m, params_.map_frame, u.stamp);
+  PublishNavigate();
   ROS_INFO(
       "markov_localization: a* = (%.2f ahead, %.2f left) -> (%.2f, %.2f) in %s; E[H] %.3f, "
       "v %.3f, %zu modes",
@@ -212,6 +219,15 @@ void ActiveLocalizeServer::Update(const LocalizationUpdate& u) {
   if (!server_.isActive() || !request_ || !u.localizer || !u.modes) return;
   const RunInput in = InputOf(u);
   last_input_ = in;
+  if (navigating_ &&
+      nav_ack_.ShouldResend(nav_->getState() == actionlib::SimpleClientGoalState::PENDING,
+                            ros::WallTime::now().toSec())) {
+    ROS_WARN(
+        "markov_localization: %s did not acknowledge the goal within %.1f s (lost in "
+        "transport): sent again",
+        params_.navigate_action.c_str(), nav_ack_.timeout_s());
+    PublishNavigate();
+  }
   if (!run_) {
     // From a uniform belief (or one without modes) the paper's random motion comes first.
     const bool random_first = request_->start_uniform || u.modes->empty();

@@ -20,6 +20,7 @@
 #include "markov_localization/active_run.h"
 #include "markov_localization/ros/parameters.h"
 #include "markov_localization/wander.h"
+#include "spott_ros/goal_ack_watch.h"
 
 namespace markov_localization {
 
@@ -60,6 +61,8 @@ class ActiveLocalizeServer {
                         const spott_msgs::NavigateResultConstPtr& result);
   void Choose(const LocalizationUpdate& u, const RunInput& in);
   void CancelNavigation();
+  /// Sends nav_goal_ for generation_ (again, when actionlib lost it).
+  void PublishNavigate();
   void StopMotion();
   void Finish(bool success, std::string reason, const LocalizationUpdate& u);
   RunInput InputOf(const LocalizationUpdate& u) const;
@@ -74,6 +77,8 @@ class ActiveLocalizeServer {
   std::unique_ptr<Wanderer> wanderer_;
   std::uint64_t runs_ = 0;
   int generation_ = 0;  ///< Of the Navigate goal in flight; stale results are ignored.
+  spott_msgs::NavigateGoal nav_goal_;  ///< The goal in flight, kept to send it again.
+  spott_ros::GoalAckWatch nav_ack_;
   bool navigating_ = false;
   bool wandering_ = false;
   RunInput last_input_;

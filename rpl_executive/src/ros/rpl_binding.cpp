@@ -81,6 +81,14 @@ RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters
       hints);
   cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel/" + params.wheels_source, 5);
   watchdog_timer_ = nh.createTimer(ros::Duration(0.5), [this](const ros::TimerEvent&) {
+    if (nav_ack_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
+                              ros::WallTime::now().toSec())) {
+      ROS_WARN(
+          "rpl_executive: %s did not acknowledge the goal within %.1f s (lost in "
+          "transport): sent again",
+          params_.navigate_action.c_str(), nav_ack_.timeout_s());
+      PublishNavigate();
+    }
     tracking_->OnTime(Now());
     Tick();
   });
@@ -241,8 +249,15 @@ void RplBinding::SendGoal(const office::Point& target, double tolerance_m, doubl
     });
     return;
   }
-  navigate_.sendGoal(goal, [this, generation](const actionlib::SimpleClientGoalState& s,
-                                              const spott_msgs::NavigateResultConstPtr& r) {
+  nav_goal_ = goal;
+  PublishNavigate();
+}
+
+void RplBinding::PublishNavigate() {
+  const int generation = nav_generation_;
+  nav_ack_.Sent(ros::WallTime::now().toSec());
+  navigate_.sendGoal(nav_goal_, [this, generation](const actionlib::SimpleClientGoalState& s,
+                                                   const spott_msgs::NavigateResultConstPtr& r) {
     Post([this, generation, s, r] { OnNavigateDone(generation, s, r); });
   });
 }
@@ -263,6 +278,7 @@ void RplBinding::Post(std::function<void()> fn) {
 
 void RplBinding::CancelGoal(double) {
   ++nav_generation_;  // a result that still comes belongs to the cancelled goal
+  nav_ack_.Stop();
   if (navigate_.isServerConnected()) navigate_.cancelGoal();
 }
 

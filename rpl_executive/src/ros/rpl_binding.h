@@ -35,6 +35,7 @@
 #include "parameters.h"
 #include "rpl_executive/rpl/executive.h"
 #include "rpl_executive/rpl/office_modules.h"
+#include "spott_ros/goal_ack_watch.h"
 #include "spott_ros/input_refusals.h"
 
 namespace rpl_executive {
@@ -106,6 +107,8 @@ class RplBinding : public rpl::office::NavigateClient,
   /// client DONE after the callback, so a goal sent inside it would never report its result
   /// ("BUG: Got a transition to CommState [ACTIVE] when in SimpleGoalState [DONE]").
   void Post(std::function<void()> fn);
+  /// Sends nav_goal_ for generation nav_generation_ (again, when actionlib lost it).
+  void PublishNavigate();
 
   ros_parameters::NodeParameters params_;
   std::function<void()> changed_;
@@ -122,6 +125,8 @@ class RplBinding : public rpl::office::NavigateClient,
   NavigateClientT navigate_;
   ActiveClientT active_;
   int nav_generation_ = 0, active_generation_ = 0;
+  spott_msgs::NavigateGoal nav_goal_;  ///< The last goal sent, kept to send it again.
+  spott_ros::GoalAckWatch nav_ack_;
   ros::ServiceClient take_, release_, limits_, global_, sonar_;
   ros::Subscriber status_sub_, graph_sub_, places_sub_, arbiter_sub_, planner_sub_, wander_sub_;
   ros::Publisher cmd_pub_;

@@ -47,6 +47,7 @@
 #include <optional>
 
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/goal_ack_watch.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
@@ -170,9 +171,19 @@ class ControllerNode : public ControllerIo {
       ROS_WARN_THROTTLE(5.0, "tr_plus_controller: %s is not connected yet; the goal is sent anyway",
                         params_.navigate_action.c_str());
     }
-    const std::uint64_t seq = g.seq;
+    navigate_goal_ = goal;
+    navigate_seq_ = g.seq;
+    PublishNavigate();
+    ROS_INFO("tr_plus_controller: Navigate to (%.2f, %.2f) [goal %lu]", g.x, g.y,
+             static_cast<unsigned long>(g.seq));
+  }
+
+  // Sends navigate_goal_ (again, when actionlib lost it: spott_ros/goal_ack_watch.h).
+  void PublishNavigate() {
+    const std::uint64_t seq = navigate_seq_;
+    ack_watch_.Sent(ros::WallTime::now().toSec());
     navigate_.sendGoal(
-        goal,
+        navigate_goal_,
         [this, seq](const actionlib::SimpleClientGoalState&,
                     const spott_msgs::NavigateResultConstPtr& result) {
           pending_done_.push_back(
@@ -184,11 +195,10 @@ class ControllerNode : public ControllerIo {
         [this, seq](const spott_msgs::NavigateFeedbackConstPtr& fb) {
           core_->NavigateFeedback(seq, fb->distance_remaining, Now());
         });
-    ROS_INFO("tr_plus_controller: Navigate to (%.2f, %.2f) [goal %lu]", g.x, g.y,
-             static_cast<unsigned long>(seq));
   }
 
   void CancelNavigate() override {
+    ack_watch_.Stop();
     if (navigate_.getState().isDone()) return;
     navigate_.cancelGoal();
   }
@@ -474,6 +484,15 @@ class ControllerNode : public ControllerIo {
 
   void OnTick(const ros::TimerEvent&) {
     const double now = Now();
+    if (ack_watch_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
+                                ros::WallTime::now().toSec())) {
+      ROS_WARN(
+          "tr_plus_controller: %s did not acknowledge goal %lu within %.1f s (lost in "
+          "transport): sent again",
+          params_.navigate_action.c_str(), static_cast<unsigned long>(navigate_seq_),
+          ack_watch_.timeout_s());
+      PublishNavigate();
+    }
     UpdatePose();
     if (params_.assume_localized) core_->SetLocalization(true, now);
     for (const auto& d : pending_done_) core_->NavigateDone(d.seq, d.outcome, d.reason, now);
@@ -570,6 +589,9 @@ class ControllerNode : public ControllerIo {
   tf2_ros::TransformListener tf_listener_;
   TaskServer task_server_;
   NavigateClient navigate_;
+  spott_msgs::NavigateGoal navigate_goal_;  ///< The last goal sent, kept to send it again.
+  std::uint64_t navigate_seq_ = 0;
+  spott_ros::GoalAckWatch ack_watch_;
   std::unique_ptr<NavigationController> core_;
   std::map<std::string, std::vector<int>> parents_;
   std::string verdict_;
