@@ -1,5 +1,7 @@
 #include "spott_harmonic_planner/local_planner.h"
 
+#include "spott_harmonic_planner/border_exploration.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -177,6 +179,7 @@ void LocalPlanner::PlaceGoal() {
   status_.problem.clear();
   status_.has_goal = false;
   status_.border_widened = false;
+  status_.exploring = false;
   status_.goal_snapped_m = 0.0;
   if (!goal_) return;
   const spott_map::Box b = window_.bounds();
@@ -242,6 +245,27 @@ void LocalPlanner::PlaceGoal() {
   status_.has_goal = ok;
 }
 
+void LocalPlanner::ExploreIfCutOff() {
+  // The global planner's projection follows the room/door graph: never second-guessed here.
+  if (!goal_ || border_goal_) return;
+  const auto c = field_.CellOf(pose_.Position());
+  if (!c) return;
+  const FieldCell kind = field_.cell(c->first, c->second);
+  // Cut off: the robot's free cell is not connected to the goal's, or the projection's border
+  // cells are all blocked. In the padding steering escapes first; a point goal inside a sensed
+  // obstacle stays refused.
+  const bool blocked_projection = !status_.has_goal && !window_.bounds().Contains(*goal_);
+  if (kind != FieldCell::kUnreachable && !blocked_projection) return;
+  const auto frontier = NearestReachableBorderCell(field_, pose_.Position(), *goal_);
+  if (!frontier) return;
+  const double r = window_.raster().resolution();
+  if (!field_.SetGoalSegment(spott_map::Segment{*frontier, *frontier}, 0.75 * r)) return;
+  field_.ColdStart();
+  status_.problem.clear();
+  status_.has_goal = true;
+  status_.exploring = true;
+}
+
 std::optional<Vec2> LocalPlanner::NearestFreeCell(const Vec2& p, double radius_m) const {
   const auto c = field_.CellOf(p);
   if (!c) return std::nullopt;
@@ -286,6 +310,7 @@ PlannerStatus LocalPlanner::Cycle() {
     PlaceGoal();
     goal_dirty_ = false;
   }
+  if (params_.explore_when_cut_off) ExploreIfCutOff();
   if (field_.HasGoal() && status_.has_goal) {  // (a)
     // Resolved where descent from the robot goes; a converged field is not iterated again until
     // the map, the goal or the robot's place asks for more.

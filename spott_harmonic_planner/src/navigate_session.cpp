@@ -111,7 +111,7 @@ void NavigateSession::Update(double now_s) {
 }
 
 void NavigateSession::Steered(bool valid, bool escaping, bool border_widened,
-                              const std::string& reason) {
+                              const std::string& reason, bool exploring) {
   if (phase_ != NavigatePhase::kDriving && phase_ != NavigatePhase::kRecovering) return;
   if (backoff_) return;
   bad_cycles_ = valid ? 0 : bad_cycles_ + 1;
@@ -124,7 +124,9 @@ void NavigateSession::Steered(bool valid, bool escaping, bool border_widened,
                      : "the projected border goal was blocked: widened";
     SetPhase(NavigatePhase::kRecovering);
   } else {
-    note_.clear();
+    note_ = valid && exploring ? "exploring: the goal is cut off by sensed obstacles in the "
+                                 "window; heading for the reachable border nearest it"
+                               : "";
     SetPhase(NavigatePhase::kDriving);
   }
 }

@@ -155,6 +155,13 @@ TEST(NavigateSession, EscapingAndWideningAreRecoveringEpisodes) {
   s.Steered(true, false, true, "");
   EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
   EXPECT_EQ(s.recoveries(), 2);
+  // Exploring is driving, said in the note; the next plain cycle clears it.
+  s.Steered(true, false, false, "", true);
+  EXPECT_EQ(s.phase(), NavigatePhase::kDriving);
+  EXPECT_NE(s.note().find("exploring"), std::string::npos);
+  s.Steered(true, false, false, "");
+  EXPECT_TRUE(s.note().empty());
+  EXPECT_EQ(s.recoveries(), 2);
 }
 
 TEST(NavigateSession, NoDescentForUnreachableCyclesIsUnreachable) {

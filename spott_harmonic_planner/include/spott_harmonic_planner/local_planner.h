@@ -32,6 +32,9 @@ struct PlannerParameters {
   int sweeps_per_cycle = 4;
   double goal_tolerance_m = 0.2;          ///< Success radius (m), > 0.
   double border_goal_half_width_m = 0.6;  ///< Half length of a projected border goal (m), > 0.
+  /// No map beyond the window (no global planner): a goal the sensed obstacles cut off from the
+  /// robot is sought through the reachable border cell nearest it (border_exploration.h).
+  bool explore_when_cut_off = false;
 };
 
 /// Every violation, named as the parameter is named in config/harmonic_planner.yaml.
@@ -52,6 +55,9 @@ struct PlannerStatus {
   bool goal_on_border = false;
   bool recentred = false;       ///< This cycle moved the window (step f).
   bool border_widened = false;  ///< The border goal's own cells were blocked: it was widened.
+  /// The goal was cut off from the robot: the field leads to the reachable border cell nearest
+  /// it (explore_when_cut_off).
+  bool exploring = false;
   /// The point goal lay in the padding: aimed at the free cell this far from it (m), else 0.
   double goal_snapped_m = 0.0;
   std::string problem;  ///< Non-empty when the goal cannot be placed (blocked, ...).
@@ -101,6 +107,7 @@ class LocalPlanner {
 
  private:
   void PlaceGoal();
+  void ExploreIfCutOff();
   std::optional<Vec2> NearestFreeCell(const Vec2& p, double radius_m) const;
 
   PlannerParameters params_;

@@ -98,7 +98,10 @@ class NavigateSession {
   void Update(double now_s);
   /// Driving: the steering answer of this cycle (`valid`, and whether it escapes the padding)
   /// and whether the border goal had to be widened. Counts cycles without a descent.
-  void Steered(bool valid, bool escaping, bool border_widened, const std::string& reason);
+  /// `exploring`: the goal is cut off in the window and the field leads to the border (said in
+  /// the feedback's note while DRIVING).
+  void Steered(bool valid, bool escaping, bool border_widened, const std::string& reason,
+               bool exploring = false);
   /// While backing off: the velocity (m/s along x, rad/s) at odometry pose `odom`; nullopt once
   /// the back-off distance is covered (the session is DRIVING again).
   std::optional<double> BackOff(const spott_map::Pose2& odom);

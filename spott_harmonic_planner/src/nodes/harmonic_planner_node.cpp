@@ -446,7 +446,8 @@ class HarmonicPlannerNode {
         planner_.Steer(request_.mode, request_.bias.HeadingAt(planner_.pose().Position()));
     const double remaining = planner_.DistanceToGoal();
     steering_pub_.publish(conv::ToSteering(cmd, request_.mode, remaining, params_.frame_id, now));
-    session_->Steered(cmd.valid, cmd.escaping, planner_.status().border_widened, cmd.reason);
+    session_->Steered(cmd.valid, cmd.escaping, planner_.status().border_widened, cmd.reason,
+                      planner_.status().exploring);
     if (session_->finished()) {
       Finish();
       return remaining;

@@ -52,6 +52,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("navigate/unreachable_cycles", n.unreachable_cycles);
   r.Get("navigate/planning_timeout_s", n.planning_timeout_s, "s");
   r.Get("navigate/use_global_planner", n.use_global_planner);
+  // Without the global planner there is no map beyond the window to route by: explore.
+  p.planner.explore_when_cut_off = !n.use_global_planner;
   r.Get("navigate/backoff_distance_m", n.backoff_distance_m, "m");
   r.Get("navigate/backoff_speed_mps", n.backoff_speed_mps, "m/s");
   r.Get("navigate/arrival_stall_s", n.arrival_stall_s, "s");
