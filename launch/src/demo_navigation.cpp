@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <mutex>
@@ -27,6 +28,7 @@
 #include "spott_map/geometry.h"
 #include "spott_map/map_feature.h"
 #include "spott_move_base/conversions.h"
+#include "spott_ros/goal_ack_watch.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_pose.h"
 #include "spott_tr_plus/task_command.h"
@@ -156,11 +158,22 @@ bool WaitForClock(ros::NodeHandle& nh, double connect_timeout_s, NavigationRepor
   return true;
 }
 
-// Waits until the goal ends or the leg's time (simulated) runs out; true when it ended.
+// Sends the goal (`send`) and waits until it ends or the leg's time (simulated) runs out; true
+// when it ended. A goal the server never acknowledges (lost in transport) is sent again.
 template <class Client>
-bool WaitForEnd(Client& client, const ros::Time& started, double leg_timeout_s) {
+bool SendAndWait(Client& client, const std::function<void()>& send, const ros::Time& started,
+                 double leg_timeout_s) {
+  spott_ros::GoalAckWatch ack;
+  send();
+  ack.Sent(ros::WallTime::now().toSec());
   while (ros::ok() && (ros::Time::now() - started).toSec() < leg_timeout_s) {
-    if (client.getState().isDone()) return true;
+    const auto state = client.getState();
+    if (state.isDone()) return true;
+    if (ack.ShouldResend(state == actionlib::SimpleClientGoalState::PENDING,
+                         ros::WallTime::now().toSec())) {
+      ROS_WARN("demo: the goal was not acknowledged within %.1f s: sent again", ack.timeout_s());
+      send();
+    }
     ros::WallDuration(0.05).sleep();
   }
   return false;
@@ -269,9 +282,14 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     spott_msgs::TaskGoal goal;
     goal.command = command;
     DoneTime done_time;
-    client.sendGoal(goal, [&done_time](const actionlib::SimpleClientGoalState&,
+    const bool done = SendAndWait(
+        client,
+        [&] {
+          client.sendGoal(goal,
+                          [&done_time](const actionlib::SimpleClientGoalState&,
                                        const spott_msgs::TaskResultConstPtr&) { done_time.Set(); });
-    const bool done = WaitForEnd(client, started, leg_timeout_s);
+        },
+        started, leg_timeout_s);
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     spott_msgs::TaskResultConstPtr result;
     if (done) {
@@ -339,13 +357,18 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     // Navigate waits in PLANNING for the pose and the global planner's answer: nothing to
     // prepare here but the goal.
     DoneTime done_time;
-    client.sendGoal(
-        NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m),
-        [&done_time](const actionlib::SimpleClientGoalState&,
-                     const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
-        NavigateClient::SimpleActiveCallback(),
-        [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(*fb); });
-    const bool done = WaitForEnd(client, started, leg_timeout_s);
+    const auto goal = NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m);
+    const bool done = SendAndWait(
+        client,
+        [&] {
+          client.sendGoal(
+              goal,
+              [&done_time](const actionlib::SimpleClientGoalState&,
+                           const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
+              NavigateClient::SimpleActiveCallback(),
+              [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(*fb); });
+        },
+        started, leg_timeout_s);
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     bool succeeded = false;
     if (done) {
@@ -406,10 +429,14 @@ NavigationReport RunMissions(ros::NodeHandle& nh, const spott_map::World& world,
       started = ros::Time::now();
       leg.start_sim_s = started.toSec();
       watcher.Reset(started);
-      client.sendGoal(goal,
-                      [&done_time](const actionlib::SimpleClientGoalState&,
+      done = SendAndWait(
+          client,
+          [&] {
+            client.sendGoal(
+                goal, [&done_time](const actionlib::SimpleClientGoalState&,
                                    const spott_msgs::MissionResultConstPtr&) { done_time.Set(); });
-      done = WaitForEnd(client, started, leg_timeout_s);
+          },
+          started, leg_timeout_s);
       const auto early = client.getResult();
       if (!done || !early || early->outcome != "rejected" ||
           early->message.find("not ready") == std::string::npos ||
