@@ -123,8 +123,8 @@ const SensorFault* Simulator::ActiveFault(Robot& r, const std::string& key) {
   return &it->second;
 }
 
-void Simulator::ApplyFaults(Robot& r, const std::string& name, std::vector<double>& values,
-                            Rng& rng) {
+void Simulator::ApplyFaults(Robot& r, const std::string& name, double min_range, double max_range,
+                            std::vector<double>& values, Rng& rng) {
   std::vector<double>& last = r.last[name];
   if (last.size() != values.size()) last = values;
   std::normal_distribution<double> unit(0.0, 1.0);
@@ -141,7 +141,7 @@ void Simulator::ApplyFaults(Robot& r, const std::string& name, std::vector<doubl
         break;
       case FaultKind::kNoise:
         if (std::isfinite(values[i]))
-          values[i] = std::max(0.0, values[i] + unit(rng) * f->noise_stddev);
+          values[i] = std::clamp(values[i] + unit(rng) * f->noise_stddev, min_range, max_range);
         break;
     }
   }
@@ -156,7 +156,7 @@ std::vector<double> Simulator::SenseRing(int robot, const RangeRingSpec& ring, R
   poses.reserve(ring.mounts.size());
   for (const Mount& m : ring.mounts) poses.push_back(PlaceMount(m, r.pose, r.turret_yaw));
   std::vector<double> ranges = SenseRangeRing(*world_, ring, poses, r.body, rng);
-  ApplyFaults(r, ring.name, ranges, rng);
+  ApplyFaults(r, ring.name, ring.min_range, ring.max_range, ranges, rng);
   return ranges;
 }
 
@@ -166,7 +166,7 @@ std::vector<double> Simulator::SenseLaser(int robot, Rng& rng) {
   const LaserSpec& laser = *r.spec.laser;
   std::vector<double> ranges =
       robot_sim::SenseLaser(*world_, laser, PlaceMount(laser.mount, r.pose, 0.0), r.body, rng);
-  ApplyFaults(r, laser.name, ranges, rng);
+  ApplyFaults(r, laser.name, laser.min_range, laser.max_range, ranges, rng);
   return ranges;
 }
 
@@ -179,7 +179,7 @@ std::vector<double> Simulator::SenseProfile(int robot, int index, bool horizonta
   head.yaw = NormalizeAngle(head.yaw + r.heads[index].first);
   std::vector<double> ranges = robot_sim::SenseProfile(*world_, p, head, r.heads[index].second,
                                                        horizontal, r.body, rng, angles);
-  ApplyFaults(r, p.name, ranges, rng);
+  ApplyFaults(r, p.name, p.min_range, p.max_range, ranges, rng);
   return ranges;
 }
 

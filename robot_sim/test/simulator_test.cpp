@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 
 #include "robot_sim/node_parameters.h"
 #include "robot_sim/simulator.h"
@@ -271,6 +272,35 @@ TEST_F(SimulatorTest, StuckSensorRepeatsItsLastReading) {
   EXPECT_EQ(sim_->SenseRing(id_, sonar, rng_)[0], before);
   ASSERT_TRUE(sim_->ClearFault(id_, "sonar", nullptr));
   EXPECT_LT(sim_->SenseRing(id_, sonar, rng_)[0], before - 0.5);
+}
+
+// A noisy sensor still reports within what it can measure: a reading below min_range or
+// beyond max_range would be published as a valid range (REP 117).
+void ExpectWithinRange(const std::vector<double>& r, double lo, double hi, const char* what) {
+  for (double v : r) {
+    if (std::isnan(v) || v == std::numeric_limits<double>::infinity()) continue;
+    EXPECT_GE(v, lo) << what;
+    EXPECT_LE(v, hi) << what;
+  }
+}
+
+TEST_F(SimulatorTest, NoiseFaultsKeepReadingsWithinTheSensorsRange) {
+  Start("nomad200", {5.0, 3.0, 0.0});
+  const RangeRingSpec& sonar = *sim_->spec(id_).FindRing("sonar");
+  const ProfilerSpec& quadris = sim_->spec(id_).profilers.at(0);
+  ASSERT_TRUE(sim_->InjectFault(id_, "sonar", {FaultKind::kNoise, 5.0, 100.0}, nullptr));
+  ASSERT_TRUE(sim_->InjectFault(id_, quadris.name, {FaultKind::kNoise, 5.0, 100.0}, nullptr));
+  for (int k = 0; k < 20; ++k) {
+    ExpectWithinRange(sim_->SenseRing(id_, sonar, rng_), sonar.min_range, sonar.max_range, "sonar");
+    ExpectWithinRange(sim_->SenseProfile(id_, 0, true, rng_, nullptr), quadris.min_range,
+                      quadris.max_range, "quadris");
+  }
+  Start("b21", {3.0, 3.0, 0.0});
+  const LaserSpec& laser = *sim_->spec(id_).laser;
+  ASSERT_TRUE(sim_->InjectFault(id_, laser.name, {FaultKind::kNoise, 30.0, 100.0}, nullptr));
+  for (int k = 0; k < 20; ++k) {
+    ExpectWithinRange(sim_->SenseLaser(id_, rng_), laser.min_range, laser.max_range, "laser");
+  }
 }
 
 TEST_F(SimulatorTest, OdometrySlipShortensTheMeasuredDistance) {

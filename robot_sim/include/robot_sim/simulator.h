@@ -119,7 +119,10 @@ class Simulator {
   };
   bool Collides(const Robot& r, double x, double y) const;
   const SensorFault* ActiveFault(Robot& r, const std::string& key);
-  void ApplyFaults(Robot& r, const std::string& name, std::vector<double>& values, Rng& rng);
+  /// Dropout, stuck and noise faults of sensor `name`; a noisy reading stays within what the
+  /// sensor can measure, [min_range, max_range] (REP 117: anything else would read as valid).
+  void ApplyFaults(Robot& r, const std::string& name, double min_range, double max_range,
+                   std::vector<double>& values, Rng& rng);
   bool KnownSensor(const Robot& r, const std::string& sensor) const;
 
   std::unique_ptr<SimWorld> world_;
