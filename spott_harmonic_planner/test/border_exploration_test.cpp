@@ -54,15 +54,8 @@ TEST(NearestReachableBorderCell, NoneFromAnEnclosedPocketABlockedStartOrOutside)
 
 void AddBox(spott_map::MapDatabase& db, const std::string& id, double x0, double y0, double x1,
             double y1) {
-  spott_map::MapFeature box;
-  box.id = id;
-  box.label = "wall";
-  box.type = spott_map::FeatureType::kRectangle;
-  box.source = spott_map::FeatureSource::kSensed;
-  box.pose = Pose2{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0};
-  box.size_x = x1 - x0;
-  box.size_y = y1 - y0;
-  ASSERT_TRUE(db.AddFeature(box));
+  ASSERT_TRUE(db.AddFeature(
+      testing_maps::BoxFeature(id, x0, y0, x1, y1, spott_map::FeatureSource::kSensed)));
 }
 
 // A hallway sensed along the robot (walls at y = -1.2 and 1.2 over the whole 7 m window), a

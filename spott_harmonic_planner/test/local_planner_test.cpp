@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "test_maps.h"
+
 namespace spott_harmonic_planner {
 namespace {
 
@@ -20,15 +22,8 @@ PlannerParameters SmallWindow() {
 
 spott_map::MapDatabase MapWithBox(double x0, double y0, double x1, double y1) {
   spott_map::MapDatabase db;
-  spott_map::MapFeature box;
-  box.id = "box";
-  box.label = "wall";
-  box.type = spott_map::FeatureType::kRectangle;
-  box.source = spott_map::FeatureSource::kCad;
-  box.pose = Pose2{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0};
-  box.size_x = x1 - x0;
-  box.size_y = y1 - y0;
-  EXPECT_TRUE(db.AddFeature(box));
+  EXPECT_TRUE(db.AddFeature(
+      testing_maps::BoxFeature("box", x0, y0, x1, y1, spott_map::FeatureSource::kCad)));
   return db;
 }
 

@@ -2,13 +2,29 @@
 #pragma once
 
 #include <random>
+#include <string>
 
+#include "spott_map/map_feature.h"
 #include "spott_map/occupancy_raster.h"
 
 namespace spott_harmonic_planner::testing_maps {
 
 inline spott_map::OccupancyRaster EmptyRaster(int w, int h, double res = 1.0) {
   return spott_map::OccupancyRaster(spott_map::Vec2(0.0, 0.0), w, h, res);
+}
+
+/// An axis-parallel wall or box feature over [x0, x1] x [y0, y1] (m).
+inline spott_map::MapFeature BoxFeature(const std::string& id, double x0, double y0, double x1,
+                                        double y1, spott_map::FeatureSource source) {
+  spott_map::MapFeature box;
+  box.id = id;
+  box.label = "wall";
+  box.type = spott_map::FeatureType::kRectangle;
+  box.source = source;
+  box.pose = spott_map::Pose2{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0};
+  box.size_x = x1 - x0;
+  box.size_y = y1 - y0;
+  return box;
 }
 
 inline void Block(spott_map::OccupancyRaster& r, int x0, int y0, int x1, int y1) {
