@@ -28,7 +28,7 @@
 #include "spott_map/geometry.h"
 #include "spott_map/map_feature.h"
 #include "spott_move_base/conversions.h"
-#include "spott_ros/goal_ack_watch.h"
+#include "spott_ros/goal_resend.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_pose.h"
 #include "spott_tr_plus/task_command.h"
@@ -165,15 +165,10 @@ bool SendAndWait(Client& client, const std::function<void()>& send, const ros::T
                  double leg_timeout_s) {
   spott_ros::GoalAckWatch ack;
   send();
-  ack.Sent(ros::WallTime::now().toSec());
+  spott_ros::MarkGoalSent(ack);
   while (ros::ok() && (ros::Time::now() - started).toSec() < leg_timeout_s) {
-    const auto state = client.getState();
-    if (state.isDone()) return true;
-    if (ack.ShouldResend(state == actionlib::SimpleClientGoalState::PENDING,
-                         ros::WallTime::now().toSec())) {
-      ROS_WARN("demo: the goal was not acknowledged within %.1f s: sent again", ack.timeout_s());
-      send();
-    }
+    if (client.getState().isDone()) return true;
+    if (spott_ros::GoalLostInTransport(ack, client, "demo", "the goal's server")) send();
     ros::WallDuration(0.05).sleep();
   }
   return false;

@@ -94,7 +94,7 @@ void ActiveLocalizeServer::CancelNavigation() {
 
 void ActiveLocalizeServer::PublishNavigate() {
   const int generation = generation_;
-  nav_ack_.Sent(ros::WallTime::now().toSec());
+  spott_ros::MarkGoalSent(nav_ack_);
   nav_->sendGoal(nav_goal_, [this, generation](const actionlib::SimpleClientGoalState& state,
                                                const spott_msgs::NavigateResultConstPtr& result) {
     OnNavigationDone(generation, state, result);
@@ -219,13 +219,8 @@ void ActiveLocalizeServer::Update(const LocalizationUpdate& u) {
   if (!server_.isActive() || !request_ || !u.localizer || !u.modes) return;
   const RunInput in = InputOf(u);
   last_input_ = in;
-  if (navigating_ &&
-      nav_ack_.ShouldResend(nav_->getState() == actionlib::SimpleClientGoalState::PENDING,
-                            ros::WallTime::now().toSec())) {
-    ROS_WARN(
-        "markov_localization: %s did not acknowledge the goal within %.1f s (lost in "
-        "transport): sent again",
-        params_.navigate_action.c_str(), nav_ack_.timeout_s());
+  if (navigating_ && spott_ros::GoalLostInTransport(nav_ack_, *nav_, "markov_localization",
+                                                    params_.navigate_action)) {
     PublishNavigate();
   }
   if (!run_) {

@@ -20,7 +20,7 @@
 #include "markov_localization/active_run.h"
 #include "markov_localization/ros/parameters.h"
 #include "markov_localization/wander.h"
-#include "spott_ros/goal_ack_watch.h"
+#include "spott_ros/goal_resend.h"
 
 namespace markov_localization {
 

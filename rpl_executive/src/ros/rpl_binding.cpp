@@ -81,12 +81,8 @@ RplBinding::RplBinding(ros::NodeHandle& nh, const ros_parameters::NodeParameters
       hints);
   cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel/" + params.wheels_source, 5);
   watchdog_timer_ = nh.createTimer(ros::Duration(0.5), [this](const ros::TimerEvent&) {
-    if (nav_ack_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
-                              ros::WallTime::now().toSec())) {
-      ROS_WARN(
-          "rpl_executive: %s did not acknowledge the goal within %.1f s (lost in "
-          "transport): sent again",
-          params_.navigate_action.c_str(), nav_ack_.timeout_s());
+    if (spott_ros::GoalLostInTransport(nav_ack_, navigate_, "rpl_executive",
+                                       params_.navigate_action)) {
       PublishNavigate();
     }
     tracking_->OnTime(Now());
@@ -255,7 +251,7 @@ void RplBinding::SendGoal(const office::Point& target, double tolerance_m, doubl
 
 void RplBinding::PublishNavigate() {
   const int generation = nav_generation_;
-  nav_ack_.Sent(ros::WallTime::now().toSec());
+  spott_ros::MarkGoalSent(nav_ack_);
   navigate_.sendGoal(nav_goal_, [this, generation](const actionlib::SimpleClientGoalState& s,
                                                    const spott_msgs::NavigateResultConstPtr& r) {
     Post([this, generation, s, r] { OnNavigateDone(generation, s, r); });

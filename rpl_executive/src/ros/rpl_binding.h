@@ -35,7 +35,7 @@
 #include "parameters.h"
 #include "rpl_executive/rpl/executive.h"
 #include "rpl_executive/rpl/office_modules.h"
-#include "spott_ros/goal_ack_watch.h"
+#include "spott_ros/goal_resend.h"
 #include "spott_ros/input_refusals.h"
 
 namespace rpl_executive {

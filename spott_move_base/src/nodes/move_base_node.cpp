@@ -15,7 +15,7 @@
 
 #include "spott_move_base/conversions.h"
 #include "spott_move_base/parameters.h"
-#include "spott_ros/goal_ack_watch.h"
+#include "spott_ros/goal_resend.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace spott_move_base {
@@ -59,7 +59,7 @@ class MoveBaseNode {
   // Sends navigate_goal_ (again, when actionlib lost it: spott_ros/goal_ack_watch.h).
   void PublishNavigate() {
     const int generation = generation_;
-    ack_watch_.Sent(ros::WallTime::now().toSec());
+    spott_ros::MarkGoalSent(ack_watch_);
     navigate_.sendGoal(
         navigate_goal_,
         [this, generation](const actionlib::SimpleClientGoalState&,
@@ -101,15 +101,10 @@ class MoveBaseNode {
       ack_watch_.Stop();
       return;
     }
-    if (!ack_watch_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
-                                 ros::WallTime::now().toSec())) {
-      return;
+    if (spott_ros::GoalLostInTransport(ack_watch_, navigate_, "move_base",
+                                       params_.navigate_action)) {
+      PublishNavigate();
     }
-    ROS_WARN(
-        "move_base: %s did not acknowledge the goal within %.1f s (lost in transport): "
-        "sent again",
-        params_.navigate_action.c_str(), ack_watch_.timeout_s());
-    PublishNavigate();
   }
 
   void OnPreempt() {

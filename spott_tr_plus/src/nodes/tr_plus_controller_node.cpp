@@ -47,7 +47,7 @@
 #include <optional>
 
 #include "spott_map/ros/conversions.h"
-#include "spott_ros/goal_ack_watch.h"
+#include "spott_ros/goal_resend.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
 #include "spott_ros/pose_conversions.h"
@@ -181,7 +181,7 @@ class ControllerNode : public ControllerIo {
   // Sends navigate_goal_ (again, when actionlib lost it: spott_ros/goal_ack_watch.h).
   void PublishNavigate() {
     const std::uint64_t seq = navigate_seq_;
-    ack_watch_.Sent(ros::WallTime::now().toSec());
+    spott_ros::MarkGoalSent(ack_watch_);
     navigate_.sendGoal(
         navigate_goal_,
         [this, seq](const actionlib::SimpleClientGoalState&,
@@ -484,13 +484,8 @@ class ControllerNode : public ControllerIo {
 
   void OnTick(const ros::TimerEvent&) {
     const double now = Now();
-    if (ack_watch_.ShouldResend(navigate_.getState() == actionlib::SimpleClientGoalState::PENDING,
-                                ros::WallTime::now().toSec())) {
-      ROS_WARN(
-          "tr_plus_controller: %s did not acknowledge goal %lu within %.1f s (lost in "
-          "transport): sent again",
-          params_.navigate_action.c_str(), static_cast<unsigned long>(navigate_seq_),
-          ack_watch_.timeout_s());
+    if (spott_ros::GoalLostInTransport(ack_watch_, navigate_, "tr_plus_controller",
+                                       params_.navigate_action)) {
       PublishNavigate();
     }
     UpdatePose();
