@@ -15,6 +15,11 @@ std::optional<spott_map::Pose2> OdometryBuffer::Newest() const {
   return poses_.back().second;
 }
 
+std::optional<spott_map::Pose2> OdometryBuffer::At(double time_s, double max_lag_s) const {
+  if (poses_.empty() || time_s > poses_.back().first + max_lag_s) return std::nullopt;
+  return At(time_s);
+}
+
 std::optional<spott_map::Pose2> OdometryBuffer::At(double time_s) const {
   if (poses_.empty()) return std::nullopt;
   if (time_s <= poses_.front().first) return poses_.front().second;

@@ -361,5 +361,20 @@ TEST(OdometryBuffer, ThePoseAtAReadingsTimeIsInterpolatedTheShortWayRound) {
   EXPECT_DOUBLE_EQ(odo.At(5.0)->x, 7.0);
 }
 
+// A respawned node read a ring stamped 17 s after its newest odometry (queued while it built
+// its models) and paired it with that odometry: its estimate stayed 1 m behind the robot.
+TEST(OdometryBuffer, AReadingAheadOfTheOdometryHasNoPoseYet) {
+  OdometryBuffer odo(2.0);
+  EXPECT_FALSE(odo.At(1.0, 0.25));
+  odo.Add(1.0, Pose2{0.0, 0.0, 0.0});
+  odo.Add(1.1, Pose2{0.1, 0.0, 0.0});
+  EXPECT_NEAR(odo.At(1.05, 0.25)->x, 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(odo.At(1.3, 0.25)->x, 0.1);  // within the lag: the newest
+  EXPECT_FALSE(odo.At(1.4, 0.25));
+  EXPECT_FALSE(odo.At(18.0, 0.25));
+  odo.Add(18.0, Pose2{8.0, 0.0, 0.0});  // it arrived
+  EXPECT_DOUBLE_EQ(odo.At(18.0, 0.25)->x, 8.0);
+}
+
 }  // namespace
 }  // namespace markov_localization

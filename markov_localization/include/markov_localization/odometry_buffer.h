@@ -25,6 +25,11 @@ class OdometryBuffer {
   /// The pose at `time_s`: interpolated between the poses around it (heading the short way),
   /// the oldest before it, the newest after it; nullopt when empty.
   std::optional<spott_map::Pose2> At(double time_s) const;
+  /// As At, but nullopt for a reading taken more than max_lag_s after the newest pose: its
+  /// odometry has not arrived yet (a node that was busy, e.g. building its models, reads its
+  /// queued readings before its queued odometry). The newest pose would pair it with where the
+  /// robot was seconds earlier (AMCL's tf message filter holds such a scan instead).
+  std::optional<spott_map::Pose2> At(double time_s, double max_lag_s) const;
   std::optional<spott_map::Pose2> Newest() const;
   void Clear() { poses_.clear(); }
 

@@ -153,12 +153,16 @@ class LocalizationNode {
     }
     localizer_->SetGaussian(*pose, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad,
                             odom_);
+    resume_after_.reset();  // the user's pose wins over the saved one
+    resumed_ = true;
     ROS_INFO("markov_localization: initial pose set");
   }
 
   void SetUniform() {
     if (localizer_) localizer_->SetUniform();
     pending_initial_.reset();
+    resume_after_.reset();
+    resumed_ = true;
     ROS_INFO("markov_localization: global localization (uniform belief)");
   }
 
@@ -379,13 +383,12 @@ class LocalizationNode {
       localizer_.reset();
       return;
     }
-    if (params_.last_map_to_odom && !resumed_) {  // respawned: the odometry went on meanwhile
-      const ml::Pose2 at = ml::Compose(*params_.last_map_to_odom, *odom_);
-      localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad,
-                              odom_);
-      ROS_WARN("markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom",
-               at.x, at.y, at.yaw * 180.0 / M_PI);
-      resumed_ = true;
+    if (params_.last_map_to_odom && !resumed_) {
+      // Respawned. The robot drove on while the models were built; the readings queued meanwhile
+      // are of where it was. The belief starts at the first reading taken after this moment
+      // (ResumeAt): started at the odometry of the build's start, the driven metres came in one
+      // motion update whose noise spread it along the hallway (0.7-1.1 m off in node_kill.test).
+      resume_after_ = ros::Time::now();
     } else if (pending_initial_ && !params_.start_uniform) {
       localizer_->SetGaussian(*pending_initial_, params_.initial_sigma_xy_m,
                               params_.initial_sigma_theta_rad);
@@ -427,7 +430,9 @@ class LocalizationNode {
       sonar_on_ = true;
     }
     if (!sonar_on_) {  // switched off (enable_sonar): no update, the estimate on odometry
-      reading_odom_ = odometry_.At(ring.header.stamp.toSec()).value_or(*odom_);
+      const auto at = ReadingOdometry(ring.header.stamp);
+      if (!at) return;
+      reading_odom_ = *at;
       Publish(ring.header.stamp, ml::LocalizerStep{}, sonar_model_->beam_angles_rad, ranges_,
               ring.max_range);
       return;
@@ -495,8 +500,10 @@ class LocalizationNode {
                  const std::vector<double>& beam_angles, double max_range,
                  bool reactive_is_ring = false) {
     PollRebuild();
-    // The odometry when the reading was taken (odometry_buffer.h), not the newest.
-    reading_odom_ = odometry_.At(stamp.toSec()).value_or(*odom_);
+    const auto at = ReadingOdometry(stamp);
+    if (!at) return;
+    if (resume_after_ && !ResumeAt(stamp, *at)) return;
+    reading_odom_ = *at;
     const auto start = std::chrono::steady_clock::now();
     const ml::LocalizerStep step =
         localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
@@ -519,6 +526,31 @@ class LocalizationNode {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     Publish(stamp, step, beam_angles, reactive_is_ring ? ranges_ : ranges, max_range);
+  }
+
+  // A respawned node's belief: the saved map -> odom composed with the odometry of a reading
+  // taken after the models were built; false for a reading queued before.
+  bool ResumeAt(const ros::Time& stamp, const ml::Pose2& odom) {
+    if (stamp < *resume_after_) return false;
+    const ml::Pose2 at = ml::Compose(*params_.last_map_to_odom, odom);
+    localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad, odom);
+    ROS_WARN("markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom",
+             at.x, at.y, at.yaw * 180.0 / M_PI);
+    resume_after_.reset();
+    resumed_ = true;
+    return true;
+  }
+
+  // The odometry when the reading was taken (odometry_buffer.h), not the newest; none for a
+  // reading taken after the newest odometry by more than odometry_max_lag_s (left out).
+  std::optional<ml::Pose2> ReadingOdometry(const ros::Time& stamp) {
+    const auto at = odometry_.At(stamp.toSec(), params_.odometry_max_lag_s);
+    if (!at)
+      ROS_INFO_THROTTLE(5,
+                        "markov_localization: a reading of %.2f s is ahead of the odometry "
+                        "(newer than its newest by more than %.2f s): left out",
+                        stamp.toSec(), params_.odometry_max_lag_s);
+    return at;
   }
 
   void Publish(const ros::Time& stamp, const ml::LocalizerStep& step,
@@ -643,8 +675,9 @@ class LocalizationNode {
   tf2_ros::TransformListener tf_listener_;
   spott_ros::InputRefusals refusals_;
   ros::Timer save_timer_;
-  ros::Time last_tf_stamp_;  ///< Of the last map -> odom sent.
-  bool resumed_ = false;     ///< Started from last_map_to_odom (once).
+  ros::Time last_tf_stamp_;                ///< Of the last map -> odom sent.
+  bool resumed_ = false;                   ///< Started from last_map_to_odom (once).
+  std::optional<ros::Time> resume_after_;  ///< Models built, resume at a reading after this.
 };
 
 }  // namespace

@@ -84,6 +84,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("map_frame", p.map_frame);
   r.Get("odom_frame", p.odom_frame);
   r.Get("transform_tolerance_s", p.transform_tolerance_s);
+  r.Get("odometry_max_lag_s", p.odometry_max_lag_s);
   r.Get("start_uniform", p.start_uniform);
   r.Get("initial_pose_from_world", p.initial_pose_from_world);
   // "x y yaw", "" = none.
@@ -247,6 +248,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
     v.push_back("~map_frame and ~odom_frame must be two non-empty frame names");
   if (!(p.transform_tolerance_s >= 0.0 && p.transform_tolerance_s <= 10.0))
     v.push_back("~transform_tolerance_s must be in [0, 10] s");
+  if (!(p.odometry_max_lag_s > 0.0 && p.odometry_max_lag_s <= 10.0))
+    v.push_back("~odometry_max_lag_s must be in (0, 10] s");
   if (!(p.initial_sigma_xy_m > 0.0)) v.push_back("~initial_sigma_xy_m must be > 0 m");
   if (!(p.initial_sigma_theta_rad > 0.0)) v.push_back("~initial_sigma_theta_deg must be > 0");
   if (!(p.belief_rate_hz > 0.0 && p.belief_rate_hz <= 100.0))

@@ -81,7 +81,10 @@ struct NodeParameters {
   std::string map_frame = "map";
   std::string odom_frame = "odom";
   double transform_tolerance_s = 0.2;  ///< map->odom is future-dated by this (s), >= 0.
-  bool start_uniform = true;           ///< Uniform belief at start (else ~initialpose waits).
+  /// A reading taken more than this after the newest odometry is left out (s), (0, 10]: its
+  /// odometry is not known yet (odometry_buffer.h).
+  double odometry_max_lag_s = 0.25;
+  bool start_uniform = true;  ///< Uniform belief at start (else ~initialpose waits).
   /// With start_uniform false: start from the world file's robot_start.
   bool initial_pose_from_world = false;
   /// With start_uniform false: start here ("x y yaw" in the map frame; wins over the world's
