@@ -226,8 +226,8 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
                                    params_.refine, &step.stats.beam_used);
   // The published estimate stays with the mode it followed while twins swap the maximum.
   const Pose2 estimate = sticky_.Select(summary_.modes, refined, odom, &step.switched);
-  map_to_odom_ = MapToOdomOf(estimate, odom);
-  best_map_to_odom_ = MapToOdomOf(refined, odom);
+  map_to_odom_ = MapToOdom(estimate, odom);
+  best_map_to_odom_ = MapToOdom(refined, odom);
   has_estimate_ = true;
   return step;
 }

@@ -5,18 +5,6 @@
 
 namespace markov_localization {
 
-Pose2 MapToOdomOf(const Pose2& e, const Pose2& o) {
-  const double yaw = std::remainder(e.yaw - o.yaw, 2.0 * M_PI);
-  const double c = std::cos(yaw), s = std::sin(yaw);
-  return Pose2{e.x - (c * o.x - s * o.y), e.y - (s * o.x + c * o.y), yaw};
-}
-
-Pose2 Compose(const Pose2& t, const Pose2& o) {
-  const double c = std::cos(t.yaw), s = std::sin(t.yaw);
-  return Pose2{t.x + c * o.x - s * o.y, t.y + s * o.x + c * o.y,
-               std::remainder(t.yaw + o.yaw, 2.0 * M_PI)};
-}
-
 Pose2 StickyEstimate::Select(const std::vector<Mode>& modes, const Pose2& refined,
                              const Pose2& odom, bool* switched) {
   Pose2 out = refined;
@@ -49,7 +37,7 @@ Pose2 StickyEstimate::Select(const std::vector<Mode>& modes, const Pose2& refine
     }
   }
   if (switched) *switched = left;
-  map_to_odom_ = MapToOdomOf(out, odom);
+  map_to_odom_ = MapToOdom(out, odom);
   return out;
 }
 

@@ -19,7 +19,7 @@ Mode At(double x, double y, double yaw, double mass) {
 
 TEST(StickyEstimate, MapToOdomAndComposeAreInverse) {
   const Pose2 e{5.0, -2.0, 2.5}, o{1.0, 3.0, -0.7};
-  const Pose2 back = Compose(MapToOdomOf(e, o), o);
+  const Pose2 back = Compose(MapToOdom(e, o), o);
   EXPECT_NEAR(back.x, e.x, 1e-12);
   EXPECT_NEAR(back.y, e.y, 1e-12);
   EXPECT_NEAR(back.yaw, e.yaw, 1e-12);

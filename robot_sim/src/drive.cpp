@@ -43,11 +43,6 @@ Twist2 LimitVelocity(const Twist2& current, const Twist2& command, const DriveSp
           Approach(current.w, target.w, drive.max_angular_accel * dt)};
 }
 
-spott_map::Pose2 MapToOdom(const spott_map::Pose2& t, const spott_map::Pose2& o) {
-  const double yaw = NormalizeAngle(t.yaw - o.yaw), c = std::cos(yaw), s = std::sin(yaw);
-  return {t.x - (c * o.x - s * o.y), t.y - (s * o.x + c * o.y), yaw};
-}
-
 spott_map::Pose2 Integrate(const spott_map::Pose2& pose, const Twist2& t, double dt) {
   spott_map::Pose2 out = pose;
   const double dtheta = t.w * dt;

@@ -46,17 +46,6 @@ TEST(DriveTest, IntegrationFollowsTheArc) {
   EXPECT_NEAR(p.yaw, M_PI / 2, 1e-12);
 }
 
-TEST(DriveTest, MapToOdomPutsTheOdometryOnTheMapPose) {
-  const spott_map::Pose2 map_pose{3.0, -2.0, 2.5}, odom_pose{1.0, 4.0, -2.0};
-  const spott_map::Pose2 m = MapToOdom(map_pose, odom_pose);
-  // map->odom composed with odom->base must give map->base.
-  const double c = std::cos(m.yaw), s = std::sin(m.yaw);
-  EXPECT_NEAR(m.x + c * odom_pose.x - s * odom_pose.y, map_pose.x, 1e-12);
-  EXPECT_NEAR(m.y + s * odom_pose.x + c * odom_pose.y, map_pose.y, 1e-12);
-  EXPECT_NEAR(std::remainder(m.yaw + odom_pose.yaw - map_pose.yaw, 2 * M_PI), 0.0, 1e-12);
-  EXPECT_LE(std::abs(m.yaw), M_PI);  // 4.5 rad wrapped
-}
-
 TEST(DriveTest, InsaneCommandsAreRecognized) {
   EXPECT_TRUE(CommandIsSane({0.5, 0.0}, Nomad()));
   EXPECT_TRUE(CommandIsSane({1.0, 0.0}, Nomad()));  // over the limit: clamped, not refused

@@ -276,7 +276,7 @@ void AmclPeer::OnReading(bool laser, const std::vector<double>& ranges, const Po
 
 Pose2 AmclPeer::Estimate(const Pose2& odom) const {
   // map -> odom fixed between updates, as AMCL publishes it.
-  return markov_localization::Compose(MapToOdomOf(estimate_, estimate_odom_), odom);
+  return markov_localization::Compose(MapToOdom(estimate_, estimate_odom_), odom);
 }
 
 }  // namespace eval

@@ -12,13 +12,12 @@
 #include <vector>
 
 #include "markov_localization/certainty.h"
+#include "spott_map/pose_algebra.h"
 
 namespace markov_localization {
 
-/// map -> odom such that (map -> odom) * odom = estimate (REP-105).
-Pose2 MapToOdomOf(const Pose2& estimate, const Pose2& odom);
-/// (map -> odom) * odom.
-Pose2 Compose(const Pose2& map_to_odom, const Pose2& odom);
+using spott_map::Compose;    // (map -> odom) * odom
+using spott_map::MapToOdom;  // map -> odom such that (map -> odom) * odom = estimate (REP-105)
 
 struct StickyEstimateParameters {
   double switch_ratio = 2.0;    ///< Another mode must be this much heavier to take over, >= 1.

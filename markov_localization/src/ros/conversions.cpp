@@ -70,8 +70,6 @@ geometry_msgs::PoseArray ToPoseArray(const std::vector<Mode>& modes, const std::
   return pa;
 }
 
-Pose2 MapToOdom(const Pose2& e, const Pose2& o) { return MapToOdomOf(e, o); }
-
 geometry_msgs::TransformStamped ToTransform(const Pose2& t, const std::string& map_frame,
                                             const std::string& odom_frame, const ros::Time& stamp) {
   geometry_msgs::TransformStamped msg;

@@ -7,6 +7,7 @@
 #include <tf2/utils.h>
 
 #include "markov_localization/ros/conversions.h"
+#include "spott_map/pose_algebra.h"
 
 namespace markov_localization {
 namespace {
@@ -64,7 +65,7 @@ TEST(Conversions, BeliefGridOfAnEmptyBeliefIsZero) {
 TEST(Conversions, MapToOdomComposedWithOdomGivesTheEstimate) {
   const Pose2 estimate{5.0, -2.0, 2.5};
   const Pose2 odom{1.0, 3.0, -0.7};
-  const Pose2 t = conv::MapToOdom(estimate, odom);
+  const Pose2 t = spott_map::MapToOdom(estimate, odom);  // what the node publishes
   // t * odom
   const double x = t.x + std::cos(t.yaw) * odom.x - std::sin(t.yaw) * odom.y;
   const double y = t.y + std::sin(t.yaw) * odom.x + std::cos(t.yaw) * odom.y;

@@ -50,9 +50,6 @@ struct OdometryErrorModel {
 
 std::vector<std::string> ValidateParameters(const OdometryErrorModel& m);
 
-/// map->odom that puts the odometry's `odom_pose` on `map_pose`: map_pose * odom_pose^-1.
-spott_map::Pose2 MapToOdom(const spott_map::Pose2& map_pose, const spott_map::Pose2& odom_pose);
-
 /// Dead reckoning in the odom frame.
 class Odometry {
  public:

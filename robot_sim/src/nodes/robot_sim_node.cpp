@@ -24,6 +24,7 @@
 #include "robot_sim/fault_events.h"
 #include "robot_sim/ros/conversions.h"
 #include "robot_sim/ros/parameters.h"
+#include "spott_map/pose_algebra.h"
 #include "spott_map/pose_text.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/parameter_reader.h"
@@ -214,7 +215,7 @@ class SimNode {
         conv::ToOdometry(odo.pose(), odo.twist(), params_.odom_frame, params_.base_frame, stamp));
     tf_.sendTransform(ToTransform(odo.pose(), params_.odom_frame, params_.base_frame, stamp));
     if (params_.publish_truth_map_to_odom || params_.publish_start_map_to_odom) {
-      spott_map::Pose2 map_odom = MapToOdom(sim_->GroundTruth(robot_), odo.pose());
+      spott_map::Pose2 map_odom = spott_map::MapToOdom(sim_->GroundTruth(robot_), odo.pose());
       if (params_.publish_start_map_to_odom) {  // dead reckoning: the start's, held
         if (!start_map_odom_) start_map_odom_ = map_odom;
         map_odom = *start_map_odom_;

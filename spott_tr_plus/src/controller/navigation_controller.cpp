@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "spott_map/geometry.h"
+#include "spott_map/pose_algebra.h"
 
 namespace spott_tr_plus::controller {
 
@@ -796,21 +797,14 @@ void NavigationController::SetPose(const Pose2& pose, double now) {
   // map->odom: where odometry's frame lies in the map. It moves smoothly while the estimate
   // tracks; a jump means the localization changed its mind about where the robot is.
   if (odom_) {
-    const double yaw = NormalizeAngle(pose.yaw - odom_->yaw);
-    const double c = std::cos(yaw), sn = std::sin(yaw);
-    const Pose2 correction{pose.x - (c * odom_->x - sn * odom_->y),
-                           pose.y - (sn * odom_->x + c * odom_->y), yaw};
+    const Pose2 correction = spott_map::MapToOdom(pose, *odom_);
     if (correction_) {
       // Where the last correction puts the robot now, against where the estimate does.
-      const double cy = std::cos(correction_->yaw), sy = std::sin(correction_->yaw);
-      const Vec2 predicted(correction_->x + cy * odom_->x - sy * odom_->y,
-                           correction_->y + sy * odom_->x + cy * odom_->y);
-      const double moved = (predicted - pose.Position()).norm();
+      const Pose2 predicted = spott_map::Compose(*correction_, *odom_);
+      const double moved = (predicted.Position() - pose.Position()).norm();
       const double turned = std::abs(NormalizeAngle(correction.yaw - correction_->yaw));
-      if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad) {
-        const double yaw_before = NormalizeAngle(correction_->yaw + odom_->yaw);
-        EstimateJumped(Pose2{predicted.x(), predicted.y(), yaw_before}, pose, now);
-      }
+      if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad)
+        EstimateJumped(predicted, pose, now);
     }
     correction_ = correction;
   }

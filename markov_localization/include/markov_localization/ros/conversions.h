@@ -76,9 +76,6 @@ std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
                                     const geometry_msgs::Transform& to_base, int bins,
                                     double min_height_m, double max_height_m, std::string* why);
 
-/// map -> odom such that (map -> odom) * (odom -> base) = the estimate (REP-105):
-/// T = estimate * odom^-1.
-Pose2 MapToOdom(const Pose2& estimate, const Pose2& odom);
 geometry_msgs::TransformStamped ToTransform(const Pose2& map_to_odom, const std::string& map_frame,
                                             const std::string& odom_frame, const ros::Time& stamp);
 
