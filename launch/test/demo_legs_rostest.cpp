@@ -55,7 +55,9 @@ TEST(DemoLegs, EveryLegIsReachedOnGroundTruthWithoutContactAndWithTheRobotsOwnPa
     // A task leg is reached in its goal region or within the tolerance of the controller's goal
     // point (RunTasks); a Navigate leg within the tolerance of the place.
     EXPECT_TRUE(leg.reached) << leg.outcome;
-    if (!by_task) EXPECT_LE(leg.final_error_m, tolerance_m);
+    if (!by_task) {
+      EXPECT_LE(leg.final_error_m, tolerance_m);
+    }
     EXPECT_EQ(leg.bumper_hits, 0);
     EXPECT_GT(leg.min_wall_distance_m, *radius) << "the body touched a wall or an object";
   }
