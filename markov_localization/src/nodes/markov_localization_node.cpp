@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <future>
 #include <limits>
 #include <memory>
@@ -134,6 +135,7 @@ class LocalizationNode {
     }
     odom_ = pose;
     odometry_.Add(msg.header.stamp.toSec(), *odom_);
+    if (localizer_) ReleaseHeld();
   }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped& msg) {
@@ -501,7 +503,11 @@ class LocalizationNode {
                  bool reactive_is_ring = false) {
     PollRebuild();
     const auto at = ReadingOdometry(stamp);
-    if (!at) return;
+    if (!at) {  // its odometry is still queued: processed when it comes (ReleaseHeld)
+      held_.push_back(HeldReading{sensor, ranges, stamp, beam_angles, max_range, reactive_is_ring});
+      if (held_.size() > kMaxHeld) held_.pop_front();
+      return;
+    }
     if (resume_after_ && !ResumeAt(stamp, *at)) return;
     reading_odom_ = *at;
     const auto start = std::chrono::steady_clock::now();
@@ -542,15 +548,24 @@ class LocalizationNode {
   }
 
   // The odometry when the reading was taken (odometry_buffer.h), not the newest; none for a
-  // reading taken after the newest odometry by more than odometry_max_lag_s (left out).
+  // reading taken after the newest odometry by more than odometry_max_lag_s. After a long
+  // update (the models' build, a full update after a kidnap) the readings queued meanwhile come
+  // before the odometry queued with them: they wait for it (AMCL's tf message filter).
   std::optional<ml::Pose2> ReadingOdometry(const ros::Time& stamp) {
     const auto at = odometry_.At(stamp.toSec(), params_.odometry_max_lag_s);
     if (!at)
-      ROS_INFO_THROTTLE(5,
-                        "markov_localization: a reading of %.2f s is ahead of the odometry "
-                        "(newer than its newest by more than %.2f s): left out",
-                        stamp.toSec(), params_.odometry_max_lag_s);
+      ROS_DEBUG("markov_localization: a reading of %.2f s waits for its odometry", stamp.toSec());
     return at;
+  }
+
+  // The held readings whose odometry has come, oldest first.
+  void ReleaseHeld() {
+    while (!held_.empty() &&
+           odometry_.At(held_.front().stamp.toSec(), params_.odometry_max_lag_s)) {
+      const HeldReading r = std::move(held_.front());
+      held_.pop_front();
+      OnReading(r.sensor, r.ranges, r.stamp, r.beam_angles, r.max_range, r.reactive_is_ring);
+    }
   }
 
   void Publish(const ros::Time& stamp, const ml::LocalizerStep& step,
@@ -678,6 +693,16 @@ class LocalizationNode {
   ros::Time last_tf_stamp_;                ///< Of the last map -> odom sent.
   bool resumed_ = false;                   ///< Started from last_map_to_odom (once).
   std::optional<ros::Time> resume_after_;  ///< Models built, resume at a reading after this.
+  struct HeldReading {  ///< A reading waiting for its odometry (ReadingOdometry).
+    int sensor;
+    std::vector<double> ranges;
+    ros::Time stamp;
+    std::vector<double> beam_angles;
+    double max_range;
+    bool reactive_is_ring;
+  };
+  static constexpr std::size_t kMaxHeld = 10;  ///< The oldest beyond are left out.
+  std::deque<HeldReading> held_;
 };
 
 }  // namespace

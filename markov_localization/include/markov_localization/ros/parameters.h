@@ -81,8 +81,8 @@ struct NodeParameters {
   std::string map_frame = "map";
   std::string odom_frame = "odom";
   double transform_tolerance_s = 0.2;  ///< map->odom is future-dated by this (s), >= 0.
-  /// A reading taken more than this after the newest odometry is left out (s), (0, 10]: its
-  /// odometry is not known yet (odometry_buffer.h).
+  /// A reading taken more than this after the newest odometry waits for its odometry (s),
+  /// (0, 10] (odometry_buffer.h; the node holds the 10 newest).
   double odometry_max_lag_s = 0.25;
   bool start_uniform = true;  ///< Uniform belief at start (else ~initialpose waits).
   /// With start_uniform false: start from the world file's robot_start.
