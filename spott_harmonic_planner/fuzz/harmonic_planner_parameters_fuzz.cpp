@@ -79,6 +79,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("navigate/backoff_speed_mps", n.backoff_speed_mps, "(0, 1]");
   ExpectIn("navigate/arrival_stall_s", n.arrival_stall_s, "(0, inf)");
   ExpectIn("navigate/planner_patience_s", n.planner_patience_s, "[0, 600]");
+  ExpectIn("navigate/settle_timeout_s", n.settle_timeout_s, "[0, 60]");
+  Expect(n.max_settle_drive_ons >= 0, "navigate/max_settle_drive_ons < 0 accepted");
+  ExpectIn("navigate/settle_max_offset_m", n.settle_max_offset_m, "(0, 100]");
 
   // The cores the node builds at start: what the reader accepted, they must take.
   try {

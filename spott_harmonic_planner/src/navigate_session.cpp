@@ -43,6 +43,11 @@ std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p) 
     v.push_back("navigate/arrival_stall_s must be in (0, 60]");
   if (!(p.planner_patience_s >= 0.0 && p.planner_patience_s <= 600.0))
     v.push_back("navigate/planner_patience_s must be in [0, 600]");
+  if (!(p.settle_timeout_s >= 0.0 && p.settle_timeout_s <= 60.0))
+    v.push_back("navigate/settle_timeout_s must be in [0, 60]");
+  if (p.max_settle_drive_ons < 0) v.push_back("navigate/max_settle_drive_ons must be >= 0");
+  if (!(p.settle_max_offset_m > 0.0 && p.settle_max_offset_m <= 100.0))
+    v.push_back("navigate/settle_max_offset_m must be in (0, 100]");
   return v;
 }
 
@@ -162,6 +167,30 @@ bool NavigateSession::Arrived(double distance_m, double tolerance_m, double now_
   }
   if (distance_m <= 0.5 * tolerance_m) return true;
   return distance_m <= tolerance_m && now_s - closer_at_s_ >= params_.arrival_stall_s;
+}
+
+void NavigateSession::LocalizationUpdated(double stamp_s) {
+  if (!localization_stamp_s_ || stamp_s > *localization_stamp_s_) localization_stamp_s_ = stamp_s;
+}
+
+NavigateSession::Settle NavigateSession::Settled(double distance_m, double tolerance_m,
+                                                 double now_s) {
+  if (!localization_stamp_s_ || params_.settle_timeout_s <= 0.0 ||
+      drive_ons_ >= params_.max_settle_drive_ons)
+    return Settle::kArrived;
+  if (!settle_since_s_) {
+    settle_since_s_ = now_s;
+    note_ = "arrived on the estimate: waiting for the localization's update of the standing robot";
+  }
+  const bool updated = *localization_stamp_s_ >= *settle_since_s_;
+  if (!updated && now_s - *settle_since_s_ < params_.settle_timeout_s) return Settle::kWait;
+  settle_since_s_.reset();
+  note_.clear();
+  if (!updated || distance_m <= tolerance_m || distance_m > params_.settle_max_offset_m)
+    return Settle::kArrived;
+  ++drive_ons_;  // the estimate moved: approach again, judged afresh
+  closest_m_ = 1e300;
+  return Settle::kDriveOn;
 }
 
 void NavigateSession::Succeed() { Finish(NavigateOutcome::kSucceeded, "goal reached"); }

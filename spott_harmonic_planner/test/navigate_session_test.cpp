@@ -217,6 +217,59 @@ TEST(NavigateSession, ArrivesWithinHalfTheToleranceOrWhenNoLongerGettingCloser) 
   EXPECT_FALSE(stuck.Arrived(0.3, 0.2, 5.0));
 }
 
+// bonn_kidnap: "reached" on an estimate still 0.46 m off after the turn. Arrived on the
+// estimate, the robot stands until the localization updated on a reading taken standing.
+TEST(NavigateSession, AnArrivalIsJudgedAgainOnTheLocalizationsUpdateOfTheStandingRobot) {
+  NavigateSessionParameters p;
+  p.settle_timeout_s = 3.0;
+  NavigateSession s(p, 0.0);
+  s.LocalizationUpdated(9.8);  // the localization runs
+  using Settle = NavigateSession::Settle;
+  EXPECT_EQ(s.Settled(0.08, 0.25, 10.0), Settle::kWait);
+  EXPECT_TRUE(s.settling());
+  EXPECT_FALSE(s.note().empty());
+  s.LocalizationUpdated(9.9);  // a reading taken before it stood: no verdict yet
+  EXPECT_EQ(s.Settled(0.08, 0.25, 10.2), Settle::kWait);
+  s.LocalizationUpdated(10.5);  // the update moved the estimate 0.4 m from the target
+  EXPECT_EQ(s.Settled(0.40, 0.25, 10.6), Settle::kDriveOn);
+  EXPECT_FALSE(s.settling());
+  EXPECT_FALSE(s.Arrived(0.30, 0.25, 11.0));  // approached afresh
+  EXPECT_TRUE(s.Arrived(0.10, 0.25, 12.0));
+  EXPECT_EQ(s.Settled(0.10, 0.25, 12.0), Settle::kWait);
+  s.LocalizationUpdated(12.5);
+  EXPECT_EQ(s.Settled(0.12, 0.25, 12.6), Settle::kArrived);  // within the tolerance
+  EXPECT_TRUE(s.note().empty());
+}
+
+TEST(NavigateSession, AnArrivalIsTakenAsItIsWithoutALocalizationOrAfterTheTimeout) {
+  NavigateSessionParameters p;
+  p.settle_timeout_s = 3.0;
+  using Settle = NavigateSession::Settle;
+  NavigateSession none(p, 0.0);  // ground truth or dead reckoning: no estimates on the topic
+  EXPECT_EQ(none.Settled(0.08, 0.25, 1.0), Settle::kArrived);
+  NavigateSession silent(p, 0.0);
+  silent.LocalizationUpdated(0.5);
+  EXPECT_EQ(silent.Settled(0.08, 0.25, 1.0), Settle::kWait);
+  EXPECT_EQ(silent.Settled(0.08, 0.25, 3.9), Settle::kWait);
+  EXPECT_EQ(silent.Settled(0.08, 0.25, 4.0), Settle::kArrived);  // no update in 3 s
+  p.max_settle_drive_ons = 1;  // an estimate that keeps moving away: judged again once
+  NavigateSession moving(p, 0.0);
+  moving.LocalizationUpdated(0.5);
+  EXPECT_EQ(moving.Settled(0.1, 0.25, 1.0), Settle::kWait);
+  moving.LocalizationUpdated(1.1);
+  EXPECT_EQ(moving.Settled(0.5, 0.25, 1.2), Settle::kDriveOn);
+  EXPECT_EQ(moving.Settled(0.1, 0.25, 5.0), Settle::kArrived);
+  NavigateSession jumped(p, 0.0);  // 3 m away: the estimate switched modes, not a lag
+  jumped.LocalizationUpdated(0.5);
+  EXPECT_EQ(jumped.Settled(0.1, 0.25, 1.0), Settle::kWait);
+  jumped.LocalizationUpdated(1.1);
+  EXPECT_EQ(jumped.Settled(3.0, 0.25, 1.2), Settle::kArrived);
+  p.settle_timeout_s = 0.0;  // switched off
+  NavigateSession off(p, 0.0);
+  off.LocalizationUpdated(0.5);
+  EXPECT_EQ(off.Settled(0.1, 0.25, 1.0), Settle::kArrived);
+}
+
 TEST(ContactMemory, RemembersContactsOnTheBodyAndForgetsThemLater) {
   ContactMemory m(10.0, 0.1);
   // Robot at (1, 2) facing +y, radius 0.2, contact dead ahead: disc centre 0.25 m ahead.

@@ -12,6 +12,7 @@
 // (latched), ~status, ~steering, ~potential (latched), ~contours, ~path.
 #include <actionlib/server/simple_action_server.h>
 #include <geometry_msgs/PolygonStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -68,6 +69,9 @@ class HarmonicPlannerNode {
         nh.subscribe("global_plan_status", 5, &HarmonicPlannerNode::OnPlanStatus, this);
     odom_sub_ = nh.subscribe("odom", 10, &HarmonicPlannerNode::OnOdom, this);
     bumper_sub_ = nh.subscribe("bumper", 10, &HarmonicPlannerNode::OnBumper, this);
+    if (!params_.localization_topic.empty())
+      localization_sub_ =
+          nh.subscribe(params_.localization_topic, 5, &HarmonicPlannerNode::OnLocalization, this);
     server_.registerGoalCallback([this] { OnGoal(); });
     server_.registerPreemptCallback([this] { OnPreempt(); });
     server_.start();
@@ -165,6 +169,12 @@ class HarmonicPlannerNode {
     }
     session_->Answer(a);
     if (session_->finished()) Finish();
+  }
+
+  // The localization's estimates (AMCL's amcl_pose: one per update, stamped with its reading):
+  // an arrival is judged again on one of the standing robot (NavigateSession::Settled).
+  void OnLocalization(const geometry_msgs::PoseWithCovarianceStamped& msg) {
+    if (session_) session_->LocalizationUpdated(msg.header.stamp.toSec());
   }
 
   // --- sensors -------------------------------------------------------------------------------
@@ -435,6 +445,21 @@ class HarmonicPlannerNode {
                            params_.planner.steering, &done);
       }
       if (done) {
+        switch (session_->Settled(to_target, request_.tolerance_m, now.toSec())) {
+          case NavigateSession::Settle::kWait:
+            Drive(0.0, 0.0);
+            return to_target;
+          case NavigateSession::Settle::kDriveOn:
+            ROS_INFO(
+                "harmonic_planner: the localization's update of the standing robot puts it "
+                "%.2f m from the target (tolerance %.2f m): driving on",
+                to_target, request_.tolerance_m);
+            turning_ = false;
+            Drive(0.0, 0.0);
+            return to_target;
+          case NavigateSession::Settle::kArrived:
+            break;
+        }
         session_->Succeed();
         Finish();
         return 0.0;
@@ -466,7 +491,7 @@ class HarmonicPlannerNode {
   ros::Publisher cmd_pub_, goal_pub_, window_pub_, status_pub_, steering_pub_, potential_pub_,
       contours_pub_, path_pub_;
   ros::Subscriber features_sub_, graph_sub_, projected_sub_, plan_status_sub_, odom_sub_,
-      bumper_sub_;
+      bumper_sub_, localization_sub_;
   ros::Timer timer_;
   spott_map::MapDatabase db_;
   std::unique_ptr<NavigateSession> session_;  ///< The running goal, if any.

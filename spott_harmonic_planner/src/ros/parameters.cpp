@@ -58,6 +58,10 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("navigate/backoff_speed_mps", n.backoff_speed_mps, "m/s");
   r.Get("navigate/arrival_stall_s", n.arrival_stall_s, "s");
   r.Get("navigate/planner_patience_s", n.planner_patience_s, "s");
+  r.Get("navigate/settle_timeout_s", n.settle_timeout_s, "s");
+  r.Get("navigate/max_settle_drive_ons", n.max_settle_drive_ons);
+  r.Get("navigate/settle_max_offset_m", n.settle_max_offset_m, "m");
+  r.Get("navigate/localization_topic", p.localization_topic);
   r.Get("navigate/contact_memory_s", p.contact_memory_s, "s");
   r.Get("navigate/contact_size_m", p.contact_size_m, "m");
   r.Get("navigate/bumper_backoff", p.bumper_backoff);

@@ -21,6 +21,9 @@ struct NodeParameters {
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";  ///< Also the URDF link whose footprint pads obstacles.
   std::string robot_description = "robot_description";  ///< Parameter holding the URDF.
+  /// The localization's estimates, one per update (geometry_msgs/PoseWithCovarianceStamped,
+  /// AMCL's amcl_pose); "": none (arrivals are not judged again, navigate/settle_timeout_s).
+  std::string localization_topic = "amcl_pose";
   double cycle_rate_hz = 20.0;                          ///< [0.01, 1000]
   int visualization_every = 5;         ///< Cycles between potential/contour/path messages, >= 1.
   double heading_tolerance_rad = 0.1;  ///< Default final heading tolerance (rad), (0, pi].
