@@ -24,7 +24,7 @@ struct NodeParameters {
   /// The localization's estimates, one per update (geometry_msgs/PoseWithCovarianceStamped,
   /// AMCL's amcl_pose); "": none (arrivals are not judged again, navigate/settle_timeout_s).
   std::string localization_topic = "amcl_pose";
-  double cycle_rate_hz = 20.0;                          ///< [0.01, 1000]
+  double cycle_rate_hz = 20.0;         ///< [0.01, 1000]
   int visualization_every = 5;         ///< Cycles between potential/contour/path messages, >= 1.
   double heading_tolerance_rad = 0.1;  ///< Default final heading tolerance (rad), (0, pi].
   double contact_memory_s = 60.0;      ///< Bumper contacts kept as obstacles (s), > 0.
