@@ -58,6 +58,10 @@ struct OpenLeg {
   spott_map::Pose2 start;
   double end_s = -1.0;  ///< Simulated time of the result (-1: still running).
   bool succeeded = false;
+  /// Navigate said "not localized": the demo localizes actively and sends the goal again
+  /// (RunNavigation); the leg goes on with that goal.
+  bool awaits_retry = false;
+  int retries = 0;
   std::string refusal;
   spott_launch::NavigateFeedbackLog feedback;
   std::string first_path, last_path;
@@ -69,7 +73,7 @@ class Replay {
       : metrics_(world), world_(world), kind_(kind), tolerance_m_(tolerance_m) {}
 
   void Time(double t) {
-    if (open_ && open_->end_s >= 0.0 &&
+    if (open_ && open_->end_s >= 0.0 && !open_->awaits_retry &&
         t > open_->end_s + spott_launch::LegMetrics::kSettleS + kRecordLagS) {
       Close();
     }
@@ -89,13 +93,28 @@ class Replay {
     metrics_.OnBodyContact(m.header.stamp.toSec(), spott_launch::AnyPressed(m));
   }
   void Path(const spott_msgs::GlobalPath& m) {
-    if (!open_) return;
+    if (!open_ || open_->end_s >= 0.0) return;
     open_->last_path = spott_launch::GlobalPathText(m);
     if (open_->first_path.empty() && m.header.stamp.toSec() >= open_->leg.start_sim_s)
       open_->first_path = open_->last_path;
   }
-  void Feedback(const spott_msgs::NavigateFeedback& fb) {
-    if (open_) open_->feedback.On(fb);
+  /// Navigate's feedback; of `goal_id` only when the run sends Navigate goals itself (the
+  /// live demo hears its own goals' feedback, not active localization's).
+  void Feedback(const spott_msgs::NavigateFeedback& fb, const std::string& goal_id) {
+    if (!open_ || (kind_ == RunKind::kNavigate && open_->goal_id != goal_id)) return;
+    open_->feedback.On(fb);
+  }
+  /// The goal sent again to the open leg's target after "not localized": the leg goes on.
+  bool Retry(const std::string& goal_id, const spott_map::Pose2& target) {
+    if (!open_ || !open_->awaits_retry ||
+        (open_->leg.target.Position() - target.Position()).norm() > 1e-6)
+      return false;
+    open_->awaits_retry = false;
+    open_->goal_id = goal_id;
+    open_->end_s = -1.0;
+    ++open_->retries;
+    open_->feedback.recoveries.push_back(spott_launch::kActiveLocalizationNote);
+    return true;
   }
   void Open(double t, const std::string& goal_id, NavigationLeg leg) {
     if (open_) Close();
@@ -109,10 +128,13 @@ class Replay {
   OpenLeg* Current(const std::string& goal_id) {
     return open_ && open_->goal_id == goal_id && open_->end_s < 0.0 ? &*open_ : nullptr;
   }
-  void End(OpenLeg& leg, double t) {
+  /// `retried`: Navigate said "not localized" and the demo goes on with the leg (RunNavigation:
+  /// active localization, the goal again), its window open meanwhile as the live run's is.
+  void End(OpenLeg& leg, double t, bool retried = false) {
     leg.end_s = t;
-    metrics_.EndAt(t + spott_launch::LegMetrics::kSettleS);
+    leg.awaits_retry = retried;
     leg.leg.sim_time_s = t - leg.leg.start_sim_s;
+    if (!retried) metrics_.EndAt(t + spott_launch::LegMetrics::kSettleS);
   }
   /// The open leg never was one: its goal was refused before anything ran (a mission the
   /// executive was not ready for, sent again).
@@ -242,6 +264,7 @@ int main(int argc, char** argv) {
   report.navigation.by_mission = kind == RunKind::kMission;
   report.navigation.ran = true;
   Replay replay(*world.world, kind, o.tolerance_m);
+  std::string navigate_client;    // the node that sent the first Navigate goal (the demo)
   std::size_t missions_seen = 0;  // legs of missions that ran, matched to the scenario's
   std::vector<std::string> features_before;
   for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
@@ -259,7 +282,7 @@ int main(int argc, char** argv) {
       if (auto p = m.instantiate<spott_msgs::GlobalPath>()) replay.Path(*p);
     } else if (topic == "/harmonic_planner/navigate/feedback") {
       if (auto p = m.instantiate<spott_msgs::NavigateActionFeedback>())
-        replay.Feedback(p->feedback);
+        replay.Feedback(p->feedback, p->status.goal_id.id);
     } else if (topic == "/sim/faults") {
       if (auto p = m.instantiate<diagnostic_msgs::DiagnosticArray>()) {
         const auto faults = spott_launch::FaultsFrom(*p);
@@ -315,7 +338,12 @@ int main(int argc, char** argv) {
           if ((place.pose.Position() - leg.target.Position()).norm() < 1e-6) leg.goal = place.name;
         }
         if (leg.goal.empty()) leg.goal = "(a point)";
-        replay.Open(p->header.stamp.toSec(), p->goal_id.id, leg);
+        // The run's own goals: active localization sends Navigate goals of its own.
+        const std::string& id = p->goal_id.id;
+        const std::string client = id.substr(0, id.find('-'));
+        if (navigate_client.empty()) navigate_client = client;
+        if (client != navigate_client || replay.Retry(id, leg.target)) continue;
+        replay.Open(p->header.stamp.toSec(), id, leg);
       }
     } else if (kind == RunKind::kNavigate && topic == "/harmonic_planner/navigate/result") {
       auto p = m.instantiate<spott_msgs::NavigateActionResult>();
@@ -324,7 +352,9 @@ int main(int argc, char** argv) {
       leg->leg.navigate_outcome = spott_move_base::TextOf(p->result);
       const bool succeeded = p->result.outcome == spott_msgs::NavigateResult::SUCCEEDED;
       leg->refusal = succeeded ? "" : "Navigate " + leg->leg.navigate_outcome;
-      replay.End(*leg, p->header.stamp.toSec());
+      replay.End(*leg, p->header.stamp.toSec(),
+                 spott_launch::NotLocalized(p->result) &&
+                     leg->retries < spott_launch::kMaxActiveLocalizations);
     }
   }
   report.navigation.legs = replay.Finish();

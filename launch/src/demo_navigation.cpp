@@ -6,6 +6,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
 #include <ros/spinner.h>
+#include <spott_msgs/ActiveLocalizeAction.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/LocalizationStatus.h>
@@ -174,6 +175,29 @@ bool SendAndWait(Client& client, const std::function<void()>& send, const ros::T
   return false;
 }
 
+using ActiveLocalizeClient = actionlib::SimpleActionClient<spott_msgs::ActiveLocalizeAction>;
+
+// Navigate said "not localized": what a client of a cognizant localization does (Beetz et al.
+// 2.2, as rpl_executive's policy does): localize actively, within the leg's time. False when
+// there is no ActiveLocalize (AMCL, dead reckoning) or no time left; its own outcome does not
+// matter: the goal sent again is judged anew.
+bool Relocalize(ActiveLocalizeClient& active, const ros::Time& started, double leg_timeout_s) {
+  const double left_s = leg_timeout_s - (ros::Time::now() - started).toSec();
+  if (left_s <= 1.0 || !active.waitForServer(ros::Duration(1.0))) return false;
+  spott_msgs::ActiveLocalizeGoal goal;
+  goal.timeout = left_s - 1.0;
+  ROS_INFO("demo: Navigate says not localized: localizing actively (at most %.0f s)", goal.timeout);
+  const bool done = SendAndWait(
+      active, [&] { active.sendGoal(goal); }, started, leg_timeout_s - 1.0);
+  if (!done) active.cancelGoal();
+  const auto result = active.getResult();
+  ROS_INFO("demo: active localization %s (certainty %.2f, %u targets)%s%s",
+           result && result->success ? "succeeded" : "gave up", result ? result->certainty : 0.0,
+           result ? result->targets_visited : 0u, result && !result->reason.empty() ? ": " : "",
+           result ? result->reason.c_str() : "");
+  return (ros::Time::now() - started).toSec() < leg_timeout_s - 1.0;
+}
+
 // When a goal's result came (simulated time), set by the client's done callback.
 struct DoneTime {
   std::mutex mutex;
@@ -333,6 +357,7 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     report.skipped = "harmonic_planner/navigate is not offered";
     return report;
   }
+  ActiveLocalizeClient active(nh, "active_localize", true);  // markov_localization's, if it runs
   report.ran = true;
   for (const std::string& name : goals) {
     NavigationLeg leg;
@@ -353,17 +378,26 @@ NavigationReport RunNavigation(ros::NodeHandle& nh, const spott_map::World& worl
     // prepare here but the goal.
     DoneTime done_time;
     const auto goal = NavigateGoalTo(place->pose, /*ignore_heading=*/false, goal_tolerance_m);
-    const bool done = SendAndWait(
-        client,
-        [&] {
-          client.sendGoal(
-              goal,
-              [&done_time](const actionlib::SimpleClientGoalState&,
-                           const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
-              NavigateClient::SimpleActiveCallback(),
-              [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(*fb); });
-        },
-        started, leg_timeout_s);
+    bool done = false;
+    for (int relocalized = 0;; ++relocalized) {
+      done_time.Reset();
+      done = SendAndWait(
+          client,
+          [&] {
+            client.sendGoal(
+                goal,
+                [&done_time](const actionlib::SimpleClientGoalState&,
+                             const spott_msgs::NavigateResultConstPtr&) { done_time.Set(); },
+                NavigateClient::SimpleActiveCallback(),
+                [&log](const spott_msgs::NavigateFeedbackConstPtr& fb) { log.On(*fb); });
+          },
+          started, leg_timeout_s);
+      const auto result = done ? client.getResult() : nullptr;
+      if (!result || !NotLocalized(*result) || relocalized >= kMaxActiveLocalizations) break;
+      if (!Relocalize(active, started, leg_timeout_s)) break;
+      std::lock_guard<std::mutex> lock(log.mutex);
+      log.log.recoveries.push_back(kActiveLocalizationNote);
+    }
     leg.wall_time_s = (ros::WallTime::now() - wall_started).toSec();
     bool succeeded = false;
     if (done) {

@@ -27,6 +27,11 @@ void NavigateFeedbackLog::On(const spott_msgs::NavigateFeedback& feedback) {
   recovering = now;
 }
 
+bool NotLocalized(const spott_msgs::NavigateResult& result) {
+  return result.outcome == spott_msgs::NavigateResult::FAILED &&
+         result.reason.rfind("not localized", 0) == 0;
+}
+
 std::string ApplyMissionResult(const spott_msgs::MissionResult& result, const MissionSpec& spec,
                                NavigationLeg& leg) {
   leg.mission_outcome = result.outcome;

@@ -11,6 +11,7 @@
 #include <spott_msgs/GlobalPath.h>
 #include <spott_msgs/MissionResult.h>
 #include <spott_msgs/NavigateFeedback.h>
+#include <spott_msgs/NavigateResult.h>
 #include <spott_msgs/TaskResult.h>
 
 #include "demo_report.h"
@@ -32,6 +33,15 @@ struct NavigateFeedbackLog {
   bool recovering = false;
   void On(const spott_msgs::NavigateFeedback& feedback);
 };
+
+/// Navigate ended FAILED "not localized" (it arrived on an estimate the localization calls
+/// lost): a plain Navigate client localizes actively and sends the goal again (RunNavigation;
+/// bag_report reads the same leg from the bag).
+bool NotLocalized(const spott_msgs::NavigateResult& result);
+/// The recovery the leg reports for it, live and from the bag alike.
+inline const char* const kActiveLocalizationNote =
+    "not localized: active localization, then the goal again";
+constexpr int kMaxActiveLocalizations = 2;  ///< Per leg.
 
 /// The TR+ controller's result into `leg`: interpretation, trace, task outcome, the features it
 /// added since `features_before` (updated), the goal point it sent. True when it says reached.

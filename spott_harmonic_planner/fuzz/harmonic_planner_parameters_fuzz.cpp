@@ -82,6 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("navigate/settle_timeout_s", n.settle_timeout_s, "[0, 60]");
   Expect(n.max_settle_drive_ons >= 0, "navigate/max_settle_drive_ons < 0 accepted");
   ExpectIn("navigate/settle_max_offset_m", n.settle_max_offset_m, "(0, 100]");
+  ExpectIn("navigate/lost_timeout_s", n.lost_timeout_s, "[0, 600]");
 
   // The cores the node builds at start: what the reader accepted, they must take.
   try {

@@ -48,6 +48,8 @@ std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p) 
   if (p.max_settle_drive_ons < 0) v.push_back("navigate/max_settle_drive_ons must be >= 0");
   if (!(p.settle_max_offset_m > 0.0 && p.settle_max_offset_m <= 100.0))
     v.push_back("navigate/settle_max_offset_m must be in (0, 100]");
+  if (!(p.lost_timeout_s >= 0.0 && p.lost_timeout_s <= 600.0))
+    v.push_back("navigate/lost_timeout_s must be in [0, 600]");
   return v;
 }
 
@@ -175,8 +177,25 @@ void NavigateSession::LocalizationUpdated(double stamp_s) {
 
 NavigateSession::Settle NavigateSession::Settled(double distance_m, double tolerance_m,
                                                  double now_s) {
+  if (lost_) {
+    if (!lost_since_s_) {
+      lost_since_s_ = now_s;
+      note_ = "arrived on the estimate, but the localization is lost: standing until it is certain";
+    }
+    if (now_s - *lost_since_s_ < params_.lost_timeout_s) return Settle::kWait;
+    std::ostringstream reason;
+    reason << "not localized: arrived on the estimate, but the localization has been lost for "
+           << now_s - *lost_since_s_ << " s (navigate/lost_timeout_s)";
+    Finish(NavigateOutcome::kFailed, reason.str());
+    return Settle::kNotLocalized;
+  }
+  if (lost_since_s_) {  // certain again: judged on the relocalized estimate
+    settle_since_s_ = *lost_since_s_;
+    lost_since_s_.reset();
+    relocalized_ = true;
+  }
   if (!localization_stamp_s_ || params_.settle_timeout_s <= 0.0 ||
-      drive_ons_ >= params_.max_settle_drive_ons)
+      (drive_ons_ >= params_.max_settle_drive_ons && !relocalized_))
     return Settle::kArrived;
   if (!settle_since_s_) {
     settle_since_s_ = now_s;
@@ -186,7 +205,10 @@ NavigateSession::Settle NavigateSession::Settled(double distance_m, double toler
   if (!updated && now_s - *settle_since_s_ < params_.settle_timeout_s) return Settle::kWait;
   settle_since_s_.reset();
   note_.clear();
-  if (!updated || distance_m <= tolerance_m || distance_m > params_.settle_max_offset_m)
+  const bool relocalized = relocalized_;
+  relocalized_ = false;
+  if (!updated || distance_m <= tolerance_m ||
+      (distance_m > params_.settle_max_offset_m && !relocalized))
     return Settle::kArrived;
   ++drive_ons_;  // the estimate moved: approach again, judged afresh
   closest_m_ = 1e300;

@@ -270,6 +270,43 @@ TEST(NavigateSession, AnArrivalIsTakenAsItIsWithoutALocalizationOrAfterTheTimeou
   EXPECT_EQ(off.Settled(0.1, 0.25, 1.0), Settle::kArrived);
 }
 
+// bonn_kidnap: position_1 "reached" 3.8 m off while the status said lost. No arrival is taken on
+// an estimate the localization does not trust: the robot stands for it to be certain again.
+TEST(NavigateSession, NoArrivalIsTakenWhileTheLocalizationIsLost) {
+  NavigateSessionParameters p;
+  p.settle_timeout_s = 3.0;
+  p.lost_timeout_s = 20.0;
+  using Settle = NavigateSession::Settle;
+  NavigateSession relocalized(p, 0.0);
+  relocalized.LocalizationUpdated(0.5);
+  relocalized.LocalizationLost(true);
+  EXPECT_EQ(relocalized.Settled(0.1, 0.25, 1.0), Settle::kWait);
+  EXPECT_NE(relocalized.note().find("lost"), std::string::npos);
+  EXPECT_EQ(relocalized.Settled(0.1, 0.25, 10.0), Settle::kWait);  // beyond settle_timeout_s
+  relocalized.LocalizationUpdated(12.0);  // certain again, the estimate 3.8 m from the target
+  relocalized.LocalizationLost(false);
+  EXPECT_EQ(relocalized.Settled(3.8, 0.25, 12.1), Settle::kDriveOn);  // not "a relocalization"
+  EXPECT_FALSE(relocalized.finished());
+
+  NavigateSession right(p, 0.0);  // certain again where it stood: arrived
+  right.LocalizationUpdated(0.5);
+  right.LocalizationLost(true);
+  EXPECT_EQ(right.Settled(0.1, 0.25, 1.0), Settle::kWait);
+  right.LocalizationUpdated(2.0);
+  right.LocalizationLost(false);
+  EXPECT_EQ(right.Settled(0.12, 0.25, 2.1), Settle::kArrived);
+
+  p.max_settle_drive_ons = 0;  // even with no judging again, a lost estimate is no arrival
+  NavigateSession never(p, 0.0);
+  never.LocalizationLost(true);  // no estimate published yet either
+  EXPECT_EQ(never.Settled(0.1, 0.25, 1.0), Settle::kWait);
+  EXPECT_EQ(never.Settled(0.1, 0.25, 20.9), Settle::kWait);
+  EXPECT_EQ(never.Settled(0.1, 0.25, 21.0), Settle::kNotLocalized);
+  EXPECT_TRUE(never.finished());
+  EXPECT_EQ(never.outcome(), NavigateOutcome::kFailed);
+  EXPECT_NE(never.reason().find("not localized"), std::string::npos);
+}
+
 TEST(ContactMemory, RemembersContactsOnTheBodyAndForgetsThemLater) {
   ContactMemory m(10.0, 0.1);
   // Robot at (1, 2) facing +y, radius 0.2, contact dead ahead: disc centre 0.25 m ahead.

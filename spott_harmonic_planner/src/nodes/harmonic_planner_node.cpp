@@ -19,6 +19,7 @@
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/GlobalGoal.h>
 #include <spott_msgs/GlobalPlanStatus.h>
+#include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
 #include <spott_msgs/NavigateAction.h>
 #include <spott_msgs/ProjectedGoal.h>
@@ -72,6 +73,9 @@ class HarmonicPlannerNode {
     if (!params_.localization_topic.empty())
       localization_sub_ =
           nh.subscribe(params_.localization_topic, 5, &HarmonicPlannerNode::OnLocalization, this);
+    if (!params_.localization_status_topic.empty())
+      status_sub_ = nh.subscribe(params_.localization_status_topic, 5,
+                                 &HarmonicPlannerNode::OnLocalizationStatus, this);
     server_.registerGoalCallback([this] { OnGoal(); });
     server_.registerPreemptCallback([this] { OnPreempt(); });
     server_.start();
@@ -177,6 +181,13 @@ class HarmonicPlannerNode {
     if (session_) session_->LocalizationUpdated(msg.header.stamp.toSec());
   }
 
+  // Whether the localization is lost (spott_msgs/LocalizationStatus): no arrival is taken on an
+  // estimate it does not trust. Its ActiveLocalize drives on the modes it chose: not lost then.
+  void OnLocalizationStatus(const spott_msgs::LocalizationStatus& msg) {
+    localization_lost_ = msg.lost && msg.mode != spott_msgs::LocalizationStatus::ACTIVE;
+    if (session_) session_->LocalizationLost(localization_lost_);
+  }
+
   // --- sensors -------------------------------------------------------------------------------
 
   void OnOdom(const nav_msgs::Odometry& msg) {
@@ -247,6 +258,7 @@ class HarmonicPlannerNode {
     }
     request_ = *request;
     session_ = std::make_unique<NavigateSession>(params_.navigate, ros::Time::now().toSec());
+    session_->LocalizationLost(localization_lost_);
     if (have_pose_) session_->PoseAvailable();
     goal_id_ = ros::this_node::getName() + "/" + std::to_string(++goal_count_);
     planner_.ClearBorderGoal();
@@ -457,6 +469,10 @@ class HarmonicPlannerNode {
             turning_ = false;
             Drive(0.0, 0.0);
             return to_target;
+          case NavigateSession::Settle::kNotLocalized:
+            ROS_WARN("harmonic_planner: %s", session_->reason().c_str());
+            Finish();
+            return to_target;
           case NavigateSession::Settle::kArrived:
             break;
         }
@@ -491,7 +507,7 @@ class HarmonicPlannerNode {
   ros::Publisher cmd_pub_, goal_pub_, window_pub_, status_pub_, steering_pub_, potential_pub_,
       contours_pub_, path_pub_;
   ros::Subscriber features_sub_, graph_sub_, projected_sub_, plan_status_sub_, odom_sub_,
-      bumper_sub_, localization_sub_;
+      bumper_sub_, localization_sub_, status_sub_;
   ros::Timer timer_;
   spott_map::MapDatabase db_;
   std::unique_ptr<NavigateSession> session_;  ///< The running goal, if any.
@@ -499,9 +515,10 @@ class HarmonicPlannerNode {
   std::string goal_id_;
   long goal_count_ = 0;
   bool have_pose_ = false;
-  bool turning_ = false;       ///< Arrived at the position; turning to the final heading.
-  bool snap_said_ = false;     ///< The goal's snap out of the padding was logged.
-  bool waiting_said_ = false;  ///< The wait for a way was logged.
+  bool turning_ = false;            ///< Arrived at the position; turning to the final heading.
+  bool snap_said_ = false;          ///< The goal's snap out of the padding was logged.
+  bool waiting_said_ = false;       ///< The wait for a way was logged.
+  bool localization_lost_ = false;  ///< The localization's newest status said lost.
   spott_map::Pose2 odom_;
   double travelled_ = 0.0;
   Vec2 last_position_{0.0, 0.0};

@@ -24,6 +24,9 @@ struct NodeParameters {
   /// The localization's estimates, one per update (geometry_msgs/PoseWithCovarianceStamped,
   /// AMCL's amcl_pose); "": none (arrivals are not judged again, navigate/settle_timeout_s).
   std::string localization_topic = "amcl_pose";
+  /// Its status (spott_msgs/LocalizationStatus): no arrival while it says lost
+  /// (navigate/lost_timeout_s); "": none (AMCL has no such topic).
+  std::string localization_status_topic = "localization_status";
   double cycle_rate_hz = 20.0;         ///< [0.01, 1000]
   int visualization_every = 5;         ///< Cycles between potential/contour/path messages, >= 1.
   double heading_tolerance_rad = 0.1;  ///< Default final heading tolerance (rad), (0, pi].
