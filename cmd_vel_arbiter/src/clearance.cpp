@@ -8,6 +8,15 @@ namespace cmd_vel_arbiter {
 
 namespace {
 constexpr double kAtMinimumM = 1e-4;  // a float32 reading of the minimum, within rounding
+
+// An echo at (px, py) in the robot's frame bounds the gap ahead or behind when it lies in the
+// corridor the round body sweeps: along x from the body's outline to the echo.
+void AddEcho(double px, double py, double radius, double half_width, SpeedBounds& b) {
+  if (std::abs(py) >= half_width) return;
+  const double body = std::sqrt(std::max(0.0, radius * radius - py * py));
+  if (px > 0.0) b.forward_gap_m = std::min(b.forward_gap_m, std::max(0.0, px - body));
+  if (px < 0.0) b.backward_gap_m = std::min(b.backward_gap_m, std::max(0.0, -px - body));
+}
 }  // namespace
 
 std::vector<std::string> ValidateParameters(const ClearanceParameters& p) {
@@ -66,13 +75,26 @@ SpeedBounds BoundsFromRing(const std::vector<Transducer>& transducers, double fi
     }
     // The echo lies somewhere on the arc: its ends and middle stand for it.
     for (const double off : {-half_fov, 0.0, half_fov}) {
-      const double px = t.x + r * std::cos(t.yaw + off), py = t.y + r * std::sin(t.yaw + off);
-      if (std::abs(py) >= half_width) continue;
-      // Along x from the round body's outline to the echo.
-      const double body = std::sqrt(std::max(0.0, radius * radius - py * py));
-      if (px > 0.0) b.forward_gap_m = std::min(b.forward_gap_m, std::max(0.0, px - body));
-      if (px < 0.0) b.backward_gap_m = std::min(b.backward_gap_m, std::max(0.0, -px - body));
+      AddEcho(t.x + r * std::cos(t.yaw + off), t.y + r * std::sin(t.yaw + off), radius, half_width,
+              b);
     }
+  }
+  b.forward_mps = StoppingSpeed(b.forward_gap_m, p);
+  b.backward_mps = StoppingSpeed(b.backward_gap_m, p);
+  return b;
+}
+
+SpeedBounds BoundsFromScan(const ScanGeometry& scan, const std::vector<double>& ranges_m,
+                           double radius_m, const ClearanceParameters& p) {
+  SpeedBounds b;
+  const double radius = p.footprint_radius_m > 0.0 ? p.footprint_radius_m : radius_m;
+  const double half_width = radius + p.corridor_margin_m;
+  const Transducer& m = scan.mount;
+  for (std::size_t i = 0; i < ranges_m.size(); ++i) {
+    const double r = ranges_m[i];
+    if (!std::isfinite(r) || r < scan.range_min_m || r >= scan.range_max_m) continue;
+    const double a = m.yaw + scan.angle_min_rad + static_cast<double>(i) * scan.angle_increment_rad;
+    AddEcho(m.x + r * std::cos(a), m.y + r * std::sin(a), radius, half_width, b);
   }
   b.forward_mps = StoppingSpeed(b.forward_gap_m, p);
   b.backward_mps = StoppingSpeed(b.backward_gap_m, p);

@@ -92,6 +92,58 @@ TEST(Clearance, AWallAheadCapsForwardOnlyAndSideWallsCapNothing) {
   EXPECT_GT(back.backward_mps, 0.0);
 }
 
+// bonn_kidnap: the B21 turned towards a hallway wall; its sonars read their 0.15 m minimum while
+// the laser (181 rays over 180 degrees, 0.1 m ahead of the centre) saw the wall 0.09 m ahead.
+TEST(Clearance, ALaserScanBoundsByItsPointsInTheSweptCorridor) {
+  ClearanceParameters p;
+  ScanGeometry laser;
+  laser.mount = Transducer{0.1, 0.0, 0.0};
+  laser.angle_min_rad = -M_PI / 2;
+  laser.angle_increment_rad = M_PI / 180;
+  laser.range_min_m = 0.02;
+  laser.range_max_m = 25.0;
+  const double radius = 0.2625;
+  // A wall across the way 0.5 m ahead of the centre: the ray at angle a reads 0.4 / cos(a).
+  std::vector<double> wall(181);
+  for (int i = 0; i < 181; ++i) {
+    const double a = -M_PI / 2 + i * M_PI / 180;
+    wall[i] = std::abs(std::cos(a)) > 1e-3 ? 0.4 / std::cos(a) : kInf;
+  }
+  SpeedBounds b = BoundsFromScan(laser, wall, radius, p);
+  EXPECT_NEAR(b.forward_gap_m, 0.5 - radius, 1e-9);  // the body's front to the wall
+  EXPECT_NEAR(b.forward_mps, StoppingSpeed(0.5 - radius, p), 1e-12);
+  EXPECT_EQ(b.backward_gap_m, kInf);  // a laser looking ahead bounds nothing behind
+  // 0.09 m from the face: within the stop margin's reach, no speed ahead.
+  for (int i = 0; i < 181; ++i) {
+    const double a = -M_PI / 2 + i * M_PI / 180;
+    wall[i] = std::abs(std::cos(a)) > 1e-3 ? (radius + 0.09 - 0.1) / std::cos(a) : kInf;
+  }
+  b = BoundsFromScan(laser, wall, radius, p);
+  EXPECT_NEAR(b.forward_gap_m, 0.09, 1e-9);
+  EXPECT_LT(b.forward_mps, 0.15);
+  // A hallway's side walls 0.6 m to either side bound nothing; NaN, Inf and readings out of
+  // [range_min, range_max) neither.
+  std::vector<double> side(181, kInf);
+  side[0] = side[180] = 0.6;
+  side[90] = std::numeric_limits<double>::quiet_NaN();
+  side[89] = 0.01;  // below range_min
+  side[91] = 25.0;  // at range_max: no echo
+  b = BoundsFromScan(laser, side, radius, p);
+  EXPECT_EQ(b.forward_gap_m, kInf);
+  EXPECT_EQ(b.forward_mps, kInf);
+  // A laser mounted backwards bounds the way back.
+  laser.mount = Transducer{-0.1, 0.0, M_PI};
+  std::vector<double> behind(181, kInf);
+  behind[90] = 0.4;
+  b = BoundsFromScan(laser, behind, radius, p);
+  EXPECT_NEAR(b.backward_gap_m, 0.5 - radius, 1e-9);
+  EXPECT_EQ(b.forward_gap_m, kInf);
+  // footprint_radius_m, when set, is the body's radius.
+  p.footprint_radius_m = 0.4;
+  b = BoundsFromScan(laser, behind, radius, p);
+  EXPECT_NEAR(b.backward_gap_m, 0.1, 1e-9);
+}
+
 TEST(Clearance, ValidationNamesEveryBadParameter) {
   ClearanceParameters p;
   EXPECT_TRUE(ValidateParameters(p).empty());

@@ -3,7 +3,8 @@
 // the bumper and a timer, serves take/release/limits and publishes the status.
 //
 // Subscribes: cmd_vel/<source> (geometry_msgs/Twist) for every configured source, bumper
-// (spott_msgs/BumperRing), clearance/topics (spott_msgs/RangeRing: sonar, infrared). Publishes:
+// (spott_msgs/BumperRing), clearance/topics (spott_msgs/RangeRing: sonar, infrared),
+// clearance/scan_topics (sensor_msgs/LaserScan: the laser; its pose from tf). Publishes:
 // cmd_vel (geometry_msgs/Twist), ~status (spott_msgs/ArbiterStatus, latched), ~driver_marker
 // (visualization_msgs/Marker, latched: who drives, as text over the robot for rviz). Services:
 // ~take_wheels, ~release_wheels, ~set_speed_limits. Parameters: config/cmd_vel_arbiter.yaml.
@@ -11,9 +12,13 @@
 #include <spott_msgs/ReleaseWheels.h>
 #include <spott_msgs/SetSpeedLimits.h>
 #include <spott_msgs/TakeWheels.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
+#include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +26,7 @@
 #include "cmd_vel_arbiter/ros/parameters.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
+#include "spott_ros/robot_geometry.h"
 
 namespace cmd_vel_arbiter {
 namespace {
@@ -32,7 +38,8 @@ class ArbiterNode {
   ArbiterNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const NodeParameters& p)
       : arbiter_(p.arbiter),
         params_(p),
-        rings_(p.clearance_topics.size(), p.clearance_max_age_s),
+        clearance_names_(ClearanceTopicNames(p)),
+        rings_(clearance_names_.size(), p.clearance_max_age_s),
         refusals_(nh, "cmd_vel_arbiter") {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 10);
     status_pub_ = pnh.advertise<spott_msgs::ArbiterStatus>("status", 1, true);
@@ -51,6 +58,25 @@ class ArbiterNode {
           p.clearance_topics[i], 10,
           [this, i](const spott_msgs::RangeRing::ConstPtr& m) { OnRing(i, *m); },
           ros::VoidConstPtr(), hints));
+    }
+    for (std::size_t i = 0; p.clearance_enabled && i < p.clearance_scan_topics.size(); ++i) {
+      const std::size_t index = p.clearance_topics.size() + i;
+      ring_subs_.push_back(nh.subscribe<sensor_msgs::LaserScan>(
+          p.clearance_scan_topics[i], 10,
+          [this, index](const sensor_msgs::LaserScan::ConstPtr& m) { OnScan(index, *m); },
+          ros::VoidConstPtr(), hints));
+    }
+    if (p.clearance_enabled && !p.clearance_scan_topics.empty()) {
+      tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_);
+      std::string error;
+      if (const auto r = spott_ros::FootprintRadiusFromParameter(nh, "robot_description",
+                                                                 p.base_frame, &error))
+        radius_m_ = *r;
+      else if (p.clearance.footprint_radius_m <= 0.0)
+        ROS_WARN(
+            "cmd_vel_arbiter: no footprint radius (%s) and clearance/footprint_radius_m is 0: "
+            "laser scans cap nothing",
+            error.c_str());
     }
     take_srv_ = pnh.advertiseService("take_wheels", &ArbiterNode::OnTake, this);
     release_srv_ = pnh.advertiseService("release_wheels", &ArbiterNode::OnRelease, this);
@@ -99,15 +125,19 @@ class ArbiterNode {
   }
 
   void OnRing(std::size_t index, const spott_msgs::RangeRing& ring) {
-    const std::string& topic = params_.clearance_topics[index];
+    const std::string& topic = clearance_names_[index];
     std::string error;
     const auto bounds = conv::RingBounds(ring, params_.clearance, &error);
     if (!bounds) {
       refusals_.Refuse(topic, "ranges/mounts", error);
       return;
     }
+    OnBounds(index, *bounds);
+  }
+
+  void OnBounds(std::size_t index, const SpeedBounds& bounds) {
     const double now = Now();
-    rings_.Set(index, *bounds, now);
+    rings_.Set(index, bounds, now);
     const std::uint32_t before = arbiter_.clearance_slowdowns();
     const SpeedBounds tightest = Tightest(now, nullptr);
     Emit(arbiter_.SetClearance(tightest.forward_mps, tightest.backward_mps, now));
@@ -120,6 +150,35 @@ class ArbiterNode {
     }
   }
 
+  // A laser scan: its rays' points bound alike, the scanner's pose from tf (a static mount, looked
+  // up once per frame).
+  void OnScan(std::size_t index, const sensor_msgs::LaserScan& scan) {
+    const std::string& topic = clearance_names_[index];
+    auto mount = mounts_.find(scan.header.frame_id);
+    if (mount == mounts_.end()) {
+      try {
+        const auto t = tf_.lookupTransform(params_.base_frame, scan.header.frame_id, ros::Time(0));
+        const auto& v = t.transform.translation;
+        const auto& q = t.transform.rotation;
+        const double yaw =
+            std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+        mount = mounts_.emplace(scan.header.frame_id, Transducer{v.x, v.y, yaw}).first;
+      } catch (const tf2::TransformException& e) {
+        ROS_WARN_THROTTLE(10.0, "cmd_vel_arbiter: %s: no pose of '%s' in '%s' yet: %s",
+                          topic.c_str(), scan.header.frame_id.c_str(), params_.base_frame.c_str(),
+                          e.what());
+        return;
+      }
+    }
+    std::string error;
+    const auto bounds = conv::ScanBounds(scan, mount->second, radius_m_, params_.clearance, &error);
+    if (!bounds) {
+      refusals_.Refuse(topic, "ranges/angles", error);
+      return;
+    }
+    OnBounds(index, *bounds);
+  }
+
   // The rings' tightest bounds; a ring silent for clearance/max_age_s bounds nothing (the bumper
   // and the planners' maps still guard), said once when it falls silent.
   SpeedBounds Tightest(double now, bool* went_silent) {
@@ -127,7 +186,7 @@ class ArbiterNode {
     const SpeedBounds t = rings_.Tightest(now, &silent);
     for (std::size_t i : silent) {
       ROS_WARN("cmd_vel_arbiter: no %s for %.1f s: it caps nothing until it is back",
-               params_.clearance_topics[i].c_str(), params_.clearance_max_age_s);
+               clearance_names_[i].c_str(), params_.clearance_max_age_s);
     }
     if (went_silent) *went_silent = !silent.empty();
     return t;
@@ -189,7 +248,12 @@ class ArbiterNode {
 
   Arbiter arbiter_;
   NodeParameters params_;
-  RingBoundsSet rings_;  ///< The clearance rings' latest bounds.
+  std::vector<std::string> clearance_names_;  ///< Rings' topics, then scans' (ClearanceTopicNames).
+  RingBoundsSet rings_;                       ///< The clearance rings' and scans' latest bounds.
+  tf2_ros::Buffer tf_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::map<std::string, Transducer> mounts_;  ///< Scanners' poses in base_frame by frame id.
+  double radius_m_ = 0.0;                     ///< From the robot description (0: unknown).
   spott_ros::InputRefusals refusals_;
   std::uint64_t published_revision_ = ~std::uint64_t{0};
   ros::Publisher cmd_pub_, status_pub_, marker_pub_;

@@ -62,6 +62,40 @@ std::optional<SpeedBounds> RingBounds(const spott_msgs::RangeRing& ring,
   return BoundsFromRing(transducers, ring.field_of_view, ring.min_range, ring.max_range, ranges, p);
 }
 
+std::optional<SpeedBounds> ScanBounds(const sensor_msgs::LaserScan& scan, const Transducer& mount,
+                                      double radius_m, const ClearanceParameters& p,
+                                      std::string* error) {
+  if (!std::isfinite(scan.angle_min) || !std::isfinite(scan.angle_increment)) {
+    *error = "angle_min or angle_increment is not finite";
+    return std::nullopt;
+  }
+  if (scan.angle_increment == 0.0f && scan.ranges.size() > 1) {
+    *error = "angle_increment is 0 with " + std::to_string(scan.ranges.size()) + " ranges";
+    return std::nullopt;
+  }
+  if (!std::isfinite(scan.range_min) || !std::isfinite(scan.range_max) || scan.range_min < 0.0f ||
+      scan.range_min > scan.range_max) {
+    *error = "range_min and range_max must be finite with 0 <= range_min <= range_max";
+    return std::nullopt;
+  }
+  if (!std::isfinite(mount.x) || !std::isfinite(mount.y) || !std::isfinite(mount.yaw)) {
+    *error = "the scanner's pose in the robot's frame (tf) is not finite";
+    return std::nullopt;
+  }
+  if (!(std::isfinite(radius_m) && radius_m > 0.0) && !(p.footprint_radius_m > 0.0)) {
+    *error = "no footprint radius";
+    return std::nullopt;
+  }
+  ScanGeometry g;
+  g.mount = mount;
+  g.angle_min_rad = scan.angle_min;
+  g.angle_increment_rad = scan.angle_increment;
+  g.range_min_m = scan.range_min;
+  g.range_max_m = scan.range_max;
+  const std::vector<double> ranges(scan.ranges.begin(), scan.ranges.end());
+  return BoundsFromScan(g, ranges, radius_m, p);
+}
+
 spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp) {
   spott_msgs::ArbiterStatus s;
   s.header.stamp = stamp;

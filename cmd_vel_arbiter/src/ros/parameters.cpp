@@ -2,6 +2,12 @@
 
 namespace cmd_vel_arbiter {
 
+std::vector<std::string> ClearanceTopicNames(const NodeParameters& p) {
+  std::vector<std::string> all = p.clearance_topics;
+  all.insert(all.end(), p.clearance_scan_topics.begin(), p.clearance_scan_topics.end());
+  return all;
+}
+
 void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   for (const std::string& name : r.Keys("sources")) {
     SourceParameters s;
@@ -16,6 +22,8 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("status_rate_hz", p.status_rate_hz, "Hz");
   r.Get("clearance/enabled", p.clearance_enabled);
   r.Get("clearance/topics", p.clearance_topics);
+  r.Get("clearance/scan_topics", p.clearance_scan_topics);
+  r.Get("clearance/base_frame", p.base_frame);
   r.Get("clearance/max_age_s", p.clearance_max_age_s, "s");
   r.Get("clearance/exempt_sources", p.arbiter.clearance_exempt);
   ClearanceParameters& c = p.clearance;
@@ -29,15 +37,17 @@ void Read(spott_ros::ParameterReader& r, NodeParameters& p) {
   for (const std::string& e : ValidateParameters(p.clearance)) r.Fail(e);
   r.Require(p.clearance_max_age_s > 0 && p.clearance_max_age_s <= 60, "clearance/max_age_s",
             "in (0, 60]", p.clearance_max_age_s);
-  if (p.clearance_enabled && p.clearance_topics.empty())
-    r.Fail("clearance/topics must name at least one topic");
-  for (std::size_t i = 0; i < p.clearance_topics.size(); ++i) {
-    const std::string& t = p.clearance_topics[i];
-    if (t.empty()) r.Fail("clearance/topics: an empty topic name");
+  if (p.clearance_enabled && p.clearance_topics.empty() && p.clearance_scan_topics.empty())
+    r.Fail("clearance/topics and clearance/scan_topics must name at least one topic");
+  const std::vector<std::string> all = ClearanceTopicNames(p);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const char* key = i < p.clearance_topics.size() ? "clearance/topics" : "clearance/scan_topics";
+    if (all[i].empty()) r.Fail(std::string(key) + ": an empty topic name");
     for (std::size_t j = 0; j < i; ++j) {
-      if (p.clearance_topics[j] == t) r.Fail("clearance/topics: '" + t + "' twice");
+      if (all[j] == all[i]) r.Fail(std::string(key) + ": '" + all[i] + "' twice");
     }
   }
+  if (p.base_frame.empty()) r.Fail("clearance/base_frame must not be empty");
   // The timers' periods 1 / rate must make a ros::Duration (at most 2^31 s).
   r.Require(p.update_rate_hz >= 0.01 && p.update_rate_hz <= 1000, "update_rate_hz",
             "in [0.01, 1000]", p.update_rate_hz);

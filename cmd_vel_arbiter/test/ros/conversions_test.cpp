@@ -91,6 +91,40 @@ TEST(Conversions, ARangeRingGivesTheClearanceBoundsOrIsRefusedNamingTheField) {
   EXPECT_FALSE(RingBounds(r, p, &error));
 }
 
+TEST(Conversions, ALaserScanGivesTheClearanceBoundsOrIsRefusedNamingTheField) {
+  sensor_msgs::LaserScan scan;  // three rays at -10, 0, +10 degrees from a laser 0.1 m ahead
+  scan.angle_min = -0.1745f;
+  scan.angle_increment = 0.1745f;
+  scan.range_min = 0.02f;
+  scan.range_max = 25.0f;
+  scan.ranges = {30.0f, 0.5f, std::numeric_limits<float>::quiet_NaN()};
+  const Transducer mount{0.1, 0.0, 0.0};
+  ClearanceParameters p;
+  std::string error;
+  const auto b = ScanBounds(scan, mount, 0.25, p, &error);
+  ASSERT_TRUE(b) << error;
+  EXPECT_NEAR(b->forward_gap_m, 0.1 + 0.5 - 0.25, 1e-6);  // only the ray at 0 degrees echoes
+  const auto refused = [&](sensor_msgs::LaserScan s, const Transducer& m, double radius,
+                           const std::string& field) {
+    std::string why;
+    EXPECT_FALSE(ScanBounds(s, m, radius, p, &why)) << field;
+    EXPECT_NE(why.find(field), std::string::npos) << why;
+  };
+  sensor_msgs::LaserScan bad = scan;
+  bad.angle_min = std::numeric_limits<float>::infinity();
+  refused(bad, mount, 0.25, "angle_min");
+  bad = scan;
+  bad.angle_increment = 0.0f;
+  refused(bad, mount, 0.25, "angle_increment is 0");
+  bad = scan;
+  bad.range_min = 30.0f;
+  refused(bad, mount, 0.25, "range_min");
+  refused(scan, Transducer{std::nan(""), 0.0, 0.0}, 0.25, "tf");
+  refused(scan, mount, 0.0, "radius");
+  p.footprint_radius_m = 0.3;  // the parameter stands for an unknown robot description
+  EXPECT_TRUE(ScanBounds(scan, mount, 0.0, p, &error)) << error;
+}
+
 TEST(Conversions, TheDriverMarkerSaysWhoDrivesOverTheRobot) {
   spott_msgs::ArbiterStatus s;
   s.header.stamp = ros::Time(5.0);

@@ -53,15 +53,27 @@ TEST(NodeParameters, ClearanceTopicsAreAListOfDistinctNames) {
   NodeParameters p;
   EXPECT_EQ(ReadTree(OneSource(), &p), Strings{});
   EXPECT_EQ(p.clearance_topics, (Strings{"sonar", "infrared"}));
-  for (const Strings& bad : {Strings{}, Strings{"sonar", ""}, Strings{"sonar", "sonar"}}) {
+  EXPECT_EQ(p.clearance_scan_topics, (Strings{"scan"}));
+  const auto with = [](const Strings& rings, const Strings& scans) {
     XmlRpc::XmlRpcValue v = OneSource();
-    v["clearance"]["topics"].setSize(static_cast<int>(bad.size()));
-    for (std::size_t i = 0; i < bad.size(); ++i) v["clearance"]["topics"][i] = bad[i];
+    v["clearance"]["topics"].setSize(static_cast<int>(rings.size()));
+    for (std::size_t i = 0; i < rings.size(); ++i) v["clearance"]["topics"][i] = rings[i];
+    v["clearance"]["scan_topics"].setSize(static_cast<int>(scans.size()));
+    for (std::size_t i = 0; i < scans.size(); ++i) v["clearance"]["scan_topics"][i] = scans[i];
     NodeParameters q;
-    const Strings e = ReadTree(v, &q);
-    ASSERT_EQ(e.size(), 1u) << (bad.empty() ? "no topic" : bad.back());
-    EXPECT_NE(e[0].find("clearance/topics"), std::string::npos) << e[0];
+    return ReadTree(v, &q);
+  };
+  for (const Strings& bad : {Strings{"sonar", ""}, Strings{"sonar", "sonar"}, Strings{"scan"}}) {
+    const Strings e = with(bad, {"scan"});
+    ASSERT_EQ(e.size(), 1u) << bad.back();
+    EXPECT_NE(e[0].find("clearance/"), std::string::npos) << e[0];
+    EXPECT_NE(e[0].find(bad.back().empty() ? "empty" : "twice"), std::string::npos) << e[0];
   }
+  EXPECT_EQ(with({}, {"scan"}), Strings{});   // a laser alone caps
+  EXPECT_EQ(with({"sonar"}, {}), Strings{});  // a ring alone too
+  const Strings none = with({}, {});          // nothing to cap by while enabled
+  ASSERT_EQ(none.size(), 1u);
+  EXPECT_NE(none[0].find("at least one topic"), std::string::npos) << none[0];
   // The old single key is refused by name (unknown keys stop the node).
   XmlRpc::XmlRpcValue v = OneSource();
   v["clearance"]["topic"] = "sonar";

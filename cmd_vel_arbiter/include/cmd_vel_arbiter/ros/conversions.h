@@ -7,6 +7,7 @@
 
 #include <geometry_msgs/Twist.h>
 #include <ros/time.h>
+#include <sensor_msgs/LaserScan.h>
 #include <spott_msgs/ArbiterStatus.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/RangeRing.h>
@@ -32,6 +33,14 @@ std::optional<std::vector<double>> PressedAngles(const spott_msgs::BumperRing& r
 /// is not finite.
 std::optional<SpeedBounds> RingBounds(const spott_msgs::RangeRing& ring,
                                       const ClearanceParameters& p, std::string* error);
+
+/// The speed bounds from a laser scan whose frame sits at `mount` in the robot's frame (from tf),
+/// the body round with `radius_m`; nullopt with `error` naming the field when an angle, the
+/// range limits, the mount or the radius is not finite, range_min is negative or above
+/// range_max, or the increment is 0 with more than one reading.
+std::optional<SpeedBounds> ScanBounds(const sensor_msgs::LaserScan& scan, const Transducer& mount,
+                                      double radius_m, const ClearanceParameters& p,
+                                      std::string* error);
 
 spott_msgs::ArbiterStatus ToStatus(const Arbiter& arbiter, const ros::Time& stamp);
 

@@ -21,9 +21,17 @@ struct NodeParameters {
   /// spott_msgs/RangeRing topics, the tightest bound wins; a topic nobody publishes bounds
   /// nothing (the B21 and HILARE have no infrared ring).
   std::vector<std::string> clearance_topics{"sonar", "infrared"};
-  double clearance_max_age_s = 0.5;  ///< An older ring bounds nothing (s), (0, 60].
+  /// sensor_msgs/LaserScan topics bounding alike (the B21's and HILARE's lasers); the scanner's
+  /// pose from tf (clearance/base_frame <- the scan's frame), the body's radius from
+  /// clearance/footprint_radius_m or the robot description.
+  std::vector<std::string> clearance_scan_topics{"scan"};
+  std::string base_frame = "base_link";  ///< clearance/base_frame (REP-105).
+  double clearance_max_age_s = 0.5;      ///< An older ring bounds nothing (s), (0, 60].
   ClearanceParameters clearance;
 };
+
+/// The rings' topics, then the scans': the clearance inputs by index.
+std::vector<std::string> ClearanceTopicNames(const NodeParameters& p);
 
 /// Fills `p` (missing keys keep their defaults; one source per key under `sources`) and records
 /// every violation in `r` by its key.
