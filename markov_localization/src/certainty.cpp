@@ -128,7 +128,8 @@ PositionCertainty PosCertaintyOf(const Belief& b, const View& view,
       }
     }
   }
-  out.certainty = mass;
+  // A probability: the float belief's sum exceeds 1 by rounding (0.6f + 0.3f + 0.1f > 1).
+  out.certainty = std::min(mass, 1.0);
   if (mass > 0.0) out.estimate = Pose2{sx / mass, sy / mass, std::atan2(ss, sc)};
   return out;
 }

@@ -254,6 +254,27 @@ TEST(Certainty, EntropyOfUniformIsLogOfTheStateCount) {
   EXPECT_NEAR(Entropy(BeliefSnapshot::Of(grid)), 0.0, 1e-5);
 }
 
+// A belief of floats sums to 1 only within rounding: 0.6f + 0.3f + 0.1f is 1.0000000373. The
+// status says a probability (rpl_executive refused "1.000000 is not in [0, 1]" a hundred times
+// in a run and kept a stale POS-CERTAINTY*).
+TEST(Certainty, PosCertaintyIsAProbabilityWhateverTheRounding) {
+  const MapModel map = Corridor();
+  const SensorModel sensor(map, 4, OneBeam());
+  MarkovGrid grid(map, sensor, FourHeadings(false));
+  BeliefSnapshot b = BeliefSnapshot::Of(grid);
+  std::fill(b.p.begin(), b.p.end(), 0.0f);
+  b.p[b.Index(1, 1, 0)] = 0.6f;
+  b.p[b.Index(2, 1, 0)] = 0.3f;
+  b.p[b.Index(1, 1, 1)] = 0.1f;
+  ASSERT_GT(static_cast<double>(0.6f) + 0.3f + 0.1f, 1.0);
+  CertaintyParameters cp;
+  cp.mode_radius_m = 1.0;
+  cp.mode_radius_rad = M_PI / 2;
+  const auto c = PosCertainty(b, cp);
+  EXPECT_LE(c.certainty, 1.0);
+  EXPECT_NEAR(c.certainty, 1.0, 1e-6);
+}
+
 TEST(Certainty, PosCertaintyIsTheMassAroundTheMaximumAndModesAreSeparated) {
   const MapModel map = Corridor();
   const SensorModel sensor(map, 4, OneBeam());
