@@ -10,10 +10,9 @@
 
 #include "cmd_vel_arbiter/ros/conversions.h"
 #include "fuzz_values.h"
+#include "speed_bounds_check.h"
 
 namespace {
-
-void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "laser_scan_fuzz", what); }
 
 float AnyFloat(FuzzedDataProvider& in) { return spott_fuzz::AnyNumber<float>(in, -4.0f, 30.0f); }
 
@@ -38,13 +37,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   p.footprint_radius_m = in.ConsumeBool() ? 0.0 : in.ConsumeFloatingPointInRange<double>(0, 10);
   std::string error;
   const auto b = cmd_vel_arbiter::ros_conversions::ScanBounds(scan, mount, radius, p, &error);
-  if (!b) {
-    Check(!error.empty(), "refused without a reason");
-    return 0;
-  }
-  Check(!std::isnan(b->forward_mps) && b->forward_mps >= 0.0, "forward bound NaN or negative");
-  Check(!std::isnan(b->backward_mps) && b->backward_mps >= 0.0, "backward bound NaN or negative");
-  Check(!std::isnan(b->forward_gap_m) && b->forward_gap_m >= 0.0, "forward gap NaN or negative");
-  Check(!std::isnan(b->backward_gap_m) && b->backward_gap_m >= 0.0, "backward gap NaN or negative");
+  spott_fuzz::CheckSpeedBounds(b, error, "laser_scan_fuzz");
   return 0;
 }

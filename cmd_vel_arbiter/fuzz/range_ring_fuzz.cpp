@@ -13,10 +13,9 @@
 
 #include "cmd_vel_arbiter/ros/conversions.h"
 #include "fuzz_values.h"
+#include "speed_bounds_check.h"
 
 namespace {
-
-void Check(bool ok, const char* what) { spott_fuzz::Check(ok, "range_ring_fuzz", what); }
 
 float AnyFloat(FuzzedDataProvider& in) { return spott_fuzz::AnyNumber<float>(in, -1.0f, 6.0f); }
 
@@ -43,13 +42,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   p.min_range_at_face = in.ConsumeBool();
   std::string error;
   const auto b = cmd_vel_arbiter::ros_conversions::RingBounds(ring, p, &error);
-  if (!b) {
-    Check(!error.empty(), "refused without a reason");
-    return 0;
-  }
-  Check(!std::isnan(b->forward_mps) && b->forward_mps >= 0.0, "forward bound NaN or negative");
-  Check(!std::isnan(b->backward_mps) && b->backward_mps >= 0.0, "backward bound NaN or negative");
-  Check(!std::isnan(b->forward_gap_m) && b->forward_gap_m >= 0.0, "forward gap NaN or negative");
-  Check(!std::isnan(b->backward_gap_m) && b->backward_gap_m >= 0.0, "backward gap NaN or negative");
+  spott_fuzz::CheckSpeedBounds(b, error, "range_ring_fuzz");
   return 0;
 }
