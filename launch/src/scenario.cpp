@@ -170,10 +170,11 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
     return result;
   }
   const std::string what = "scenario";
-  if (!in.ExpectMap(root, what,
-                    {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
-                     "localization", "a_priori_map", "tasks", "goals", "missions", "doors_to_close",
-                     "leg_timeout_s", "goal_tolerance_m", "time_limit_s", "faults"})) {
+  if (!in.ExpectMap(
+          root, what,
+          {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
+           "localization", "a_priori_map", "global_localization", "tasks", "goals", "missions",
+           "doors_to_close", "leg_timeout_s", "goal_tolerance_m", "time_limit_s", "faults"})) {
     result.errors = in.errors();
     return result;
   }
@@ -208,6 +209,11 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
     in.Error(root["localization"],
              "localization: expected markov, truth or odometry, got '" + s.localization + "'");
   s.a_priori_map = in.Bool(root, "a_priori_map", what, false).value_or(true);
+  s.global_localization = in.Bool(root, "global_localization", what, false).value_or(false);
+  if (s.global_localization && s.localization != "markov")
+    in.Error(root["global_localization"],
+             "global_localization: only markov localization starts from a uniform belief, not " +
+                 s.localization);
   s.tasks = Strings(in, root, "tasks");
   s.goals = Strings(in, root, "goals");
   s.doors_to_close = Strings(in, root, "doors_to_close");
@@ -300,6 +306,7 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
   args.push_back("real_time_factor:=" + number(s.real_time_factor));
   args.push_back("localization:=" + s.localization);
   if (!s.a_priori_map) args.push_back("a_priori_map:=false");
+  if (s.global_localization) args.push_back("global_localization:=true");
   args.push_back("controller:=" + s.Controller());
   args.push_back("executive:=" + s.Executive());
   return args;

@@ -110,6 +110,7 @@ TEST(Scenario, NumbersOutOfTheirRangesAreNamed) {
            {"goal_tolerance_m: .nan", "goal_tolerance_m"},
            {"localization: amcl", "localization"},
            {"a_priori_map: partly", "a_priori_map"},
+           {"global_localization: maybe", "global_localization"},
            {"start_pose: [1, 2]", "start_pose"}}) {
     const auto r = ParseScenario(head + line + "\n", "s.yaml");
     ASSERT_FALSE(r.ok()) << line;
@@ -213,6 +214,30 @@ TEST(Scenario, AStackWithoutAPrioriMapRunsOnDeadReckoning) {
   EXPECT_TRUE(with_map.scenario->a_priori_map);
   const auto plain = LaunchArguments(*with_map.scenario);
   EXPECT_EQ(std::find(plain.begin(), plain.end(), "a_priori_map:=false"), plain.end());
+}
+
+// Beetz et al. 2.3: the robot knows the map, not where it is.
+TEST(Scenario, GlobalLocalizationStartsTheMarkovBeliefUniform) {
+  const auto r = ParseScenario(
+      "world: bonn_department\nglobal_localization: true\ngoals: [room_a_target]\n", "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  EXPECT_TRUE(r.scenario->global_localization);
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(), "global_localization:=true"), args.end());
+  const auto plain = ParseScenario("world: bonn_department\ngoals: [room_a_target]\n", "s.yaml");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(plain.scenario->global_localization);
+  const auto plain_args = LaunchArguments(*plain.scenario);
+  EXPECT_EQ(std::find(plain_args.begin(), plain_args.end(), "global_localization:=true"),
+            plain_args.end());
+  // Only the grid localization has a belief to start uniform.
+  const auto truth = ParseScenario(
+      "world: bonn_department\nlocalization: truth\nglobal_localization: true\n"
+      "goals: [room_a_target]\n",
+      "s.yaml");
+  ASSERT_FALSE(truth.ok());
+  EXPECT_NE(Errors(truth).find("s.yaml:3:22: global_localization"), std::string::npos)
+      << Errors(truth);
 }
 
 TEST(Scenario, MissionsAreReadWithWhatTheRunMustShow) {

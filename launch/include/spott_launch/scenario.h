@@ -50,9 +50,12 @@ struct Scenario {
   int seed = 1;                         ///< The simulator's noise seed.
   double real_time_factor = 4.0;        ///< Simulated s per wall s (0.1 .. 20).
   std::string localization = "markov";  ///< markov | truth | odometry (dead reckoning)
-  bool a_priori_map = true;    ///< false: the map database starts empty (SPOTT's Experiment 1).
-  std::vector<Located> tasks;  ///< Task commands for the TR+ controller, or
-  std::vector<Located> goals;  ///< places driven to through Navigate, or
+  bool a_priori_map = true;  ///< false: the map database starts empty (SPOTT's Experiment 1).
+  /// The localization starts from a uniform belief: it has the map, not the robot's place
+  /// (Beetz et al. 2.3, Fig. 2: global localization, then the errand). Markov only.
+  bool global_localization = false;
+  std::vector<Located> tasks;           ///< Task commands for the TR+ controller, or
+  std::vector<Located> goals;           ///< places driven to through Navigate, or
   std::vector<MissionSpec> missions;    ///< missions for rpl_executive.
   std::vector<Located> doors_to_close;  ///< The demo's reachability experiment.
   double leg_timeout_s = 240.0;         ///< Simulated s per task or goal.
