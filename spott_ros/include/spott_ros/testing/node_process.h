@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <deque>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -38,19 +39,25 @@ inline NodeRun RunNode(const std::string& executable, const std::string& args,
 
 /// Messages of a topic as they arrive (spinning the global queue while waiting): WaitFor looks
 /// at every message received since the last match, so a short-lived message is not missed when
-/// another follows it quickly (latched topics re-sent on every change).
+/// another follows it quickly (latched topics re-sent on every change). Safe beside an
+/// AsyncSpinner on the same queue: the callback then runs on a spinner thread while the test
+/// thread waits. Unlocked, and with the queue destroyed before the subscription, that aborted a
+/// test process (SIGABRT, no message) as the next test began in a CI run of bad_input.test.
 template <class Msg>
 class Latest {
  public:
   Latest(ros::NodeHandle& nh, const std::string& topic, int queue = 10)
       : sub_(nh.subscribe(topic, queue, &Latest::On, this)) {}
+  ~Latest() { sub_.shutdown(); }  // waits for a callback in progress
+  Latest(const Latest&) = delete;
+  Latest& operator=(const Latest&) = delete;
+
   bool WaitFor(const std::function<bool(const Msg&)>& ok, double seconds = 15.0) {
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
     while (ros::ok()) {
       ros::spinOnce();
-      while (!pending_.empty()) {
-        msg_ = pending_.front();
-        pending_.pop_front();
+      for (std::optional<Msg> next = Next(); next; next = Next()) {
+        msg_ = std::move(next);
         if (ok(*msg_)) return true;
       }
       if (msg_ && ok(*msg_)) return true;
@@ -63,10 +70,21 @@ class Latest {
   const std::optional<Msg>& msg() const { return msg_; }
 
  private:
-  void On(const Msg& m) { pending_.push_back(m); }
-  ros::Subscriber sub_;
+  void On(const Msg& m) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_.push_back(m);
+  }
+  std::optional<Msg> Next() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (pending_.empty()) return std::nullopt;
+    std::optional<Msg> m(std::move(pending_.front()));
+    pending_.pop_front();
+    return m;
+  }
+  std::mutex mutex_;
   std::deque<Msg> pending_;
-  std::optional<Msg> msg_;
+  std::optional<Msg> msg_;  ///< Only the waiting thread touches it.
+  ros::Subscriber sub_;     ///< Last: shut down before the members its callback uses.
 };
 
 }  // namespace spott_ros::testing
