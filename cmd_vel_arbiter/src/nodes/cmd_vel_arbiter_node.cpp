@@ -26,6 +26,7 @@
 #include "cmd_vel_arbiter/ros/parameters.h"
 #include "spott_ros/input_refusals.h"
 #include "spott_ros/parameter_reader.h"
+#include "spott_ros/pose_conversions.h"
 #include "spott_ros/robot_geometry.h"
 
 namespace cmd_vel_arbiter {
@@ -158,11 +159,15 @@ class ArbiterNode {
     if (mount == mounts_.end()) {
       try {
         const auto t = tf_.lookupTransform(params_.base_frame, scan.header.frame_id, ros::Time(0));
-        const auto& v = t.transform.translation;
-        const auto& q = t.transform.rotation;
-        const double yaw =
-            std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-        mount = mounts_.emplace(scan.header.frame_id, Transducer{v.x, v.y, yaw}).first;
+        const auto pose = spott_ros::ToPose2D(t.transform);
+        if (!pose) {  // not cached: a later, finite transform is taken
+          refusals_.Refuse(topic, "header.frame_id",
+                           "the pose of '" + scan.header.frame_id + "' in '" + params_.base_frame +
+                               "' is not finite or has no yaw");
+          return;
+        }
+        mount =
+            mounts_.emplace(scan.header.frame_id, Transducer{pose->x, pose->y, pose->theta}).first;
       } catch (const tf2::TransformException& e) {
         ROS_WARN_THROTTLE(10.0, "cmd_vel_arbiter: %s: no pose of '%s' in '%s' yet: %s",
                           topic.c_str(), scan.header.frame_id.c_str(), params_.base_frame.c_str(),
