@@ -6,16 +6,14 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
 #include <move_base_msgs/MoveBaseAction.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
-#include <spott_msgs/BumperRing.h>
 #include <spott_msgs/NavigateAction.h>
 
 #include <atomic>
 #include <cmath>
-#include <mutex>
 
 #include "demo_navigation.h"
+#include "executive_test_support.h"
 #include "spott_ros/pose_conversions.h"
 #include "spott_ros/testing/node_process.h"
 
@@ -24,32 +22,7 @@ namespace {
 using NavigateClient = actionlib::SimpleActionClient<spott_msgs::NavigateAction>;
 using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
 
-// The simulator's ground truth and the bumper, for judging.
-class Truth {
- public:
-  explicit Truth(ros::NodeHandle& nh)
-      : truth_(nh.subscribe("/sim/ground_truth", 10, &Truth::OnTruth, this)),
-        bumper_(nh.subscribe("/bumper", 10, &Truth::OnBumper, this)) {}
-  double DistanceTo(double x, double y) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return std::hypot(x_ - x, y_ - y);
-  }
-  int contacts() const { return contacts_; }
-
- private:
-  void OnTruth(const nav_msgs::Odometry& m) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    x_ = m.pose.pose.position.x;
-    y_ = m.pose.pose.position.y;
-  }
-  void OnBumper(const spott_msgs::BumperRing& r) {
-    for (bool p : r.pressed) contacts_ += p ? 1 : 0;
-  }
-  std::mutex mutex_;
-  double x_ = 0, y_ = 0;
-  std::atomic<int> contacts_{0};
-  ros::Subscriber truth_, bumper_;
-};
+using spott_launch::testing::Truth;
 
 geometry_msgs::PoseStamped Pose(double x, double y, double yaw) {
   return spott_ros::ToPoseStamped(spott_ros::MakePose2D(x, y, yaw), "map", ros::Time::now());
@@ -60,6 +33,13 @@ class Contract : public ::testing::Test {
   static void SetUpTestSuite() {
     spinner_ = new ros::AsyncSpinner(2);
     spinner_->start();
+  }
+  // Stopped before the process exits: a spinner thread still running while roscpp's statics
+  // are destroyed aborted the process (boost::lock_error) after the results were written.
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete spinner_;
+    spinner_ = nullptr;
   }
   static ros::AsyncSpinner* spinner_;
   ros::NodeHandle nh_;

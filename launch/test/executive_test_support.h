@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "spott_ros/pose_conversions.h"
+
 namespace spott_launch::testing {
 
 /// The simulator's ground truth and bumper, for judging (the stack never reads them).
@@ -55,8 +57,7 @@ class Truth {
     if (seen_) travelled_ += std::hypot(x - x_, y - y_);
     x_ = x;
     y_ = y;
-    const auto& q = m.pose.pose.orientation;
-    yaw_ = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+    yaw_ = spott_ros::YawOf(m.pose.pose.orientation).value_or(yaw_);
     seen_ = true;
   }
   void OnBumper(const spott_msgs::BumperRing& r) {

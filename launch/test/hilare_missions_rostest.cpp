@@ -84,6 +84,13 @@ class HilareMissions : public ::testing::Test {
     spinner_ = new ros::AsyncSpinner(2);
     spinner_->start();
   }
+  // Stopped before the process exits: a spinner thread still running while roscpp's statics
+  // are destroyed aborted the process (boost::lock_error) after the results were written.
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete spinner_;
+    spinner_ = nullptr;
+  }
 
   void SetUp() override {
     pnh_.getParam("report_file", report_file_);

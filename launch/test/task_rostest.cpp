@@ -31,6 +31,15 @@ class Task : public ::testing::Test {
     ASSERT_TRUE(client_->waitForServer(ros::Duration(60.0))) << "/task is not offered";
     ASSERT_TRUE(watch_->WaitForLocalization(120.0)) << "no localization_status";
   }
+  // Stopped before the process exits: a spinner thread still running while roscpp's statics
+  // are destroyed aborted the process (boost::lock_error) after the results were written.
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete client_;
+    delete watch_;
+    delete spinner_;
+    delete nh_;
+  }
   static ros::NodeHandle* nh_;
   static ros::AsyncSpinner* spinner_;
   static Watch* watch_;

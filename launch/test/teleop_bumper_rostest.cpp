@@ -38,6 +38,15 @@ class TeleopBumper : public ::testing::Test {
         << "markov_localization did not start at start_pose";
     ros::Duration(2.0).sleep();
   }
+  // Stopped before the process exits: a spinner thread still running while roscpp's statics
+  // are destroyed aborted the process (boost::lock_error) after the results were written.
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete client_;
+    delete watch_;
+    delete spinner_;
+    delete nh_;
+  }
   static ros::NodeHandle* nh_;
   static ros::AsyncSpinner* spinner_;
   static Watch* watch_;
