@@ -206,6 +206,54 @@ TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheck
   EXPECT_EQ(io_.results[0].outcome, "reached");
 }
 
+// bonn_kidnap: Navigate stood at its goal on a lost estimate for lost_timeout_s and FAILED "not
+// localized". That is no failure of the way there: the goal goes again once the localization is
+// certain, as often as it happens, and the task fails only if it stays lost localized_wait_s.
+TEST_F(Controller, NavigateNotLocalizedWaitsForTheLocalizationAndIsNotCountedAsAFailure) {
+  params_.tasks.navigate_retries = 0;  // any Navigate failure ends the task
+  Create();
+  const NavigateGoal g = GoInLab();
+  const std::string reason =
+      "not localized: arrived on the estimate, but the localization has been lost for 10.0 s";
+  double t = 30.0;
+  for (int k = 0; k < 3; ++k) {
+    At(g.x, g.y, 0.0, t);
+    c_->SetLocalization(false, t);
+    c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kFailed, reason, t + 0.1);
+    c_->Tick(t + 0.2);
+    ASSERT_TRUE(io_.results.empty()) << "time " << k << ": " << io_.results[0].message;
+    EXPECT_EQ(io_.feedback.back().state, "waiting for the localization");
+    EXPECT_EQ(io_.navigates.size(), k + 1u) << "nothing is sent while the pose is unknown";
+    // Certain again, 6 m away in the hallway: the goal again.
+    At(g.x - 6.0, 8.25, 0.0, t + 5.0);
+    c_->Tick(t + 5.0);
+    ASSERT_EQ(io_.navigates.size(), k + 2u);
+    EXPECT_EQ(io_.navigates.back().x, g.x);
+    EXPECT_EQ(io_.navigates.back().y, g.y);
+    EXPECT_EQ(io_.feedback.back().state, "driving");
+    t += 10.0;
+  }
+  // Lost for good: a failure after localized_wait_s (30 s).
+  At(g.x, g.y, 0.0, t);
+  c_->SetLocalization(false, t);
+  c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kFailed, reason, t);
+  c_->Tick(t + 29.0);
+  EXPECT_TRUE(io_.results.empty());
+  c_->Tick(t + 31.0);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "failed");
+  EXPECT_NE(io_.results[0].message.find("stayed uncertain for 30 s"), std::string::npos)
+      << io_.results[0].message;
+  // Any other failure counts at once.
+  io_ = FakeIo();
+  Create();
+  const NavigateGoal h = GoInLab();
+  c_->NavigateDone(h.seq, NavigateOutcome::kFailed, "no pose in time", 31.0);
+  c_->Tick(31.1);
+  ASSERT_EQ(io_.results.size(), 1u);
+  EXPECT_EQ(io_.results[0].outcome, "failed");
+}
+
 TEST_F(Controller, ArrivalRightAfterAnEstimateJumpIsNotReachedBeforeItSettles) {
   const NavigateGoal g = GoInLab();
   At(g.x - 4.0, g.y, 0.0, 20.0);

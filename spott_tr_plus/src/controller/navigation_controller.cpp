@@ -956,6 +956,13 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
       dirty_ = true;
     }
     Complete(owner, true);
+  } else if (goal_of_task && NavigateNotLocalized(outcome, reason)) {
+    // Navigate arrived on an estimate the localization had lost and gave up waiting: the same
+    // as an arrival on an untrusted estimate, not a failure of the way there.
+    unconfirmed_ = std::make_pair(owner, now);
+    task_->state = "waiting for the localization";
+    task_->message = "Navigate " + reason + "; sent again once the localization is certain";
+    dirty_ = true;
   } else if (goal_of_task) {
     const std::string what = outcome == NavigateOutcome::kUnreachable ? "unreachable"
                              : outcome == NavigateOutcome::kPreempted ? "preempted"
@@ -965,6 +972,10 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
     Complete(owner, outcome == NavigateOutcome::kSucceeded);
   }
   Settle(now);
+}
+
+bool NavigateNotLocalized(NavigateOutcome outcome, const std::string& reason) {
+  return outcome == NavigateOutcome::kFailed && reason.rfind("not localized", 0) == 0;
 }
 
 void NavigationController::NavigateFailed(Ticket owner, const std::string& message, double now) {

@@ -57,6 +57,11 @@ struct NavigateGoal {
 /// How a Navigate goal ended (spott_msgs/NavigateResult outcome).
 enum class NavigateOutcome { kSucceeded = 0, kUnreachable = 1, kPreempted = 2, kFailed = 3 };
 
+/// Navigate's FAILED "not localized: ..." (the harmonic planner arrived on the estimate while the
+/// localization said lost, and it stayed lost for navigate/lost_timeout_s): where the robot is,
+/// is not known, so the way there did not fail.
+bool NavigateNotLocalized(NavigateOutcome outcome, const std::string& reason);
+
 /// A change of the map database for every other copy (spott_msgs/MapUpdate).
 struct MapChange {
   std::vector<spott_map::MapFeature> added;
@@ -138,7 +143,7 @@ struct TaskParameters {
   double arrival_margin_m = 0.1;
   /// A GO is reached only on a trusted estimate (markov_localization certain, fresh, settled
   /// after a jump): Navigate's success while it is not is checked again once it is, and counts
-  /// as a Navigate failure after this long (s), > 0. In cim_office's lab a relocalization once
+  /// as a Navigate failure after this long (s), > 0; so is Navigate's FAILED "not localized". In cim_office's lab a relocalization once
   /// put the estimate 12 m away and the task was reported reached there.
   double localized_wait_s = 30.0;
   double stop_speed_mps = 0.02;    ///< Stopped: slower than this (m/s, and 5x in rad/s), > 0.
