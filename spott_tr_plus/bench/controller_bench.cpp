@@ -48,6 +48,8 @@ struct BenchIo : ControllerIo {
   void SendMapUpdate(const MapChange&) override {}
   void SetPtuPattern(const std::string&) override {}
   void PublishTaskFeedback(const TaskFeedback&) override {}
+  bool StartActiveLocalize(double) override { return false; }
+  void CancelActiveLocalize() override {}
   void TaskFinished(const TaskResult&) override {}
 };
 

@@ -33,6 +33,15 @@ struct FakeIo : ControllerIo {
   void SetPtuPattern(const std::string& p) override { ptu = p; }
   void PublishTaskFeedback(const TaskFeedback& f) override { feedback.push_back(f); }
   void TaskFinished(const TaskResult& r) override { results.push_back(r); }
+  bool StartActiveLocalize(double timeout_s) override {
+    if (!active_available) return false;
+    active_timeouts.push_back(timeout_s);
+    return true;
+  }
+  void CancelActiveLocalize() override { ++active_cancels; }
+  bool active_available = true;  ///< false: AMCL, dead reckoning
+  std::vector<double> active_timeouts;
+  int active_cancels = 0;
   std::optional<Velocity> LastDrive(const std::string& source) const {
     for (auto it = drives.rbegin(); it != drives.rend(); ++it) {
       if (it->first == source) return it->second;
@@ -212,6 +221,7 @@ TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheck
 TEST_F(Controller, NavigateNotLocalizedWaitsForTheLocalizationAndIsNotCountedAsAFailure) {
   params_.tasks.navigate_retries = 0;  // any Navigate failure ends the task
   Create();
+  io_.active_available = false;  // no active localization (AMCL): the controller waits
   const NavigateGoal g = GoInLab();
   const std::string reason =
       "not localized: arrived on the estimate, but the localization has been lost for 10.0 s";
@@ -252,6 +262,58 @@ TEST_F(Controller, NavigateNotLocalizedWaitsForTheLocalizationAndIsNotCountedAsA
   c_->Tick(31.1);
   ASSERT_EQ(io_.results.size(), 1u);
   EXPECT_EQ(io_.results[0].outcome, "failed");
+}
+
+// bonn_kidnap under the controller: standing, the B21 stayed lost after the unseen turn (2 of 2
+// runs). "not localized" starts the localization's active localization (at most twice per
+// task); no timeout runs while it drives, and the goal goes again once the estimate is trusted.
+TEST_F(Controller, NavigateNotLocalizedStartsActiveLocalizationAtMostTwicePerTask) {
+  const NavigateGoal g = GoInLab();
+  const std::string reason = "not localized: arrived on the estimate, but lost for 10.0 s";
+  double t = 30.0;
+  for (int k = 0; k < 2; ++k) {
+    At(g.x, g.y, 0.0, t);
+    c_->SetLocalization(false, t);
+    c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kFailed, reason, t);
+    c_->Tick(t + 0.1);
+    ASSERT_EQ(io_.active_timeouts.size(), k + 1u);
+    EXPECT_EQ(io_.active_timeouts.back(), params_.tasks.active_localize_timeout_s);
+    EXPECT_EQ(io_.feedback.back().state, "localizing actively");
+    // It drives for longer than localized_wait_s: no failure meanwhile, no goal sent.
+    c_->Tick(t + 100.0);
+    EXPECT_TRUE(io_.results.empty());
+    EXPECT_EQ(io_.navigates.size(), k + 1u);
+    c_->ActiveLocalizeDone(true, "", t + 100.0);
+    At(g.x - 6.0, 8.25, 0.0, t + 101.0);
+    c_->Tick(t + 101.0);
+    ASSERT_EQ(io_.navigates.size(), k + 2u) << "the goal again, from the relocalized estimate";
+    EXPECT_EQ(io_.navigates.back().x, g.x);
+    t += 200.0;
+  }
+  // A third time in the task: no more active localization, the controller waits.
+  At(g.x, g.y, 0.0, t);
+  c_->SetLocalization(false, t);
+  c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kFailed, reason, t);
+  c_->Tick(t + 0.1);
+  EXPECT_EQ(io_.active_timeouts.size(), 2u);
+  EXPECT_EQ(io_.feedback.back().state, "waiting for the localization");
+  EXPECT_EQ(io_.active_cancels, 0);
+}
+
+TEST_F(Controller, ANewTaskCancelsTheActiveLocalizationOfTheOldOne) {
+  const NavigateGoal g = GoInLab();
+  At(g.x, g.y, 0.0, 30.0);
+  c_->SetLocalization(false, 30.0);
+  c_->NavigateDone(g.seq, NavigateOutcome::kFailed, "not localized: lost", 30.0);
+  c_->Tick(30.1);
+  ASSERT_EQ(io_.active_timeouts.size(), 1u);
+  ASSERT_TRUE(c_->StartTask(2, "go in room(lab)", 31.0).accepted);
+  c_->Tick(31.1);
+  EXPECT_EQ(io_.active_cancels, 1);
+  ASSERT_FALSE(io_.results.empty());
+  EXPECT_EQ(io_.results[0].outcome, "preempted");
+  c_->ActiveLocalizeDone(false, "cancelled", 31.2);  // its late end changes nothing
+  EXPECT_EQ(io_.active_cancels, 1);
 }
 
 TEST_F(Controller, ArrivalRightAfterAnEstimateJumpIsNotReachedBeforeItSettles) {

@@ -86,6 +86,10 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
     v.push_back(Violation("tasks/arrival_margin_m", "in [0, 2]", t.arrival_margin_m));
   if (!(t.localized_wait_s > 0))
     v.push_back(Violation("tasks/localized_wait_s", "> 0", t.localized_wait_s));
+  if (t.active_localizations < 0)
+    v.push_back(Violation("tasks/active_localizations", ">= 0", t.active_localizations));
+  if (!(t.active_localize_timeout_s > 0))
+    v.push_back(Violation("tasks/active_localize_timeout_s", "> 0", t.active_localize_timeout_s));
   if (!(t.stop_speed_mps > 0))
     v.push_back(Violation("tasks/stop_speed_mps", "> 0", t.stop_speed_mps));
   if (!(t.stop_timeout_s > 0))
@@ -116,6 +120,7 @@ struct NavigationController::Task {
   Pose2 start_pose;
   std::string outcome, message;
   int failures = 0;
+  int active_localizations = 0;  ///< Started for this task.
   bool success = false;
   bool ended = false;            ///< Finished: reported when the scan settles.
   bool started_outside = false;  ///< The robot was not in the goal region at the start.
@@ -452,7 +457,10 @@ void NavigationController::Bind(Registry& r) {
           nav_owner_ = 0;
         }
         delayed_.erase(t);
-        if (unconfirmed_ && unconfirmed_->first == t) unconfirmed_.reset();
+        if (unconfirmed_ && unconfirmed_->first == t) {
+          unconfirmed_.reset();
+          StopActiveLocalize();
+        }
       });
   // Figs. 11-12 with no goal region: tele-operation (a direction), or heading toward the task's
   // direction while searching.
@@ -962,6 +970,13 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
     unconfirmed_ = std::make_pair(owner, now);
     task_->state = "waiting for the localization";
     task_->message = "Navigate " + reason + "; sent again once the localization is certain";
+    // Navigate already stood for navigate/lost_timeout_s: standing does not relocalize.
+    if (task_->active_localizations < params_.tasks.active_localizations &&
+        io_->StartActiveLocalize(params_.tasks.active_localize_timeout_s)) {
+      ++task_->active_localizations;
+      active_localizing_ = true;
+      task_->state = "localizing actively";
+    }
     dirty_ = true;
   } else if (goal_of_task) {
     const std::string what = outcome == NavigateOutcome::kUnreachable ? "unreachable"
@@ -1008,10 +1023,14 @@ void NavigationController::ConfirmArrival(double now) {
                        task_->in && task_->in->goal;
   if (!running) {
     unconfirmed_.reset();
+    StopActiveLocalize();
     Complete(ticket, task_ && task_->phase == Task::Phase::kDone);
+  } else if (active_localizing_) {
+    return;  // its end restarts the wait
   } else if (PoseTrusted(now)) {
     unconfirmed_.reset();
     task_->state = "driving";
+    task_->message.clear();  // resolved: the result says what comes of the goal sent again
     SendGoalFor(ticket, *task_->in->goal, *task_->in, task_->command.speed, now);
   } else if (now - since >= params_.tasks.localized_wait_s) {
     unconfirmed_.reset();
@@ -1020,6 +1039,24 @@ void NavigationController::ConfirmArrival(double now) {
         << " s after Navigate's arrival";
     NavigateFailed(ticket, why.str(), now);
   }
+}
+
+void NavigationController::ActiveLocalizeDone(bool success, const std::string& reason, double now) {
+  if (!active_localizing_) return;
+  active_localizing_ = false;
+  if (!unconfirmed_ || !task_) return;
+  unconfirmed_->second = now;  // localized_wait_s from here: the update after it may settle
+  task_->state = "waiting for the localization";
+  task_->message = std::string("active localization ") + (success ? "succeeded" : "gave up") +
+                   (reason.empty() ? "" : ": " + reason) +
+                   "; the goal is sent again once the localization is certain";
+  dirty_ = true;
+}
+
+void NavigationController::StopActiveLocalize() {
+  if (!active_localizing_) return;
+  active_localizing_ = false;
+  io_->CancelActiveLocalize();
 }
 
 // --- Tasks -----------------------------------------------------------------------------------

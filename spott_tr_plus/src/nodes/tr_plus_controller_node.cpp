@@ -21,6 +21,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <spott_msgs/ActiveLocalizeAction.h>
 #include <spott_msgs/BumperRing.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
@@ -71,6 +72,7 @@ namespace tconv = spott_tr_plus::ros_conversions;
 
 using TaskServer = actionlib::ActionServer<spott_msgs::TaskAction>;
 using NavigateClient = actionlib::SimpleActionClient<spott_msgs::NavigateAction>;
+using ActiveLocalizeClient = actionlib::SimpleActionClient<spott_msgs::ActiveLocalizeAction>;
 
 class ControllerNode : public ControllerIo {
  public:
@@ -80,6 +82,8 @@ class ControllerNode : public ControllerIo {
         tf_listener_(tf_),
         task_server_(nh, "task", false),
         navigate_(nh, params_.navigate_action, false) {
+    if (!params_.active_localize_action.empty())
+      active_ = std::make_unique<ActiveLocalizeClient>(nh, params_.active_localize_action, false);
     updates_pub_ = nh.advertise<spott_msgs::MapUpdate>("map_updates", 20);
     for (const char* source : {"reflex", "teleop", "executive"}) {
       cmd_pubs_[source] = nh.advertise<geometry_msgs::Twist>(std::string("cmd_vel/") + source, 5);
@@ -195,6 +199,29 @@ class ControllerNode : public ControllerIo {
         [this, seq](const spott_msgs::NavigateFeedbackConstPtr& fb) {
           core_->NavigateFeedback(seq, fb->distance_remaining, Now());
         });
+  }
+
+  bool StartActiveLocalize(double timeout_s) override {
+    if (!active_ || !active_->isServerConnected()) {
+      ROS_WARN("tr_plus_controller: no active localization (%s)",
+               active_ ? "not connected" : "active_localize_action is \"\"");
+      return false;
+    }
+    spott_msgs::ActiveLocalizeGoal goal;
+    goal.timeout = timeout_s;
+    ROS_INFO(
+        "tr_plus_controller: Navigate says not localized: localizing actively (at most %.0f s)",
+        timeout_s);
+    active_->sendGoal(goal, [this](const actionlib::SimpleClientGoalState& state,
+                                   const spott_msgs::ActiveLocalizeResultConstPtr& result) {
+      pending_active_.push_back(
+          {result && result->success, result ? result->reason : "no result: " + state.toString()});
+    });
+    return true;
+  }
+
+  void CancelActiveLocalize() override {
+    if (active_ && !active_->getState().isDone()) active_->cancelGoal();
   }
 
   void CancelNavigate() override {
@@ -492,6 +519,9 @@ class ControllerNode : public ControllerIo {
     if (params_.assume_localized) core_->SetLocalization(true, now);
     for (const auto& d : pending_done_) core_->NavigateDone(d.seq, d.outcome, d.reason, now);
     pending_done_.clear();
+    for (const auto& [success, reason] : pending_active_)
+      core_->ActiveLocalizeDone(success, reason, now);
+    pending_active_.clear();
     core_->Tick(now);
     PointHeads(now);
     AfterEvent();
@@ -593,6 +623,8 @@ class ControllerNode : public ControllerIo {
   std::map<std::int64_t, TaskServer::GoalHandle> goals_;
   std::int64_t task_count_ = 0;
   std::vector<Done> pending_done_;
+  std::unique_ptr<ActiveLocalizeClient> active_;  ///< None when active_localize_action is "".
+  std::vector<std::pair<bool, std::string>> pending_active_;  ///< Its ends (success, reason).
   bool have_pose_ = false;
   bool have_graph_ = false, have_features_ = false;  ///< Once the map came: emptiness is refused.
   std::unique_ptr<spott_ros::InputRefusals> refusals_;

@@ -41,6 +41,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("base_frame", p.base_frame);
   r.Get("robot_description", p.robot_description);
   r.Get("navigate_action", p.navigate_action);
+  r.Get("active_localize_action", p.active_localize_action);
   r.Get("arbiter", p.arbiter);
   r.Get("tick_rate_hz", p.tick_rate_hz, "Hz");
   r.Get("assume_localized", p.assume_localized);
@@ -119,6 +120,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("tasks/clear_radius_m", k.clear_radius_m, "m");
   r.Get("tasks/arrival_margin_m", k.arrival_margin_m, "m");
   r.Get("tasks/localized_wait_s", k.localized_wait_s, "s");
+  r.Get("tasks/active_localizations", k.active_localizations);
+  r.Get("tasks/active_localize_timeout_s", k.active_localize_timeout_s, "s");
   r.Get("tasks/stop_speed_mps", k.stop_speed_mps, "m/s");
   r.Get("tasks/stop_timeout_s", k.stop_timeout_s, "s");
   r.Get("tasks/pose_timeout_s", k.pose_timeout_s, "s");

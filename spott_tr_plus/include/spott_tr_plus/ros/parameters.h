@@ -36,6 +36,8 @@ struct NodeParameters {
   std::string base_frame = "base_link";
   std::string robot_description = "robot_description";
   std::string navigate_action = "harmonic_planner/navigate";
+  /// markov_localization's ActiveLocalize, started on Navigate's "not localized"; "" = none.
+  std::string active_localize_action = "active_localize";
   std::string arbiter = "cmd_vel_arbiter";
   double tick_rate_hz = 20.0;  ///< Motions, waits, feedback (Hz), [0.01, 200].
   /// No localization status (localization:=truth): the pose is taken as certain.
