@@ -50,6 +50,10 @@ std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p) 
     v.push_back("navigate/settle_max_offset_m must be in (0, 100]");
   if (!(p.lost_timeout_s >= 0.0 && p.lost_timeout_s <= 600.0))
     v.push_back("navigate/lost_timeout_s must be in [0, 600]");
+  if (!(p.progress_radius_m > 0.0 && p.progress_radius_m <= 10.0))
+    v.push_back("navigate/progress_radius_m must be in (0, 10]");
+  if (!(p.progress_timeout_s >= 0.0 && p.progress_timeout_s <= 600.0))
+    v.push_back("navigate/progress_timeout_s must be in [0, 600]");
   return v;
 }
 
@@ -230,6 +234,23 @@ void NavigateSession::Finish(NavigateOutcome outcome, const std::string& reason)
 void NavigateSession::SetPhase(NavigatePhase phase) {
   if (phase == NavigatePhase::kRecovering && phase_ != NavigatePhase::kRecovering) ++recoveries_;
   phase_ = phase;
+}
+
+void NavigateSession::Descending(const spott_map::Pose2& odom, double now_s) {
+  if (finished() || params_.progress_timeout_s <= 0.0) return;
+  if (!progress_ref_ || std::hypot(odom.x - progress_ref_->x, odom.y - progress_ref_->y) >=
+                            params_.progress_radius_m) {
+    progress_ref_ = odom;
+    progress_since_s_ = now_s;
+    return;
+  }
+  if (now_s - progress_since_s_ < params_.progress_timeout_s) return;
+  std::ostringstream reason;
+  reason << "no progress: the robot moved less than " << params_.progress_radius_m << " m in "
+         << params_.progress_timeout_s
+         << " s of descent (navigate/progress_timeout_s): held by an obstacle, or driven "
+            "toward one on a wrong estimate";
+  Finish(NavigateOutcome::kFailed, reason.str());
 }
 
 }  // namespace spott_harmonic_planner

@@ -37,6 +37,49 @@ TEST(NavigateSession, PlansUntilThePoseAndTheGlobalPlannersAnswerAreThereInAnyOr
   EXPECT_EQ(s.path_summary(), "hall_e -> d_lab_e -> lab");
 }
 
+// bonn_kidnap_tasks seed 5: on a wrong but certain estimate the planner drove toward a wall, the
+// arbiter's clearance cap held the robot, and the goal went on for 240 s with 0 m driven.
+TEST(NavigateSession, NoProgressWhileDescendingFailsTheGoalAndStandingDoesNotCount) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.05);
+  ASSERT_EQ(s.phase(), NavigatePhase::kDriving);
+  // Slow but steady: 0.3 m every 20 s is progress.
+  double t = 0.1;
+  for (; t < 100.0; t += 0.1) {
+    s.Descending(spott_map::Pose2{0.3 * std::floor(t / 20.0), 0.0, 0.0}, t);
+    ASSERT_FALSE(s.finished()) << "at " << t << " s: " << s.reason();
+  }
+  // Standing to settle or waiting for a way: 60 s that are not counted.
+  for (; t < 160.0; t += 0.1) s.PauseProgress();
+  // Held in place while descending: FAILED after progress_timeout_s.
+  const spott_map::Pose2 held{1.5, 0.0, 0.0};
+  const double start = t;
+  for (; !s.finished() && t < start + 60.0; t += 0.1) {
+    s.Descending(spott_map::Pose2{held.x + 0.01 * std::sin(t), 0.0, 0.3 * std::sin(t)}, t);
+  }
+  ASSERT_TRUE(s.finished());
+  EXPECT_NEAR(t - start, 30.0, 0.2);
+  EXPECT_EQ(s.outcome(), NavigateOutcome::kFailed);
+  EXPECT_EQ(s.reason().rfind("no progress: the robot moved less than 0.25 m in 30 s", 0), 0u)
+      << s.reason();
+}
+
+TEST(NavigateSession, NoProgressCheckWhenItsTimeoutIsZero) {
+  NavigateSessionParameters p;
+  p.use_global_planner = false;
+  p.progress_timeout_s = 0.0;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.05);
+  for (double t = 0.1; t < 200.0; t += 0.5) s.Descending(spott_map::Pose2{}, t);
+  EXPECT_FALSE(s.finished());
+  p.progress_radius_m = 0.0;
+  EXPECT_FALSE(ValidateParameters(p).empty());
+}
+
 TEST(NavigateSession, WaitsForTheProjectionAfterThePlan) {
   NavigateSession s({}, 0.0);
   s.PoseAvailable();

@@ -83,6 +83,13 @@ struct NavigateSessionParameters {
   /// not: bonn_kidnap's position_1 was "reached" 3.8 m off while the status said lost 238 times.
   /// [0, 600] s; 0: fail at once.
   double lost_timeout_s = 10.0;
+  /// Progress while descending the field (Nav2's progress checker): the odometry must move
+  /// progress_radius_m within progress_timeout_s, else the goal FAILS "no progress". Without it a
+  /// robot driven toward a wall on a wrong but certain estimate, held by the wheels arbiter's
+  /// clearance cap, pushed for 240 s with nothing said (bonn_kidnap_tasks seed 5). Standing to
+  /// settle, waiting for a way and backing off do not count. (0, 10] m; [0, 600] s, 0: never.
+  double progress_radius_m = 0.25;
+  double progress_timeout_s = 30.0;
 };
 
 std::vector<std::string> ValidateParameters(const NavigateSessionParameters& p);
@@ -145,6 +152,13 @@ class NavigateSession {
   /// was lost meanwhile (then the update is the relocalization the robot waited for).
   Settle Settled(double distance_m, double tolerance_m, double now_s);
   bool settling() const { return settle_since_s_.has_value(); }
+  /// Descending the field at odometry pose `odom` (odom frame: a relocalization is no
+  /// progress): FAILS "no progress" when it stayed within progress_radius_m for
+  /// progress_timeout_s of descent.
+  void Descending(const spott_map::Pose2& odom, double now_s);
+  /// Not descending this cycle (settling, waiting for a way, backing off): the progress clock
+  /// starts again at the next descent.
+  void PauseProgress() { progress_ref_.reset(); }
   void Succeed();
   void Preempt();
 
@@ -189,6 +203,8 @@ class NavigateSession {
   bool lost_ = false;
   std::optional<double> lost_since_s_;  ///< Standing arrived while the localization is lost.
   bool relocalized_ = false;            ///< It was lost and is certain again: judge afresh.
+  std::optional<spott_map::Pose2> progress_ref_;  ///< Odometry where the progress clock started.
+  double progress_since_s_ = 0.0;
 };
 
 }  // namespace spott_harmonic_planner

@@ -434,10 +434,12 @@ class HarmonicPlannerNode {
   // One cycle of DRIVING / RECOVERING; returns the distance remaining (m).
   double DriveOneCycle(const ros::Time& now) {
     if (const auto v = session_->BackOff(odom_)) {
+      session_->PauseProgress();
       Drive(*v, 0.0);
       return planner_.DistanceToGoal();
     }
     if (session_->waiting_for_way()) {  // stopped until the global planner finds a way again
+      session_->PauseProgress();
       if (!waiting_said_) {
         waiting_said_ = true;
         ROS_WARN("harmonic_planner: %s (at most %.1f s)", session_->note().c_str(),
@@ -450,6 +452,7 @@ class HarmonicPlannerNode {
     const double to_target = (planner_.pose().Position() - request_.target).norm();
     if (turning_ || session_->Arrived(to_target, request_.tolerance_m, now.toSec())) {
       turning_ = true;  // arrived: only the final heading is left
+      session_->PauseProgress();
       bool done = true;
       SteeringCommand turn;
       if (request_.yaw) {
@@ -489,6 +492,7 @@ class HarmonicPlannerNode {
     steering_pub_.publish(conv::ToSteering(cmd, request_.mode, remaining, params_.frame_id, now));
     session_->Steered(cmd.valid, cmd.escaping, planner_.status().border_widened, cmd.reason,
                       planner_.status().exploring);
+    session_->Descending(odom_, now.toSec());
     if (session_->finished()) {
       Finish();
       return remaining;

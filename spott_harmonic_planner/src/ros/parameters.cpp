@@ -63,6 +63,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("navigate/settle_max_offset_m", n.settle_max_offset_m, "m");
   r.Get("navigate/localization_topic", p.localization_topic);
   r.Get("navigate/lost_timeout_s", n.lost_timeout_s, "s");
+  r.Get("navigate/progress_radius_m", n.progress_radius_m, "m");
+  r.Get("navigate/progress_timeout_s", n.progress_timeout_s, "s");
   r.Get("navigate/localization_status_topic", p.localization_status_topic);
   r.Get("navigate/contact_memory_s", p.contact_memory_s, "s");
   r.Get("navigate/contact_size_m", p.contact_size_m, "m");
