@@ -34,12 +34,14 @@
 #include <future>
 #include <limits>
 #include <memory>
+#include <algorithm>
 #include <optional>
 
 #include "../ros/active_localize_server.h"
 #include "markov_localization/certainty.h"
 #include "markov_localization/localizer.h"
 #include "markov_localization/odometry_buffer.h"
+#include "markov_localization/resume_spread.h"
 #include "markov_localization/ros/conversions.h"
 #include "markov_localization/ros/parameters.h"
 #include "spott_map/ros/map_update.h"
@@ -397,14 +399,32 @@ class LocalizationNode {
     }
   }
 
+  // The covariance of the mode the estimate follows; none when no mode is near it.
+  std::optional<Eigen::Matrix3d> FollowedModeCovariance(const ml::Pose2& estimate) const {
+    for (const auto& m : localizer_->summary().modes)
+      if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) < params_.sticky.match_radius_m)
+        return m.covariance;
+    return std::nullopt;
+  }
+
   // AMCL's save_pose_rate: map -> odom on the parameter server while not lost, so that a node
   // respawned after a crash resumes from it (parameters.h, last_map_to_odom).
   void SavePose(const ros::TimerEvent&) {
     if (!localizer_ || !localizer_->has_estimate() || localizer_->lost()) return;
     const ml::Pose2 t = localizer_->map_to_odom();
+    ros::NodeHandle pnh("~");
     char text[96];
     std::snprintf(text, sizeof text, "%.4f %.4f %.5f", t.x, t.y, t.yaw);
-    ros::NodeHandle("~").setParam("last_map_to_odom", std::string(text));
+    pnh.setParam("last_map_to_odom", std::string(text));
+    if (!odom_) return;
+    std::snprintf(text, sizeof text, "%.4f %.4f %.5f", odom_->x, odom_->y, odom_->yaw);
+    pnh.setParam("last_odom", std::string(text));
+    // A mode of one cell has no spread of its own: ResumeSpread floors it at the grid's.
+    const auto cov = FollowedModeCovariance(localizer_->Estimate(*odom_));
+    const auto spread = cov ? ml::SpreadOf(*cov) : std::nullopt;
+    pnh.setParam("last_sigma_xy_m", spread ? std::max(spread->xy_m, 1e-3) : 0.0);
+    pnh.setParam("last_sigma_theta_deg",
+                 spread ? std::max(spread->theta_rad, 1e-3) * 180.0 / M_PI : 0.0);
   }
 
   void OnRing(const spott_msgs::RangeRing& ring) {
@@ -539,9 +559,18 @@ class LocalizationNode {
   bool ResumeAt(const ros::Time& stamp, const ml::Pose2& odom) {
     if (stamp < *resume_after_) return false;
     const ml::Pose2 at = ml::Compose(*params_.last_map_to_odom, odom);
-    localizer_->SetGaussian(at, params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad, odom);
-    ROS_WARN("markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom",
-             at.x, at.y, at.yaw * 180.0 / M_PI);
+    ml::Spread spread{params_.initial_sigma_xy_m, params_.initial_sigma_theta_rad};
+    if (params_.last_odom && params_.last_sigma_xy_m > 0.0) {
+      spread = ml::ResumeSpread(ml::Spread{params_.last_sigma_xy_m, params_.last_sigma_theta_rad},
+                                *params_.last_odom, odom, localizer_->parameters().grid.motion,
+                                localizer_->parameters().gate, map_->resolution(),
+                                localizer_->grid().angular_resolution());
+    }
+    localizer_->SetGaussian(at, spread.xy_m, spread.theta_rad, odom);
+    ROS_WARN(
+        "markov_localization: resumed at (%.2f, %.2f, %.0f deg) from the saved map -> odom, "
+        "spread %.2f m / %.1f deg",
+        at.x, at.y, at.yaw * 180.0 / M_PI, spread.xy_m, spread.theta_rad * 180.0 / M_PI);
     resume_after_.reset();
     resumed_ = true;
     return true;
@@ -588,14 +617,9 @@ class LocalizationNode {
       last_tf_stamp_ = tf_stamp;
     }
     if (step.updated) {
-      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-      for (const auto& m : modes)
-        if (std::hypot(m.mean.x - estimate.x, m.mean.y - estimate.y) <
-            params_.sticky.match_radius_m) {
-          cov = m.covariance;
-          break;
-        }
-      pose_pub_.publish(conv::ToPoseWithCovariance(estimate, cov, params_.map_frame, stamp));
+      pose_pub_.publish(conv::ToPoseWithCovariance(
+          estimate, FollowedModeCovariance(estimate).value_or(Eigen::Matrix3d::Zero()),
+          params_.map_frame, stamp));
       modes_pub_.publish(conv::ToPoseArray(modes, params_.map_frame, stamp));
       belief_modes_pub_.publish(conv::ToBeliefModes(modes, params_.map_frame, stamp));
     }

@@ -98,6 +98,9 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   };
   get_pose("initial_pose", p.initial_pose);
   get_pose("last_map_to_odom", p.last_map_to_odom);
+  get_pose("last_odom", p.last_odom);
+  r.Get("last_sigma_xy_m", p.last_sigma_xy_m, "m");
+  r.GetDegrees("last_sigma_theta_deg", p.last_sigma_theta_rad);
   r.Get("save_pose_period_s", p.save_pose_period_s, "s");
   r.Require(p.save_pose_period_s >= 0.0 && p.save_pose_period_s <= 60.0, "save_pose_period_s",
             "in [0, 60]", p.save_pose_period_s);
@@ -251,6 +254,10 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   if (!(p.odometry_max_lag_s > 0.0 && p.odometry_max_lag_s <= 10.0))
     v.push_back("~odometry_max_lag_s must be in (0, 10] s");
   if (!(p.initial_sigma_xy_m > 0.0)) v.push_back("~initial_sigma_xy_m must be > 0 m");
+  if (!(p.last_sigma_xy_m >= 0.0 && p.last_sigma_xy_m < 1e3))
+    v.push_back("~last_sigma_xy_m must be in [0, 1000) m");
+  if (!(p.last_sigma_theta_rad >= 0.0 && p.last_sigma_theta_rad < 1e3))
+    v.push_back("~last_sigma_theta_deg must be >= 0 and finite");
   if (!(p.initial_sigma_theta_rad > 0.0)) v.push_back("~initial_sigma_theta_deg must be > 0");
   if (!(p.belief_rate_hz > 0.0 && p.belief_rate_hz <= 100.0))
     v.push_back("~belief_rate_hz must be in (0, 100] Hz");

@@ -93,9 +93,14 @@ struct NodeParameters {
   std::optional<spott_map::Pose2> initial_pose;
   /// Written by the node itself every save_pose_period_s: its map -> odom ("x y yaw") while it
   /// is not lost (AMCL's save_pose_rate). A node respawned after a crash finds it and resumes
-  /// at that transform composed with the odometry of the moment (a Gaussian of the initial
-  /// sigmas), whatever start_uniform says. A new launch resets it from the YAML ("").
+  /// at that transform composed with the odometry of the moment, whatever start_uniform says,
+  /// with the saved spread grown over the odometry since (resume_spread.h; the initial sigmas
+  /// when last_odom or the spread was not saved). A new launch resets it from the YAML ("").
   std::optional<spott_map::Pose2> last_map_to_odom;
+  /// Written with it: the odometry pose then ("x y yaw") and the estimate's spread (0: unknown).
+  std::optional<spott_map::Pose2> last_odom;
+  double last_sigma_xy_m = 0.0;
+  double last_sigma_theta_rad = 0.0;
   double save_pose_period_s = 2.0;  ///< [0, 60] s; 0: never saved.
   double initial_sigma_xy_m = 0.3;  ///< Spread of the belief set by /initialpose.
   double initial_sigma_theta_rad = 0.2;
