@@ -19,36 +19,14 @@ using spott_launch::testing::RunTask;
 using spott_launch::testing::TaskClient;
 using spott_launch::testing::Watch;
 
-class Task : public ::testing::Test {
+class Task : public spott_launch::testing::TaskStackTest {
  protected:
   static void SetUpTestSuite() {
-    nh_ = new ros::NodeHandle;
-    spinner_ = new ros::AsyncSpinner(2);
-    spinner_->start();
-    watch_ = new Watch(*nh_);
-    client_ = new TaskClient("task", true);
-    ASSERT_TRUE(ros::Time::waitForValid(ros::WallDuration(60.0)));
-    ASSERT_TRUE(client_->waitForServer(ros::Duration(60.0))) << "/task is not offered";
+    StartSuite();
+    if (HasFatalFailure()) return;
     ASSERT_TRUE(watch_->WaitForLocalization(120.0)) << "no localization_status";
   }
-  // Stopped before the process exits: a spinner thread still running while roscpp's statics
-  // are destroyed aborted the process (boost::lock_error) after the results were written.
-  static void TearDownTestSuite() {
-    spinner_->stop();
-    delete client_;
-    delete watch_;
-    delete spinner_;
-    delete nh_;
-  }
-  static ros::NodeHandle* nh_;
-  static ros::AsyncSpinner* spinner_;
-  static Watch* watch_;
-  static TaskClient* client_;
 };
-ros::NodeHandle* Task::nh_ = nullptr;
-ros::AsyncSpinner* Task::spinner_ = nullptr;
-Watch* Task::watch_ = nullptr;
-TaskClient* Task::client_ = nullptr;
 
 TEST_F(Task, MalformedTaskIsRejectedWithItsColumn) {
   const auto start = watch_->position();

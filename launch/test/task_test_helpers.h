@@ -4,6 +4,7 @@
 #pragma once
 
 #include <actionlib/client/simple_action_client.h>
+#include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <spott_msgs/AddObstacle.h>
@@ -189,5 +190,33 @@ inline bool AddObstacle(const std::string& id, const std::string& kind, double x
 inline bool InPolygon(const spott_map::Vec2& p, const std::vector<spott_map::Vec2>& polygon) {
   return spott_map::PointInPolygon(p, polygon);
 }
+
+/// A suite on the stack with the TR+ controller: a spinner, the Watch and a /task client for the
+/// suite's life. A suite's SetUpTestSuite calls StartSuite() first, then waits for its own.
+class TaskStackTest : public ::testing::Test {
+ protected:
+  static void StartSuite() {
+    nh_ = new ros::NodeHandle;
+    spinner_ = new ros::AsyncSpinner(2);
+    spinner_->start();
+    watch_ = new Watch(*nh_);
+    client_ = new TaskClient("task", true);
+    ASSERT_TRUE(ros::Time::waitForValid(ros::WallDuration(60.0)));
+    ASSERT_TRUE(client_->waitForServer(ros::Duration(60.0))) << "/task is not offered";
+  }
+  // Stopped before the process exits: a spinner thread still running while roscpp's statics
+  // are destroyed aborted the process (boost::lock_error) after the results were written.
+  static void TearDownTestSuite() {
+    spinner_->stop();
+    delete client_;
+    delete watch_;
+    delete spinner_;
+    delete nh_;
+  }
+  static inline ros::NodeHandle* nh_ = nullptr;
+  static inline ros::AsyncSpinner* spinner_ = nullptr;
+  static inline Watch* watch_ = nullptr;
+  static inline TaskClient* client_ = nullptr;
+};
 
 }  // namespace spott_launch::testing

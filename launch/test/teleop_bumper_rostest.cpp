@@ -18,16 +18,11 @@ namespace {
 
 using namespace spott_launch::testing;
 
-class TeleopBumper : public ::testing::Test {
+class TeleopBumper : public spott_launch::testing::TaskStackTest {
  protected:
   static void SetUpTestSuite() {
-    nh_ = new ros::NodeHandle;
-    spinner_ = new ros::AsyncSpinner(2);
-    spinner_->start();
-    watch_ = new Watch(*nh_);
-    client_ = new TaskClient("task", true);
-    ASSERT_TRUE(ros::Time::waitForValid(ros::WallDuration(60.0)));
-    ASSERT_TRUE(client_->waitForServer(ros::Duration(60.0)));
+    StartSuite();
+    if (HasFatalFailure()) return;
     // stack.launch's start_pose is markov_localization's initial pose too.
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(30.0);
     while ((watch_->estimate() - spott_map::Vec2(27.0, 8.25)).norm() > 0.2 &&
@@ -38,24 +33,7 @@ class TeleopBumper : public ::testing::Test {
         << "markov_localization did not start at start_pose";
     ros::Duration(2.0).sleep();
   }
-  // Stopped before the process exits: a spinner thread still running while roscpp's statics
-  // are destroyed aborted the process (boost::lock_error) after the results were written.
-  static void TearDownTestSuite() {
-    spinner_->stop();
-    delete client_;
-    delete watch_;
-    delete spinner_;
-    delete nh_;
-  }
-  static ros::NodeHandle* nh_;
-  static ros::AsyncSpinner* spinner_;
-  static Watch* watch_;
-  static TaskClient* client_;
 };
-ros::NodeHandle* TeleopBumper::nh_ = nullptr;
-ros::AsyncSpinner* TeleopBumper::spinner_ = nullptr;
-Watch* TeleopBumper::watch_ = nullptr;
-TaskClient* TeleopBumper::client_ = nullptr;
 
 TEST_F(TeleopBumper, GoForwardTowardsAWallStopsBeforeIt) {
   watch_->Reset();

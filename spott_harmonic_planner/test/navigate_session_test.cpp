@@ -22,6 +22,15 @@ GlobalAnswer Failed(const std::string& message) {
   return AnswerOf(GlobalAnswer::State::kFailed, message);
 }
 
+// A session without the global planner, driving from t = 0.05 (the pose is all it waits for).
+NavigateSession Driving(NavigateSessionParameters p = {}) {
+  p.use_global_planner = false;
+  NavigateSession s(p, 0.0);
+  s.PoseAvailable();
+  s.Update(0.05);
+  return s;
+}
+
 TEST(NavigateSession, PlansUntilThePoseAndTheGlobalPlannersAnswerAreThereInAnyOrder) {
   NavigateSession s({}, 0.0);
   s.Update(0.1);
@@ -40,11 +49,7 @@ TEST(NavigateSession, PlansUntilThePoseAndTheGlobalPlannersAnswerAreThereInAnyOr
 // bonn_kidnap_tasks seed 5: on a wrong but certain estimate the planner drove toward a wall, the
 // arbiter's clearance cap held the robot, and the goal went on for 240 s with 0 m driven.
 TEST(NavigateSession, NoProgressWhileDescendingFailsTheGoalAndStandingDoesNotCount) {
-  NavigateSessionParameters p;
-  p.use_global_planner = false;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Update(0.05);
+  NavigateSession s = Driving();
   ASSERT_EQ(s.phase(), NavigatePhase::kDriving);
   // Slow but steady: 0.3 m every 20 s is progress.
   double t = 0.1;
@@ -69,11 +74,8 @@ TEST(NavigateSession, NoProgressWhileDescendingFailsTheGoalAndStandingDoesNotCou
 
 TEST(NavigateSession, NoProgressCheckWhenItsTimeoutIsZero) {
   NavigateSessionParameters p;
-  p.use_global_planner = false;
   p.progress_timeout_s = 0.0;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Update(0.05);
+  NavigateSession s = Driving(p);
   for (double t = 0.1; t < 200.0; t += 0.5) s.Descending(spott_map::Pose2{}, t);
   EXPECT_FALSE(s.finished());
   p.progress_radius_m = 0.0;
@@ -184,11 +186,7 @@ TEST(NavigateSession, ARefusedGoalFails) {
 }
 
 TEST(NavigateSession, EscapingAndWideningAreRecoveringEpisodes) {
-  NavigateSessionParameters p;
-  p.use_global_planner = false;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Update(0.0);
+  NavigateSession s = Driving();
   s.Steered(true, true, false, "escaping the padding of an obstacle");
   EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
   EXPECT_NE(s.note().find("escaping"), std::string::npos);
@@ -209,11 +207,8 @@ TEST(NavigateSession, EscapingAndWideningAreRecoveringEpisodes) {
 
 TEST(NavigateSession, NoDescentForUnreachableCyclesIsUnreachable) {
   NavigateSessionParameters p;
-  p.use_global_planner = false;
   p.unreachable_cycles = 3;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Update(0.0);
+  NavigateSession s = Driving(p);
   s.Steered(false, false, false, "the goal lies in a padded obstacle");
   s.Steered(false, false, false, "the goal lies in a padded obstacle");
   s.Steered(true, false, false, "");  // a good cycle resets the count
@@ -228,12 +223,9 @@ TEST(NavigateSession, NoDescentForUnreachableCyclesIsUnreachable) {
 
 TEST(NavigateSession, AFrontContactBacksOffItsDistanceThenDrivesOn) {
   NavigateSessionParameters p;
-  p.use_global_planner = false;
   p.backoff_distance_m = 0.25;
   p.backoff_speed_mps = 0.1;
-  NavigateSession s(p, 0.0);
-  s.PoseAvailable();
-  s.Update(0.0);
+  NavigateSession s = Driving(p);
   s.Contact(0.3, spott_map::Pose2{1.0, 1.0, 0.0});
   EXPECT_EQ(s.phase(), NavigatePhase::kRecovering);
   ASSERT_TRUE(s.backing_off());
