@@ -593,6 +593,44 @@ TEST_F(Controller, AnEstimateJumpTakesBackWhatWasJustSensedAndPausesMapping) {
 
 RangeRing OneBeam(double x, double y, double yaw, double range);  // below: one sonar transducer
 
+// bonn_kidnap_tasks: 0.5 s after the unseen 70-degree turn, on the estimate that had not yet
+// noticed it, the controller read a closed door open and sent it to every copy, the
+// localization's included. Taken back with the features when the estimate jumps.
+TEST_F(Controller, AnEstimateJumpTakesBackADoorStateJustSensed) {
+  // Under d_201 (open in the file), 0.52 m from its opening: echoes on it vote it closed.
+  double t = 1.0;
+  for (; t < 4.0; t += 0.1) {
+    At(4.0, 8.75, 0.0, t);
+    c_->Sonar(OneBeam(0, kRadius, M_PI / 2, 0.52), t);
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+  }
+  const auto sent_closed = [&] {
+    for (const MapChange& u : io_.updates)
+      for (const auto& [door, state] : u.doors)
+        if (door == "d_201" && state == spott_map::DoorState::kClosed) return true;
+    return false;
+  };
+  ASSERT_TRUE(sent_closed()) << "no door state sensed in " << io_.updates.size() << " updates";
+  ASSERT_EQ(c_->map().graph().FindDoor("d_201")->state, spott_map::DoorState::kClosed);
+  // The estimate jumps 4 m (odometry stands): the state sensed on it goes back to open.
+  const std::size_t sent = io_.updates.size();
+  c_->SetPose(Pose2{8.0, 8.75, 0.0}, t);
+  ASSERT_EQ(c_->estimate_jumps(), 1);
+  ASSERT_GT(io_.updates.size(), sent);
+  const MapChange& back = io_.updates.back();
+  EXPECT_TRUE(back.retraction);
+  ASSERT_EQ(back.doors.size(), 1u);
+  EXPECT_EQ(back.doors[0].first, "d_201");
+  EXPECT_EQ(back.doors[0].second, spott_map::DoorState::kOpen);
+  EXPECT_EQ(c_->map().graph().FindDoor("d_201")->state, spott_map::DoorState::kOpen);
+  // A second jump has nothing more to take back.
+  c_->SetPose(Pose2{12.0, 8.75, 0.0}, t + 0.1);
+  EXPECT_EQ(c_->map().graph().FindDoor("d_201")->state, spott_map::DoorState::kOpen);
+  for (std::size_t i = sent + 1; i < io_.updates.size(); ++i)
+    EXPECT_TRUE(io_.updates[i].doors.empty());
+}
+
 // cim_office, Fig. 18 and the demo: the lab's 0.6 m crate lies under the Nomad's sonar (0.65 m);
 // the infrared ring (0.4 m) saw it for 1.8 s before the robot touched it, and nothing mapped it.
 TEST_F(Controller, WhatTheInfraredKeepsSeeingUnderTheSonarIsMapped) {

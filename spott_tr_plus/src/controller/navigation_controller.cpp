@@ -696,6 +696,19 @@ void NavigationController::EstimateJumped(const Pose2& before, const Pose2& afte
     change.added.push_back(std::move(moved));
   }
   recent_ids_.clear();  // older ones were placed before the estimate went wrong: they stay
+  // Door states too: sensed on the wrong pose, a closed door read open (bonn_kidnap_tasks: 0.5 s
+  // after the unseen turn, door_n4 "sensed open" went to the global planner and into the
+  // localization's map while it relocalized). A door changed twice gets its state from before
+  // both.
+  std::map<std::string, spott_map::DoorState> restore;
+  while (!recent_doors_.empty() &&
+         recent_doors_.back().time >= now - params_.localization.retract_s) {
+    restore[recent_doors_.back().door] = recent_doors_.back().before;  // the oldest wins
+    recent_doors_.pop_back();
+  }
+  recent_doors_.clear();
+  for (const auto& [door, state] : restore) change.doors.emplace_back(door, state);
+  change.retraction = true;
   ApplyChange(std::move(change), now);
 }
 
@@ -718,6 +731,7 @@ int NavigationController::ClearSensedNear(const Vec2& at, double radius, double 
 
 void NavigationController::ApplyChange(MapChange change, double now) {
   MapChange sent;
+  sent.retraction = change.retraction;
   for (const std::string& id : change.removed) {
     if (!db_.RemoveFeature(id)) continue;
     added_ids_.erase(std::remove(added_ids_.begin(), added_ids_.end(), id), added_ids_.end());
@@ -737,11 +751,19 @@ void NavigationController::ApplyChange(MapChange change, double now) {
   }
   bool doors = false;
   for (const auto& [id, state] : change.doors) {
+    const spott_map::Door* door = db_.graph().FindDoor(id);
+    const bool known = door != nullptr;
+    const spott_map::DoorState before = known ? door->state : state;
     if (db_.SetDoorState(id, state)) {
       sent.doors.emplace_back(id, state);
       doors = true;
+      if (!change.retraction && known && before != state)
+        recent_doors_.push_back({now, id, before});
     }
   }
+  while (!recent_doors_.empty() &&
+         recent_doors_.front().time < now - params_.localization.retract_s)
+    recent_doors_.pop_front();
   while (!recent_ids_.empty() && recent_ids_.front().first < now - params_.localization.retract_s)
     recent_ids_.pop_front();
   if (sent.added.empty() && sent.doors.empty() && sent.removed.empty()) return;

@@ -280,7 +280,9 @@ class ControllerNode : public ControllerIo {
       d.door_id = id;
       d.state = mconv::ToMsg(state);
       u.doors.push_back(d);
-      ROS_INFO("tr_plus_controller: door %s sensed %s", id.c_str(), spott_map::ToString(state));
+      ROS_INFO("tr_plus_controller: door %s %s in the map (%s)", id.c_str(),
+               spott_map::ToString(state),
+               change.retraction ? "the sensed state taken back" : "sensed");
     }
     if (!change.added.empty()) {
       ROS_INFO("tr_plus_controller: %zu sensed features added to the map (%s%s)",

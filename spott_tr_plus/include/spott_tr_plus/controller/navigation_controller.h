@@ -67,6 +67,7 @@ struct MapChange {
   std::vector<spott_map::MapFeature> added;
   std::vector<std::pair<std::string, spott_map::DoorState>> doors;
   std::vector<std::string> removed;  ///< Sensed features taken back (ids).
+  bool retraction = false;  ///< Takes back what was sensed on an estimate that then jumped.
 };
 
 struct TaskFeedback {
@@ -273,6 +274,7 @@ class NavigationController {
   void Complete(Ticket ticket, bool ok) { completions_.emplace_back(ticket, ok); }
   void Finish(const std::string& outcome, bool success, const std::string& message, double now,
               bool defer = false);
+  /// A change with `retraction` set is not itself retracted later.
   void ApplyChange(MapChange change, double now);
   /// `before`: the robot's pose now by the correction before the jump; `after`: the new one.
   void EstimateJumped(const Pose2& before, const Pose2& after, double now);
@@ -317,6 +319,13 @@ class NavigationController {
   std::map<std::string, int> next_id_;
   std::vector<std::string> added_ids_;
   std::deque<std::pair<double, std::string>> recent_ids_;  ///< (time added, id), for retraction.
+  /// Door states the controller changed (time, door, state before), for retraction alike.
+  struct DoorChange {
+    double time;
+    std::string door;
+    spott_map::DoorState before;
+  };
+  std::deque<DoorChange> recent_doors_;
   std::optional<Pose2> correction_;  ///< map->odom of the last pose (pose composed with odom^-1).
   double mapping_resumes_ = -1e300;  ///< After an estimate jump: no mapping before this time.
   int estimate_jumps_ = 0;
