@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spott_tr_plus/controller/navigation_controller.h"
+
 namespace spott_launch {
 
 bool AnyPressed(const spott_msgs::BumperRing& ring) {
@@ -27,9 +29,10 @@ void NavigateFeedbackLog::On(const spott_msgs::NavigateFeedback& feedback) {
   recovering = now;
 }
 
+// One reading of Navigate's contract, the TR+ controller's (its outcomes are the message's).
 bool NotLocalized(const spott_msgs::NavigateResult& result) {
-  return result.outcome == spott_msgs::NavigateResult::FAILED &&
-         result.reason.rfind("not localized", 0) == 0;
+  return spott_tr_plus::controller::NavigateNotLocalized(
+      static_cast<spott_tr_plus::controller::NavigateOutcome>(result.outcome), result.reason);
 }
 
 std::string ApplyMissionResult(const spott_msgs::MissionResult& result, const MissionSpec& spec,

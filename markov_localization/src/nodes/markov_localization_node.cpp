@@ -27,6 +27,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -34,7 +35,6 @@
 #include <future>
 #include <limits>
 #include <memory>
-#include <algorithm>
 #include <optional>
 
 #include "../ros/active_localize_server.h"
