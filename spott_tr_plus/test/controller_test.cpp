@@ -218,6 +218,13 @@ TEST_F(Controller, ArrivalOnAnUncertainEstimateWaitsForTheLocalizationAndIsCheck
 // bonn_kidnap: Navigate stood at its goal on a lost estimate for lost_timeout_s and FAILED "not
 // localized". That is no failure of the way there: the goal goes again once the localization is
 // certain, as often as it happens, and the task fails only if it stays lost localized_wait_s.
+TEST(NavigateNotLocalized, OnlyAFailedGoalWhoseReasonSaysSo) {
+  EXPECT_TRUE(NavigateNotLocalized(NavigateOutcome::kFailed, "not localized: lost for 10 s"));
+  EXPECT_FALSE(NavigateNotLocalized(NavigateOutcome::kUnreachable, "not localized: lost"));
+  EXPECT_FALSE(NavigateNotLocalized(NavigateOutcome::kFailed, "no pose in time: not localized"));
+  EXPECT_FALSE(NavigateNotLocalized(NavigateOutcome::kFailed, ""));
+}
+
 TEST_F(Controller, NavigateNotLocalizedWaitsForTheLocalizationAndIsNotCountedAsAFailure) {
   params_.tasks.navigate_retries = 0;  // any Navigate failure ends the task
   Create();
