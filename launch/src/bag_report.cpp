@@ -158,6 +158,8 @@ class Replay {
     } else if (kind_ == RunKind::kTask) {
       JudgeLeg(o.refusal, spott_launch::OffTaskGoal(world_, leg.task, o.start, leg, tolerance_m_),
                leg);
+      leg.found_nearest_m =
+          spott_launch::NearestObjectOfKind(world_, leg.found_label, leg.found_at);
     } else if (kind_ == RunKind::kMission) {
       spott_launch::JudgeMissionLeg(o.refusal, tolerance_m_, leg);
     } else {

@@ -335,6 +335,7 @@ NavigationReport RunTasks(ros::NodeHandle& nh, const spott_map::World& world,
     Measure(watcher, leg.target.Position(), leg);
     // The goal region of the command from where the robot really started.
     const std::string off_goal = OffTaskGoal(world, command, start, leg, goal_tolerance_m);
+    leg.found_nearest_m = NearestObjectOfKind(world, leg.found_label, leg.found_at);
     JudgeLeg(reached_by_controller ? "" : "the controller says " + leg.task_outcome, off_goal, leg);
     report.legs.push_back(leg);
   }
@@ -578,7 +579,7 @@ std::string FormatNavigation(const NavigationReport& report) {
         << (leg.wall_time_s > 0 ? leg.sim_time_s / leg.wall_time_s : 0.0) << "x real time), "
         << leg.path_length_m << " m driven, ended at (" << leg.final_position.x() << ", "
         << leg.final_position.y() << "), " << std::setprecision(2)
-        << (report.by_mission && !leg.has_target
+        << ((report.by_mission || !leg.found_label.empty()) && !leg.has_target
                 ? std::string("no goal to be at")
                 : FormatMetres(leg.final_error_m) + " m from the target")
         << "; closest approach to a wall or object " << leg.min_wall_distance_m
@@ -592,6 +593,11 @@ std::string FormatNavigation(const NavigationReport& report) {
           << leg.max_heading_error_rad * 180.0 / M_PI << " deg; said lost " << leg.lost_reports
           << " times\n"
           << std::setprecision(2);
+    }
+    if (!leg.found_label.empty()) {
+      out << "     found: a " << leg.found_label << " at (" << leg.found_at.x() << ", "
+          << leg.found_at.y() << "); the world's nearest " << leg.found_label << " is "
+          << FormatMetres(leg.found_nearest_m) << " m from it\n";
     }
     if (report.by_task) {
       out << "     features the controller added to the map: ";

@@ -37,6 +37,11 @@ json Leg(const NavigationLeg& leg) {
             {"lost_onsets_s", leg.lost_onsets_s},
             {"contact_onsets_s", leg.contact_onsets_s}};
   if (leg.has_target) j["target"] = {leg.target.x, leg.target.y, leg.target.yaw};
+  if (!leg.found_label.empty()) {
+    j["found"] = {{"label", leg.found_label},
+                  {"at", {leg.found_at.x(), leg.found_at.y()}},
+                  {"nearest_of_kind_m", leg.found_nearest_m}};
+  }
   if (!leg.mission.empty()) {
     j["mission"] = leg.mission;
     j["mission_outcome"] = leg.mission_outcome;

@@ -48,7 +48,10 @@ bool ApplyTaskResult(const spott_msgs::TaskResult& result,
                      std::vector<std::string>& features_before, NavigationLeg& leg) {
   leg.interpretation = result.interpretation;
   leg.trace = result.trace;
-  const bool reached = result.outcome == "reached";
+  // A `find` ends "found" (the object's place is judged by OffTaskGoal).
+  const bool reached = result.outcome == "reached" || result.outcome == "found";
+  leg.found_label = result.found_label;
+  leg.found_at = spott_map::Vec2(result.found_at.x, result.found_at.y);
   leg.task_outcome =
       result.outcome + (result.message.empty() || reached ? "" : ": " + result.message);
   for (const std::string& id : result.features_added) {

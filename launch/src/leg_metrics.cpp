@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 #include "spott_map/geometry.h"
 #include "spott_map/map_database.h"
@@ -224,6 +227,32 @@ std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
   return "";
 }
 
+double NearestObjectOfKind(const spott_map::World& world, const std::string& label,
+                           const spott_map::Vec2& at) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const spott_map::WorldObject& o : world.objects) {
+    if (spott_map::ToString(o.kind) == label)
+      nearest = std::min(nearest, (o.pose.Position() - at).norm());
+  }
+  return nearest;
+}
+
+std::string OffFoundObject(const spott_map::World& world, const NavigationLeg& leg) {
+  if (leg.found_label.empty()) return "nothing was found";
+  if (!leg.found_at.allFinite()) return "the object found has no place";
+  const double nearest = NearestObjectOfKind(world, leg.found_label, leg.found_at);
+  if (nearest <= kFoundToleranceM) return "";
+  std::ostringstream why;
+  why << std::fixed << std::setprecision(2) << "the controller found a " << leg.found_label
+      << " at (" << leg.found_at.x() << ", " << leg.found_at.y() << "), but ";
+  if (std::isfinite(nearest))
+    why << "the world's nearest " << leg.found_label << " is " << nearest << " m away";
+  else
+    why << "the world has no " << leg.found_label;
+  why << " (tolerance " << kFoundToleranceM << " m)";
+  return why.str();
+}
+
 std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
                         const spott_map::Pose2& start, const NavigationLeg& leg,
                         double tolerance_m) {
@@ -234,6 +263,8 @@ std::string OffTaskGoal(const spott_map::World& world, const std::string& comman
   bool in_region = false;
   std::string region_error;
   const auto parsed = spott_tr_plus::ParseTaskCommand(command);
+  if (parsed.ok() && parsed.command->verb == spott_tr_plus::Verb::kFind)
+    return OffFoundObject(world, leg);
   if (parsed.ok()) {
     const auto in =
         spott_tr_plus::InterpretTask(*parsed.command, start.x, start.y, start.yaw,

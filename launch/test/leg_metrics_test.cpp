@@ -159,6 +159,35 @@ TEST(LegMetrics, AVerdictNeedsTheDriversWordTheGoalAndNoContact) {
   EXPECT_EQ(leg.outcome, "not reached: Navigate failed: blocked");
 }
 
+// `find chair` is judged by the object reported: a chair of the world within 0.5 m of it.
+TEST(LegMetrics, AFindIsJudgedOnTheObjectReportedAgainstTheWorldsObjects) {
+  const auto loaded = spott_map::LoadWorldFromString(R"(
+world: {name: office}
+walls: {from_rooms: true, thickness: 0.1}
+rooms:
+  - {id: office, polygon: [[0, 0], [6, 0], [6, 5], [0, 5]]}
+objects:
+  - {id: c1, kind: chair, pose: [2, 2, 0.3], size: [0.5, 0.5], height: 0.9}
+  - {id: d1, kind: desk, pose: [4, 1, 0], size: [1.6, 0.8], height: 0.75}
+robot_start: {pose: [1, 4, 0]}
+)",
+                                                     "office.yaml");
+  ASSERT_TRUE(loaded.ok()) << spott_map::FormatErrors(loaded.errors);
+  const spott_map::World& world = *loaded.world;
+  NavigationLeg leg;
+  const spott_map::Pose2 start{1, 4, 0};
+  EXPECT_EQ(OffTaskGoal(world, "find chair", start, leg, 0.25), "nothing was found");
+  leg.found_label = "chair";
+  leg.found_at = spott_map::Vec2(2.2, 2.3);  // 0.36 m from c1: one face seen
+  EXPECT_EQ(OffTaskGoal(world, "find chair", start, leg, 0.25), "");
+  leg.found_at = spott_map::Vec2(4.0, 1.1);  // the desk's place
+  const std::string off = OffTaskGoal(world, "find chair", start, leg, 0.25);
+  EXPECT_NE(off.find("nearest chair is 2.19 m away"), std::string::npos) << off;
+  leg.found_label = "cylinder";
+  EXPECT_NE(OffTaskGoal(world, "find chair", start, leg, 0.25).find("has no cylinder"),
+            std::string::npos);
+}
+
 // A mission counts as the scenario says: the executive's outcome, the monitors in their order,
 // the message, then the goal on the ground truth.
 TEST(LegMetrics, AMissionIsJudgedOnItsOutcomeMonitorsMessageAndGoal) {

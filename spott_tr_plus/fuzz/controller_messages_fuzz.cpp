@@ -106,6 +106,19 @@ void Profile(FuzzedDataProvider& in) {
   mapper.SetMap(db, robot.Position());
   for (int k = 0; k < 3; ++k) mapper.AddPoints(origin, *points, robot);
   CheckFused(mapper, db);
+  // The same message for recognition: every sample, both orientations, named or not.
+  ctl::Vec3 head_origin;
+  const auto samples = conv::ProfileSamples(msg, head, &head_origin);
+  Check(samples.has_value(), "a head pose accepted for mapping refused for recognition");
+  Check(samples->size() == msg.points.size(), "a profile sample lost");
+  ctl::ObjectRecognizer recognizer{ctl::RecognitionParameters{}};
+  recognizer.SetMap(&db);
+  for (int k = 0; k < 12; ++k) recognizer.AddProfile(head_origin, *samples, k % 2 == 1);
+  for (const spott_map::MapFeature& f : recognizer.Take()) {
+    Check(!f.label.empty() && std::isfinite(f.pose.x) && std::isfinite(f.pose.y) &&
+              std::isfinite(f.size_x) && std::isfinite(f.size_z),
+          "a recognised object without a label or a finite place");
+  }
 }
 
 void Places(FuzzedDataProvider& in) {

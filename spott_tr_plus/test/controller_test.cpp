@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "profile_caster.h"
 #include "spott_map/world_loader.h"
 #include "spott_tr_plus/controller/navigation_controller.h"
 #include "spott_tr_plus/parser.h"
@@ -119,6 +120,90 @@ class Controller : public ::testing::Test {
   Pose2 pose_;
   std::unique_ptr<NavigationController> c_;
 };
+
+// FIND (Figs. 11-13) on recognition: a chair the map does not hold stands in hall_w; the heads
+// sweep across it (horizontal and vertical profiles, cast as robot_sim would); QUADRIS's batch
+// names it, the map database gets a labelled feature and the task ends "found" with its place.
+TEST_F(Controller, FindChairEndsFoundWhenTheProfilesNameAChair) {
+  using test_scene::Cast;
+  using test_scene::kHeadZ;
+  using test_scene::Solid;
+  const Solid chair{{6.0, 8.1}, 0.3, 0.5, 0.5, 0.9, false};
+  At(4.3, 8.0, 0.0, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "find chair", 0.2).accepted);
+  const auto to_base = [&](std::vector<ProfileSample> samples) {
+    for (ProfileSample& p : samples) p.point -= Vec3(pose_.x, pose_.y, 0.0);  // yaw 0
+    return samples;
+  };
+  double t = 0.3;
+  for (int k = 0; t < 40.0 && io_.results.empty(); ++k, t += 0.25) {
+    At(4.3, 8.0, 0.0, t);  // standing: the heads sweep, the wheels are not followed here
+    const double pan = 0.8 * std::sin(k * 0.1);
+    const Vec3 head(4.3, 8.0, kHeadZ);
+    c_->RecognitionProfile(head - Vec3(4.3, 8.0, 0.0), to_base(Cast({chair}, head, pan, false)),
+                           false, t);
+    c_->RecognitionProfile(head - Vec3(4.3, 8.0, 0.0), to_base(Cast({chair}, head, pan, true)),
+                           true, t);
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+  }
+  ASSERT_EQ(io_.results.size(), 1u) << "no result after " << t << " s";
+  const TaskResult& r = io_.results[0];
+  EXPECT_TRUE(r.success);
+  EXPECT_EQ(r.outcome, "found");
+  EXPECT_NE(r.message.find("found chair quadris_"), std::string::npos) << r.message;
+  ASSERT_TRUE(r.found.has_value());
+  EXPECT_EQ(r.found->label, "chair");
+  EXPECT_LT((r.found->pose.Position() - chair.centre).norm(), 0.3);
+  // The feature went to the other copies of the map with its label, near the chair.
+  bool sent = false;
+  for (const MapChange& u : io_.updates) {
+    for (const spott_map::MapFeature& f : u.added) {
+      if (f.label != "chair") continue;
+      sent = true;
+      EXPECT_LT((f.pose.Position() - chair.centre).norm(), 0.3);
+      EXPECT_NEAR(f.size_z, 0.9, 0.03);
+    }
+  }
+  EXPECT_TRUE(sent);
+}
+
+// FIND's schedule (Fig. 13) as the stack showed it must run (cim_office_find_chair, 2026-12-06):
+// the room chosen stays chosen while the robot drives (a nearer centre must not take over: the
+// goal flapped between two rooms), the robot goes to the room's middle, and the look-around
+// starts only there, not as soon as the doorway counts as the room.
+TEST_F(Controller, FindGoesToTheMiddleOfTheRoomItChoseAndLooksAroundOnlyThere) {
+  At(4.0, 7.8, -M_PI / 2, 0.1);
+  ASSERT_TRUE(c_->StartTask(1, "find chair", 0.2).accepted);
+  c_->Tick(0.3);
+  ASSERT_EQ(io_.navigates.size(), 1u);
+  // office_101 (through d_101 at (4, 7)): its middle is (2.5, 3.5).
+  const NavigateGoal first = io_.navigates[0];
+  EXPECT_LT(std::hypot(first.x - 2.5, first.y - 3.5), 1.0) << first.x << ", " << first.y;
+  double t = 0.3;
+  for (const double x : {5.0, 6.0, 7.0}) {  // along hall_w, nearer office_202's door
+    At(x, 8.25, 0.0, t += 0.5);
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+  }
+  for (const NavigateGoal& g : io_.navigates)
+    EXPECT_LT(std::hypot(g.x - 2.5, g.y - 3.5), 1.0) << "the goal moved to " << g.x << ", " << g.y;
+  At(4.0, 6.9, -M_PI / 2, t += 0.5);  // in d_101's doorway, already inside office_101
+  if (c_->NextWakeTime() <= t) c_->Advance(t);
+  c_->Tick(t);
+  EXPECT_FALSE(io_.LastDrive("executive").has_value()) << "looked around from the doorway";
+  At(first.x, first.y, -M_PI / 2, t += 0.5);
+  c_->NavigateDone(io_.navigates.back().seq, NavigateOutcome::kSucceeded, "", t);
+  for (int k = 0; k < 10; ++k) {
+    t += 0.1;
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+  }
+  const auto turn = io_.LastDrive("executive");
+  ASSERT_TRUE(turn.has_value()) << "no look-around in the room's middle";
+  EXPECT_GT(std::abs(turn->angular_rps), 0.0);
+  EXPECT_EQ(turn->linear_mps, 0.0);
+}
 
 TEST_F(Controller, GoInRoomSendsNavigateToAFreePointOfTheRoomAndReportsReached) {
   At(1.2, 8.25, 0.0, 0.1);

@@ -22,6 +22,11 @@ struct NavigationLeg {
   std::vector<std::string> trace;
   std::string task_outcome;  ///< "reached", "failed: ...", "rejected: ...", "timed out ..."
   std::vector<std::string> features_added;  ///< During this leg.
+  /// RunTasks, `find`: what the controller recognised as the object (label, centre in the map);
+  /// empty label when nothing.
+  std::string found_label;
+  spott_map::Vec2 found_at{0.0, 0.0};
+  double found_nearest_m = 0.0;  ///< From found_at to the world's nearest object of that kind.
   /// RunMissions: the mission's name, what rpl_executive answered ("completed", "failed: ..."),
   /// and the conditions of the surveillance monitors that fired, in order.
   std::string mission;
@@ -170,6 +175,19 @@ void JudgeMissionLeg(const std::string& mismatch, double tolerance_m, Navigation
 /// text the message must contain.
 std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
                             const std::string& message, const std::vector<std::string>& fired);
+
+/// A `find` is judged by the object the controller reports: a world object of the same kind
+/// (spott_map::ToString of its kind = the label) with its centre within this of the reported
+/// centre (issue 19: "a chair within 0.5 m of a real one").
+constexpr double kFoundToleranceM = 0.5;
+
+/// The distance from `at` to the centre of `world`'s nearest object whose kind is `label`
+/// (infinity when it has none).
+double NearestObjectOfKind(const spott_map::World& world, const std::string& label,
+                           const spott_map::Vec2& at);
+
+/// "" when `leg`'s found object matches a world object (kFoundToleranceM), else why not.
+std::string OffFoundObject(const spott_map::World& world, const NavigationLeg& leg);
 
 /// Why a task leg is off its goal ("" = in the command's goal region, interpreted on `world`'s
 /// CAD map from where the robot really started, or within `tolerance_m` of the goal point the

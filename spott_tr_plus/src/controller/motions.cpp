@@ -6,18 +6,13 @@
 
 #include "spott_map/geometry.h"
 #include "spott_map/local_map.h"
+#include "violation.h"
 
 namespace spott_tr_plus::controller {
 
 namespace {
 
 using spott_map::NormalizeAngle;
-
-std::string Violation(const std::string& name, const std::string& rule, double value) {
-  std::ostringstream out;
-  out << name << " must be " << rule << " (got " << value << ")";
-  return out.str();
-}
 
 }  // namespace
 

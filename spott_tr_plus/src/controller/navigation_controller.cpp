@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
 #include "spott_map/geometry.h"
 #include "spott_map/pose_algebra.h"
+#include "violation.h"
 
 namespace spott_tr_plus::controller {
 
@@ -15,12 +17,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 using spott_map::NormalizeAngle;
-
-std::string Violation(const std::string& name, const std::string& rule, double value) {
-  std::ostringstream out;
-  out << name << " must be " << rule << " (got " << value << ")";
-  return out.str();
-}
 
 std::optional<Vec2> PointOf(const Value& v) {
   const auto* p = std::get_if<std::vector<double>>(&v);
@@ -58,6 +54,7 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
   if (p.max_call_depth < 1) v.push_back(Violation("max_call_depth", ">= 1", p.max_call_depth));
   prefixed("mapping", ValidateParameters(p.mapping));
   prefixed("doors", ValidateParameters(p.doors));
+  prefixed("recognition", ValidateParameters(p.recognition));
   prefixed("reflex", ValidateParameters(p.reflex));
   prefixed("teleop", ValidateParameters(p.teleop));
   prefixed("task", ValidateParameters(p.interpretation));
@@ -127,6 +124,7 @@ struct NavigationController::Task {
   std::string state = "parsing";
   double distance_remaining = kNaN;
   std::vector<std::string> trace;
+  std::optional<spott_map::MapFeature> found;  ///< FIND: the object recognised.
 };
 
 struct NavigationController::Reflex {
@@ -150,7 +148,10 @@ NavigationController::NavigationController(const ControllerParameters& params, C
       sonar_mapper_("sonar", params.mapping, params.doors, /*sense_doors=*/true),
       quadris_mapper_("quadris", params.mapping, params.doors, /*sense_doors=*/true),
       infrared_mapper_("infrared", params.mapping, params.doors, /*sense_doors=*/false),
-      rng_(params.seed) {}
+      recognizer_(params.recognition),
+      rng_(params.seed) {
+  recognizer_.SetMap(&db_);
+}
 
 NavigationController::~NavigationController() {
   interpreter_.reset();  // stops running actions, whose stop functions use the members
@@ -217,16 +218,7 @@ void NavigationController::Bind(Registry& r) {
     return t && t->in && t->in->goal.has_value();
   });
   r.Condition("object_found", [this](const ConditionCall& c, Outputs&) {
-    // Recognition (QUADRIS, [42]) is not modelled: found when the map holds a feature labelled
-    // as the sought object near the robot (within the sensors' reach).
-    const Task* t = c.inputs.empty() ? nullptr : TaskByStatus(c.inputs[0]);
-    if (!t || !t->in || !t->in->sought || !pose_) return false;
-    const Vec2 at = pose_->Position();
-    const spott_map::Box around{at - Vec2(3, 3), at + Vec2(3, 3)};
-    for (const spott_map::MapFeature* f : db_.FeaturesIn(around)) {
-      if (f->label == t->in->sought->word && f->DistanceTo(at) < 3.0) return true;
-    }
-    return false;
+    return FoundObject(c.inputs.empty() ? nullptr : TaskByStatus(c.inputs[0])) != nullptr;
   });
   r.Condition("apriori_map", [this](const ConditionCall&, Outputs&) {
     return std::any_of(db_.features().begin(), db_.features().end(),
@@ -246,13 +238,33 @@ void NavigationController::Bind(Registry& r) {
     if (!task_ || !task_->in || task_->in->mode != TaskInterpretation::Mode::kSearch || !pose_) {
       return false;
     }
+    // The room chosen stays chosen until it is searched (or cannot be reached): measured from
+    // the moving robot, another room's centre soon comes nearer and the goal would flap.
+    if (!search_target_.empty() && !searched_.count(search_target_)) {
+      if (!out.empty()) out[0] = search_target_;
+      return true;
+    }
     const spott_map::Room* here = db_.graph().RoomContaining(pose_->Position());
     if (!here) return false;
     std::string best;
     double best_d = 1e300;
     for (const std::string& id : db_.graph().ReachableFrom(here->id)) {
-      if (searched_.count(id)) continue;
-      double d = (db_.graph().RoomCentre(id) - pose_->Position()).norm();
+      // Rooms, not hallways: the robot passes through those on the way and sees them then.
+      const spott_map::Room* room = db_.graph().FindRoom(id);
+      if (searched_.count(id) || !room || room->kind != spott_map::RoomKind::kRoom) continue;
+      // Through a door of the robot's room when one leads there (the way it will drive), else
+      // straight.
+      const Vec2 middle = db_.graph().RoomCentre(id);
+      double through = 1e300;
+      for (const spott_map::Door& door : db_.graph().doors()) {
+        const bool joins = (door.room_a == here->id && door.room_b == id) ||
+                           (door.room_b == here->id && door.room_a == id);
+        if (joins && door.state != spott_map::DoorState::kClosed) {
+          through = std::min(
+              through, (door.center - pose_->Position()).norm() + (middle - door.center).norm());
+        }
+      }
+      double d = through < 1e300 ? through : (middle - pose_->Position()).norm();
       if (task_->in->goal) {
         const spott_map::Room* goal_room =
             db_.graph().RoomContaining(Vec2(task_->in->goal->goal_x, task_->in->goal->goal_y));
@@ -264,13 +276,16 @@ void NavigationController::Bind(Registry& r) {
       }
     }
     if (best.empty()) return false;
+    search_target_ = best;
     if (!out.empty()) out[0] = best;
     return true;
   });
+  // In the room and arrived where goto_room took the robot: a robot in the doorway is not yet.
   r.Condition("in_that_room", [this](const ConditionCall& c, Outputs&) {
     if (!pose_ || c.inputs.empty()) return false;
+    const std::string id = TextOf(c.inputs[0]);
     const spott_map::Room* room = db_.graph().RoomContaining(pose_->Position());
-    return room && room->id == TextOf(c.inputs[0]);
+    return room && room->id == id && search_at_ == id;
   });
   r.Condition("obstacle_ahead", [this](const ConditionCall& c, Outputs&) {
     for (std::size_t i = 0; i < sonar_.mounts.size() && i < sonar_.ranges.size(); ++i) {
@@ -292,9 +307,13 @@ void NavigationController::Bind(Registry& r) {
   });
   // Figs. 5-6: collect and process range data at the condition's frequency; TRUE when features
   // that are not in the map yet were found (or door states that differ), `segs` names them.
-  const auto segments = [this](SensorMapper& mapper) {
-    return [this, &mapper](const ConditionCall&, Outputs& out) {
+  // QUADRIS's batch carries the objects recognised from its profiles as well.
+  const auto segments = [this](SensorMapper& mapper, ObjectRecognizer* recognizer = nullptr) {
+    return [this, &mapper, recognizer](const ConditionCall&, Outputs& out) {
       SensedBatch batch = mapper.Take(db_);
+      if (recognizer) {
+        for (spott_map::MapFeature& f : recognizer->Take()) batch.features.push_back(std::move(f));
+      }
       if (batch.empty()) return false;
       const int id = ++next_batch_;
       batches_[id] = std::move(batch);
@@ -304,7 +323,7 @@ void NavigationController::Bind(Registry& r) {
     };
   };
   r.Condition("sonar_segments", segments(sonar_mapper_));
-  r.Condition("quadris_segments", segments(quadris_mapper_));
+  r.Condition("quadris_segments", segments(quadris_mapper_, &recognizer_));
   // Fig. 8 extended: what the infrared ring keeps seeing below the sonar (the lab's 0.6 m crate
   // under the Nomad's 0.65 m transducers) is mapped like the sonar's echoes, from its own
   // evidence grid (a sonar beam passing over a low object must not erase it).
@@ -499,9 +518,19 @@ void NavigationController::Bind(Registry& r) {
           return;
         }
         const std::string room = TextOf(c.args[0]);
-        const TaskParseResult parsed = ParseTaskCommand("go in room(" + room + ")");
+        // Fig. 13's "in that room": the room's middle, from where the heads reach across it
+        // (just past the door they may not: QUADRIS sees 4 m). "near": the nearest free spot.
+        const spott_map::Room* target = db_.graph().FindRoom(room);
+        TaskParseResult parsed;
+        if (target) {
+          const Vec2 middle = db_.graph().RoomCentre(room);
+          char command[96];
+          std::snprintf(command, sizeof(command), "go near point(%.2f, %.2f)", middle.x(),
+                        middle.y());
+          parsed = ParseTaskCommand(command);
+        }
         TaskInterpretResult in;
-        if (parsed.ok()) {
+        if (target && parsed.ok()) {
           TaskMap map{&db_, params_.robot_radius_m + params_.max_localization_error_m};
           in = InterpretTask(*parsed.command, pose_->x, pose_->y, pose_->yaw,
                              params_.interpretation, map, MapPlaceResolver(db_, places_));
@@ -513,6 +542,7 @@ void NavigationController::Bind(Registry& r) {
           return;
         }
         task_->state = "searching";
+        search_goto_ = {c.ticket, room};
         SendGoalFor(c.ticket, *in.interpretation->goal, *in.interpretation, task_->command.speed,
                     c.now);
       },
@@ -673,6 +703,7 @@ void NavigationController::EstimateJumped(const Pose2& before, const Pose2& afte
   sonar_mapper_.Forget();
   quadris_mapper_.Forget();
   infrared_mapper_.Forget();
+  recognizer_.Forget();
   batches_.clear();  // found, not yet added: placed with the old pose as well
   // after * before^-1: a point at the old pose's offset lands at the same offset from the new.
   const double turn = NormalizeAngle(after.yaw - before.yaw), c = std::cos(turn),
@@ -724,6 +755,7 @@ int NavigationController::ClearSensedNear(const Vec2& at, double radius, double 
     sonar_mapper_.Forget();
     quadris_mapper_.Forget();
     infrared_mapper_.Forget();
+    recognizer_.Forget();
   }
   ApplyChange(std::move(change), now);
   return n;
@@ -887,6 +919,20 @@ void NavigationController::RangeProfile(const Vec2& origin, const std::vector<Ve
   quadris_mapper_.AddPoints(origin, points, *pose_);
 }
 
+void NavigationController::RecognitionProfile(const Vec3& origin,
+                                              const std::vector<ProfileSample>& samples,
+                                              bool vertical, double now) {
+  if (!PoseTrusted(now)) return;
+  const double c = std::cos(pose_->yaw), sn = std::sin(pose_->yaw);
+  const auto to_map = [&](const Vec3& p) {
+    return Vec3(pose_->x + c * p.x() - sn * p.y(), pose_->y + sn * p.x() + c * p.y(), p.z());
+  };
+  std::vector<ProfileSample> in_map;
+  in_map.reserve(samples.size());
+  for (const ProfileSample& s : samples) in_map.push_back({to_map(s.point), s.echo});
+  recognizer_.AddProfile(to_map(origin), in_map, vertical);
+}
+
 void NavigationController::Bumper(const std::vector<double>& pressed_angles_rad, double now) {
   if (pressed_angles_rad.empty() || !pose_) {
     if (!contact_.empty()) {
@@ -970,6 +1016,15 @@ void NavigationController::NavigateDone(std::uint64_t seq, NavigateOutcome outco
   if (seq != nav_seq_ || nav_owner_ == 0) return;
   const Ticket owner = nav_owner_;
   nav_owner_ = 0;
+  if (owner == search_goto_.first) {
+    // FIND's goto_room: arrived, the room is searched from here; else it cannot be searched.
+    if (outcome == NavigateOutcome::kSucceeded)
+      search_at_ = search_goto_.second;
+    else
+      searched_.insert(search_goto_.second);
+    search_goto_ = {0, ""};
+    dirty_ = true;
+  }
   const bool goal_of_task = task_ && task_->phase == Task::Phase::kRunning && task_->in &&
                             task_->in->mode != TaskInterpretation::Mode::kSearch;
   if (outcome == NavigateOutcome::kSucceeded && goal_of_task && !PoseTrusted(now)) {
@@ -1124,6 +1179,8 @@ NavigationController::Acceptance NavigationController::StartTask(std::int64_t id
   task_->since = now;
   task_->state = "interpreting";
   searched_.clear();
+  search_at_.clear();
+  search_target_.clear();
   a.accepted = true;
   dirty_ = true;
   Settle(now);  // the previous task's actions stop: the robot stops first
@@ -1310,10 +1367,43 @@ void NavigationController::Tick(double now) {
     task_->message = "in the goal region";
     dirty_ = true;
   }
+  // FIND (Figs. 11-13): done when the object is recognised, with where it is.
+  if (task_ && task_->phase == Task::Phase::kRunning && !task_->ended &&
+      task_->command.verb == Verb::kFind && PoseTrusted(now)) {
+    if (const spott_map::MapFeature* f = FoundObject(task_.get())) {
+      char where[160];
+      std::snprintf(where, sizeof(where), "found %s %s at (%.2f, %.2f), %.2f x %.2f m, %.2f m high",
+                    f->label.c_str(), f->id.c_str(), f->pose.x, f->pose.y, f->size_x, f->size_y,
+                    f->size_z);
+      task_->phase = Task::Phase::kDone;
+      task_->outcome = "found";
+      task_->message = where;
+      task_->found = *f;
+      dirty_ = true;
+    }
+  }
   ConfirmArrival(now);
   DriveMotions(now);
   Settle(now);
   SendFeedback(now);
+}
+
+// Recognised from QUADRIS's profiles (object_recognition.h) or labelled in the CAD map.
+const spott_map::MapFeature* NavigationController::FoundObject(const Task* t) const {
+  if (!t || !t->in || !t->in->sought || !pose_) return nullptr;
+  constexpr double kReach = 4.0;  // QUADRIS's range (m)
+  const Vec2 at = pose_->Position();
+  const spott_map::Box around{at - Vec2(kReach, kReach), at + Vec2(kReach, kReach)};
+  const spott_map::MapFeature* best = nullptr;
+  double best_d = kReach;
+  for (const spott_map::MapFeature* f : db_.FeaturesIn(around)) {
+    const double d = f->DistanceTo(at);
+    if (f->label == t->in->sought->word && d < best_d) {
+      best = f;
+      best_d = d;
+    }
+  }
+  return best;
 }
 
 bool NavigationController::InGoalRegion(const GoalRegion& region, const Vec2& p) const {
@@ -1381,6 +1471,7 @@ void NavigationController::Settle(double now) {
     r.interpretation = t->interpretation;
     if (t->in && t->in->goal) r.goal = Vec2(t->in->goal->goal_x, t->in->goal->goal_y);
     r.trace = t->trace;
+    r.found = t->found;
     io_->TaskFinished(r);
   }
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "spott_map/local_map.h"
+#include "violation.h"
 
 namespace spott_tr_plus::controller {
 
@@ -21,12 +22,6 @@ enum Flag : std::uint8_t {
   kConfirmed = 16,  // confirmed (sent to Take once)
   kNear = 32        // within near_miss_m of a map feature (kKnown's band and beyond it)
 };
-
-std::string Violation(const std::string& name, const std::string& rule, double value) {
-  std::ostringstream out;
-  out << name << " must be " << rule << " (got " << value << ")";
-  return out.str();
-}
 
 }  // namespace
 

@@ -321,6 +321,14 @@ class ControllerNode : public ControllerIo {
     result.goal.y = r.goal ? r.goal->y() : std::numeric_limits<double>::quiet_NaN();
     result.trace = r.trace;
     result.features_added = core_->added_features();
+    result.found_at.x = result.found_at.y = std::numeric_limits<double>::quiet_NaN();
+    if (r.found) {
+      result.found_id = r.found->id;
+      result.found_label = r.found->label;
+      result.found_at.x = r.found->pose.x;
+      result.found_at.y = r.found->pose.y;
+      result.found_at.z = r.found->size_z;
+    }
     ROS_INFO("tr_plus_controller: task #%ld %s%s%s", static_cast<long>(r.id), r.outcome.c_str(),
              r.message.empty() ? "" : ": ", r.message.c_str());
     if (r.outcome == "preempted") {
@@ -476,7 +484,6 @@ class ControllerNode : public ControllerIo {
 
   void OnProfile(const spott_msgs::RangeProfileConstPtr& profile) {
     const spott_msgs::RangeProfile& msg = *profile;
-    if (msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
     geometry_msgs::TransformStamped t;
     try {
       // The head at the profile's stamp, into the robot's frame now (through the fixed frame):
@@ -487,6 +494,13 @@ class ControllerNode : public ControllerIo {
       ROS_WARN_THROTTLE(10.0, "tr_plus_controller: range profile frame: %s", e.what());
       return;
     }
+    // Both orientations name objects (a vertical profile sees a desk's top below the heads);
+    // the horizontal ones map line segments too.
+    const bool vertical = msg.orientation == spott_msgs::RangeProfile::VERTICAL;
+    Vec3 head;
+    if (const auto samples = conv::ProfileSamples(msg, t.transform, &head))
+      core_->RecognitionProfile(head, *samples, vertical, Now());
+    if (vertical) return;
     Vec2 origin;
     const auto points = conv::ProfilePoints(msg, t.transform, params_.ptu_min_height_m,
                                             params_.ptu_max_height_m, &origin);

@@ -1,5 +1,7 @@
 #include "spott_tr_plus/ros/sensor_conversions.h"
 
+#include <limits>
+
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -33,6 +35,31 @@ std::vector<double> PressedAngles(const spott_msgs::BumperRing& msg) {
       pressed.push_back(msg.segment_angles[i]);
   }
   return pressed;
+}
+
+std::optional<std::vector<controller::ProfileSample>> ProfileSamples(
+    const spott_msgs::RangeProfile& msg, const geometry_msgs::Transform& head,
+    controller::Vec3* origin) {
+  const auto& q = head.rotation;
+  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+  const Eigen::Vector3d from(head.translation.x, head.translation.y, head.translation.z);
+  if (!from.allFinite() || !rotation.coeffs().allFinite() || rotation.norm() < 1e-6)
+    return std::nullopt;
+  *origin = from;
+  const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<controller::ProfileSample> samples;
+  samples.reserve(msg.points.size());
+  for (std::size_t i = 0; i < msg.points.size(); ++i) {
+    const Eigen::Vector3d p =
+        from + r * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
+    const bool echo = i < msg.ranges.size() && msg.ranges[i] < msg.max_range - 1e-3;
+    if (p.allFinite())
+      samples.push_back({p, echo});
+    else
+      samples.push_back({Eigen::Vector3d(nan, nan, nan), false});
+  }
+  return samples;
 }
 
 std::optional<std::vector<Vec2>> ProfilePoints(const spott_msgs::RangeProfile& msg,

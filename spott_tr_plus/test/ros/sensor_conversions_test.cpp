@@ -75,5 +75,39 @@ TEST(SensorConversions, AProfileKeepsTheEchoesInItsHeightBand) {
   EXPECT_FALSE(conv::ProfilePoints(p, head, 0.05, 2.0, &origin));
 }
 
+// For recognition every sample stays, in its order: echoes by their range, a sample without a
+// finite point as "no echo" at NaN, in 3-D in the base frame.
+TEST(SensorConversions, AProfileForRecognitionKeepsEverySampleInOrder) {
+  spott_msgs::RangeProfile p;
+  p.max_range = 4.0f;
+  p.orientation = spott_msgs::RangeProfile::VERTICAL;
+  p.points.resize(4);
+  p.ranges = {1.0f, 4.0f, 1.0f};                             // one range short
+  p.points[0].x = 1.0, p.points[0].z = 0.2;                  // an echo ahead, above
+  p.points[1].x = 4.0;                                       // no echo (max range)
+  p.points[2].x = std::numeric_limits<double>::quiet_NaN();  // not finite
+  p.points[3].x = 2.0;                                       // no range: no echo
+  geometry_msgs::Transform head;
+  head.translation.x = 0.1;
+  head.translation.z = 0.85;
+  head.rotation.z = std::sin(M_PI / 4);  // turned 90 degrees left
+  head.rotation.w = std::cos(M_PI / 4);
+  controller::Vec3 origin;
+  const auto samples = conv::ProfileSamples(p, head, &origin);
+  ASSERT_TRUE(samples);
+  ASSERT_EQ(samples->size(), 4u);
+  EXPECT_TRUE((*samples)[0].echo);
+  EXPECT_NEAR((*samples)[0].point.x(), 0.1, 1e-12);
+  EXPECT_NEAR((*samples)[0].point.y(), 1.0, 1e-12);
+  EXPECT_NEAR((*samples)[0].point.z(), 1.05, 1e-6);  // Point32: float
+  EXPECT_FALSE((*samples)[1].echo);
+  EXPECT_FALSE((*samples)[2].echo);
+  EXPECT_FALSE((*samples)[2].point.allFinite());
+  EXPECT_FALSE((*samples)[3].echo);
+  EXPECT_NEAR(origin.z(), 0.85, 1e-12);
+  head.rotation.w = head.rotation.z = 0.0;  // no rotation at all
+  EXPECT_FALSE(conv::ProfileSamples(p, head, &origin));
+}
+
 }  // namespace
 }  // namespace spott_tr_plus

@@ -35,6 +35,7 @@
 #include "spott_map/map_database.h"
 #include "spott_tr_plus/ast.h"
 #include "spott_tr_plus/controller/motions.h"
+#include "spott_tr_plus/controller/object_recognition.h"
 #include "spott_tr_plus/controller/sensor_mapper.h"
 #include "spott_tr_plus/diagnostic.h"
 #include "spott_tr_plus/interpreter.h"
@@ -88,6 +89,8 @@ struct TaskResult {
   std::string interpretation;      ///< What the command was taken to mean ("" if never).
   std::optional<Vec2> goal;        ///< The goal point sent to Navigate (map), if any.
   std::vector<std::string> trace;  ///< The firing rules in order (compact TR trace).
+  /// FIND: the feature recognised as the object (its id, label, centre and height).
+  std::optional<spott_map::MapFeature> found;
 };
 
 /// What the controller does to the world.
@@ -179,6 +182,7 @@ struct ControllerParameters {
   unsigned seed = 1;  ///< RANDOM_SEARCH's headings.
   MappingParameters mapping;
   DoorSensingParameters doors;
+  RecognitionParameters recognition;
   ReflexParameters reflex;
   TeleopParameters teleop;
   LocalizationParameters localization;
@@ -218,6 +222,9 @@ class NavigationController {
   void Infrared(const RangeRing& ring, double now);
   /// A QUADRIS horizontal profile: its points (base frame) measured from `origin` (base frame).
   void RangeProfile(const Vec2& origin, const std::vector<Vec2>& points, double now);
+  /// Any QUADRIS profile for recognition: its samples and `origin` in the base frame (3-D).
+  void RecognitionProfile(const Vec3& origin, const std::vector<ProfileSample>& samples,
+                          bool vertical, double now);
   /// The pressed bumper segments as angles about +z from the robot's +x (rad); empty: none.
   void Bumper(const std::vector<double>& pressed_angles_rad, double now);
 
@@ -296,6 +303,8 @@ class NavigationController {
   bool SendGoalFor(Ticket ticket, const GoalRegion& goal, const TaskInterpretation& in, Speed speed,
                    double now);
   Task* TaskByStatus(const Value& status) const;
+  /// FIND: a feature labelled as `t`'s object within the sensors' reach of the robot.
+  const spott_map::MapFeature* FoundObject(const Task* t) const;
   std::vector<Vec2> NewObstaclesNear(const Vec2& at, double radius) const;
   bool Localized(double now) const;
   bool InGoalRegion(const GoalRegion& region, const Vec2& p) const;
@@ -312,6 +321,7 @@ class NavigationController {
   bool mapless_ = false;  ///< The served map has no rooms: no a priori map (SPOTT's Experiment 1).
   std::vector<spott_map::Place> places_;
   SensorMapper sonar_mapper_, quadris_mapper_, infrared_mapper_;
+  ObjectRecognizer recognizer_;
   bool profiles_seen_ = false;  ///< QUADRIS profiles arrived: they sense the doors.
   KnownStructure known_;
   std::map<int, SensedBatch> batches_;
@@ -363,6 +373,9 @@ class NavigationController {
   std::map<Ticket, std::unique_ptr<Drive>> drives_;  ///< Tele-operation, searches.
   std::string ptu_pattern_;
   std::set<std::string> searched_;
+  std::pair<Ticket, std::string> search_goto_{0, ""};  ///< goto_room's Navigate and its room.
+  std::string search_at_;      ///< The room goto_room last arrived in (in_that_room).
+  std::string search_target_;  ///< The room room_to_search chose, until it is searched.
   std::mt19937 rng_;
 
   std::string firing_rule_;

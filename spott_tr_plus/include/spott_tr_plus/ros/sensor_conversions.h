@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "spott_map/world.h"
+#include "spott_tr_plus/controller/object_recognition.h"
 #include "spott_tr_plus/controller/sensor_mapper.h"
 
 namespace spott_tr_plus {
@@ -40,6 +41,14 @@ std::optional<std::vector<Vec2>> ProfilePoints(const spott_msgs::RangeProfile& m
                                                const geometry_msgs::Transform& head,
                                                double min_height_m, double max_height_m,
                                                Vec2* origin);
+
+/// Every sample of a profile (horizontal or vertical), in the base frame (3-D) and in the
+/// message's order, for recognition; the head's origin in `*origin`. A sample without a finite
+/// point is kept as "no echo" at NaN (the order along the profile matters); a sample is an echo
+/// when its range is below max_range. nullopt when the head's pose is not finite.
+std::optional<std::vector<controller::ProfileSample>> ProfileSamples(
+    const spott_msgs::RangeProfile& msg, const geometry_msgs::Transform& head,
+    controller::Vec3* origin);
 
 /// The places of world_server's message (check them first: PlacesProblem).
 std::vector<spott_map::Place> PlacesFromMsg(const spott_msgs::WorldPlaces& msg);

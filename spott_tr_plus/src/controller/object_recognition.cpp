@@ -1,0 +1,361 @@
+#include "spott_tr_plus/controller/object_recognition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "violation.h"
+
+namespace spott_tr_plus::controller {
+
+namespace {
+
+using spott_map::FeatureType;
+
+std::int64_t CellKey(const Vec2& p, double cell) {
+  const auto ix = static_cast<std::int64_t>(std::floor(p.x() / cell));
+  const auto iy = static_cast<std::int64_t>(std::floor(p.y() / cell));
+  return (ix << 32) ^ (iy & 0xffffffff);
+}
+
+double BoxDiagonal(const std::vector<Vec2>& points) {
+  if (points.empty()) return 0.0;
+  Vec2 lo = points[0], hi = points[0];
+  for (const Vec2& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+// Kasa's algebraic circle fit, in coordinates centred on the points' mean (well conditioned).
+bool FitCircle(const std::vector<Vec2>& points, Vec2* centre, double* radius) {
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (const Vec2& q : points) {
+    const Vec2 p = q - mean;
+    const Eigen::Vector3d row(p.x(), p.y(), 1.0);
+    a += row * row.transpose();
+    b -= row * p.squaredNorm();
+  }
+  const Eigen::Vector3d s = a.ldlt().solve(b);
+  if (!s.allFinite()) return false;
+  const Vec2 c(-s(0) / 2, -s(1) / 2);
+  const double r2 = c.squaredNorm() - s(2);
+  if (!(r2 > 0)) return false;
+  *centre = c + mean;
+  *radius = std::sqrt(r2);
+  return true;
+}
+
+// The angle the points span around `c`: 2 pi less the widest gap between neighbours.
+double ArcSpan(const std::vector<Vec2>& points, const Vec2& c) {
+  std::vector<double> a;
+  a.reserve(points.size());
+  for (const Vec2& p : points) a.push_back(std::atan2(p.y() - c.y(), p.x() - c.x()));
+  std::sort(a.begin(), a.end());
+  double gap = a.front() + 2 * M_PI - a.back();
+  for (std::size_t i = 1; i < a.size(); ++i) gap = std::max(gap, a[i] - a[i - 1]);
+  return 2 * M_PI - gap;
+}
+
+}  // namespace
+
+std::vector<ObjectModel> DefaultObjectModels() {
+  // The bands hold the objects of the shipped worlds with what one view shows of them (a chair's
+  // single face, a desk's short end): sides are lower bounds, heights are measured.
+  return {
+      {"cylinder", FeatureType::kGeonCylinder, true, 0.2, 1.2, 1.2, 0.3, 1.6},
+      {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05},
+      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.65, 0.95},
+      {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.2, 1.2, 0.0},
+      // Lower than a desk: a desk seen in part (a side shorter than a desk's) is not a cuboid.
+      {"cuboid", FeatureType::kGeonCuboid, false, 0.2, 2.0, 2.0, 0.2, 0.65},
+  };
+}
+
+std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
+  std::vector<std::string> v;
+  if (!(p.cell_m >= 0.005 && p.cell_m <= 0.2))
+    v.push_back(Violation("cell_m", "in [0.005, 0.2]", p.cell_m));
+  if (!(p.cluster_gap_m > p.cell_m && std::isfinite(p.cluster_gap_m)))
+    v.push_back(Violation("cluster_gap_m", "> cell_m", p.cluster_gap_m));
+  if (!(p.known_tolerance_m >= 0 && std::isfinite(p.known_tolerance_m)))
+    v.push_back(Violation("known_tolerance_m", ">= 0", p.known_tolerance_m));
+  if (!std::isfinite(p.floor_m)) v.push_back(Violation("floor_m", "finite", p.floor_m));
+  if (!(p.max_range_m > 0 && std::isfinite(p.max_range_m)))
+    v.push_back(Violation("max_range_m", "> 0", p.max_range_m));
+  if (!(p.top_jump_m > 0 && std::isfinite(p.top_jump_m)))
+    v.push_back(Violation("top_jump_m", "> 0", p.top_jump_m));
+  if (!(p.top_flat_m >= 0 && std::isfinite(p.top_flat_m)))
+    v.push_back(Violation("top_flat_m", ">= 0", p.top_flat_m));
+  if (p.min_points < 3) v.push_back(Violation("min_points", ">= 3", p.min_points));
+  if (p.min_views < 1) v.push_back(Violation("min_views", ">= 1", p.min_views));
+  if (!(p.growth_m > 0 && std::isfinite(p.growth_m)))
+    v.push_back(Violation("growth_m", "> 0", p.growth_m));
+  if (p.stable_views < 0) v.push_back(Violation("stable_views", ">= 0", p.stable_views));
+  if (p.quiet_profiles < 1) v.push_back(Violation("quiet_profiles", ">= 1", p.quiet_profiles));
+  if (!(p.circle_residual_m >= 0 && std::isfinite(p.circle_residual_m)))
+    v.push_back(Violation("circle_residual_m", ">= 0", p.circle_residual_m));
+  if (!(p.min_arc_rad > 0 && p.min_arc_rad <= 2 * M_PI))
+    v.push_back(Violation("min_arc_rad", "in (0, 2 pi]", p.min_arc_rad));
+  if (!(p.max_extent_m > 0 && std::isfinite(p.max_extent_m)))
+    v.push_back(Violation("max_extent_m", "> 0", p.max_extent_m));
+  return v;
+}
+
+Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParameters& p) {
+  Footprint fp;
+  if (points.empty()) return fp;
+  if (points.size() >= 5) {
+    Vec2 c;
+    double r = 0.0;
+    if (FitCircle(points, &c, &r) && 2 * r <= p.max_extent_m) {
+      double sq = 0.0;
+      for (const Vec2& q : points) sq += std::pow((q - c).norm() - r, 2);
+      const double rms = std::sqrt(sq / static_cast<double>(points.size()));
+      if (rms <= p.circle_residual_m && ArcSpan(points, c) >= p.min_arc_rad) {
+        fp.round = true;
+        fp.centre = c;
+        fp.radius_m = r;
+        fp.long_m = fp.short_m = 2 * r;
+        return fp;
+      }
+    }
+  }
+  // The rectangle over directions of a quarter turn (its sides repeat after).
+  double best = 1e300;
+  for (int k = 0; k < 90; ++k) {
+    const double a = k * M_PI / 180.0;
+    const Vec2 u(std::cos(a), std::sin(a)), w(-u.y(), u.x());
+    double lo_u = 1e300, hi_u = -1e300, lo_w = 1e300, hi_w = -1e300;
+    for (const Vec2& q : points) {
+      lo_u = std::min(lo_u, q.dot(u));
+      hi_u = std::max(hi_u, q.dot(u));
+      lo_w = std::min(lo_w, q.dot(w));
+      hi_w = std::max(hi_w, q.dot(w));
+    }
+    // The faces seen lie on the rectangle's sides: the direction whose box leaves the echoes
+    // closest to its sides (an L of two faces has the same area boxed along its diagonal).
+    double off = 0.0;
+    for (const Vec2& q : points) {
+      const double du = q.dot(u), dw = q.dot(w);
+      off += std::min({du - lo_u, hi_u - du, dw - lo_w, hi_w - dw});
+    }
+    const double su = hi_u - lo_u, sw = hi_w - lo_w;
+    const double cost = off + 1e-6 * su * sw;  // ties (a straight face): the smaller box
+    if (cost >= best) continue;
+    best = cost;
+    fp.centre = u * (lo_u + hi_u) / 2 + w * (lo_w + hi_w) / 2;
+    fp.long_m = std::max(su, sw);
+    fp.short_m = std::min(su, sw);
+    fp.yaw = su >= sw ? a : spott_map::NormalizeAngle(a + M_PI / 2);
+  }
+  return fp;
+}
+
+const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameters& p, Footprint* fp,
+                            bool out_of_view) {
+  if (static_cast<int>(c.points.size()) < p.min_points || c.views < p.min_views) return nullptr;
+  if (c.stable < p.stable_views && !out_of_view) return nullptr;
+  // A face met at the heads' height but never seen whole may go on beyond the profiles' field.
+  if (c.horizontal && !c.face_whole) return nullptr;
+  *fp = FitFootprint(c.points, p);
+  if (fp->long_m > p.max_extent_m) return nullptr;
+  for (const ObjectModel& m : p.models) {
+    if (m.round != fp->round) continue;
+    if (fp->long_m < m.min_long_m || fp->long_m > m.max_long_m || fp->short_m > m.max_short_m)
+      continue;
+    if (m.max_height_m > 0) {
+      if (!c.top_m || *c.top_m < m.min_height_m || *c.top_m > m.max_height_m) continue;
+    } else if (c.height_seen_m < m.min_height_m) {
+      continue;
+    }
+    return &m;
+  }
+  return nullptr;
+}
+
+ObjectRecognizer::ObjectRecognizer(RecognitionParameters p) : p_(std::move(p)) {}
+
+bool ObjectRecognizer::Known(const Vec2& p,
+                             const std::vector<const spott_map::MapFeature*>& near) const {
+  for (const spott_map::MapFeature* f : near) {
+    // The CAD map and the objects named before explain their echoes; the sensed segments do
+    // not: they may be this very object's faces, mapped by the sonar a moment ago.
+    if (f->source != spott_map::FeatureSource::kCad && f->label.empty()) continue;
+    if (f->DistanceTo(p) <= p_.known_tolerance_m) return true;
+  }
+  if (db_) {
+    for (const spott_map::Door& d : db_->graph().doors()) {
+      if (spott_map::DistancePointSegment(p, d.opening) <= p_.known_tolerance_m) return true;
+    }
+  }
+  return false;
+}
+
+void ObjectRecognizer::Add(ObjectCandidate& c, const Vec2& p) const {
+  if (c.cells.insert(CellKey(p, p_.cell_m)).second) c.points.push_back(p);
+}
+
+std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
+  std::vector<std::size_t> hits;
+  const double gap2 = p_.cluster_gap_m * p_.cluster_gap_m;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const auto& pts = candidates_[i].points;
+    const bool near = std::any_of(run.begin(), run.end(), [&](const Vec2& q) {
+      return std::any_of(pts.begin(), pts.end(),
+                         [&](const Vec2& r) { return (q - r).squaredNorm() <= gap2; });
+    });
+    if (near) hits.push_back(i);
+  }
+  if (hits.empty()) {
+    candidates_.emplace_back();
+    return candidates_.size() - 1;
+  }
+  // The run bridges several: they were one object seen in parts.
+  ObjectCandidate& keep = candidates_[hits[0]];
+  for (std::size_t k = hits.size(); k-- > 1;) {
+    ObjectCandidate& other = candidates_[hits[k]];
+    for (const Vec2& q : other.points) Add(keep, q);
+    keep.height_seen_m = std::max(keep.height_seen_m, other.height_seen_m);
+    if (other.top_m) keep.top_m = std::max(keep.top_m.value_or(0.0), *other.top_m);
+    keep.face_whole = keep.face_whole || other.face_whole;
+    keep.horizontal = keep.horizontal || other.horizontal;
+    keep.views = std::max(keep.views, other.views);
+    keep.stable = 0;
+    if (keep.label.empty()) keep.label = other.label;
+    candidates_.erase(candidates_.begin() + static_cast<std::ptrdiff_t>(hits[k]));
+  }
+  return hits[0];
+}
+
+void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileSample>& samples,
+                                  bool vertical) {
+  if (!origin.allFinite() || samples.size() < 2) return;
+  ++profiles_;
+  // The order along the profile: a vertical one by elevation, lowest first.
+  std::vector<std::size_t> order(samples.size());
+  std::iota(order.begin(), order.end(), 0);
+  if (vertical) {
+    const auto elevation = [&](std::size_t i) {
+      const Vec3 d = samples[i].point - origin;
+      return std::atan2(d.z(), d.head<2>().norm());
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return elevation(a) < elevation(b); });
+  }
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const ProfileSample& s : samples) {
+    if (!s.point.allFinite()) continue;
+    lo = lo.cwiseMin(Vec2(s.point.head<2>()));
+    hi = hi.cwiseMax(Vec2(s.point.head<2>()));
+  }
+  if (!(lo.x() <= hi.x())) return;
+  std::vector<const spott_map::MapFeature*> near;
+  if (db_) near = db_->FeaturesIn(spott_map::Box{lo, hi}.Inflated(p_.known_tolerance_m));
+  std::vector<char> object(samples.size(), 0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const ProfileSample& s = samples[i];
+    object[i] = s.echo && s.point.allFinite() && s.point.z() >= p_.floor_m &&
+                (s.point - origin).norm() <= p_.max_range_m && !Known(s.point.head<2>(), near);
+  }
+  // Beyond: the ray next to a run's end went on past it, by top_jump_m (an echo farther, or
+  // none: its point lies at the sensor's range, which must then exceed the end's by as much).
+  const auto beyond = [&](std::size_t next, const Vec3& end) {
+    const ProfileSample& s = samples[next];
+    if (!s.point.allFinite()) return false;
+    return (s.point - origin).norm() > (end - origin).norm() + p_.top_jump_m;
+  };
+  std::size_t k = 0;
+  while (k < order.size()) {
+    if (!object[order[k]]) {
+      ++k;
+      continue;
+    }
+    std::size_t end = k + 1;  // the run: neighbours along the profile, close in space
+    // Up a vertical profile the run goes on over a flat top (a desk's): the rays that pass the
+    // face's edge land on the top, at its height, farther away.
+    const auto joins = [&](const Vec3& a, const Vec3& b) {
+      if ((b - a).norm() <= p_.cluster_gap_m) return true;
+      return vertical && std::abs(b.z() - a.z()) <= p_.top_flat_m &&
+             (b - a).head<2>().norm() <= p_.max_extent_m / 2;
+    };
+    while (end < order.size() && object[order[end]] &&
+           joins(samples[order[end - 1]].point, samples[order[end]].point)) {
+      ++end;
+    }
+    std::vector<Vec2> run;
+    double top = 0.0;
+    for (std::size_t j = k; j < end; ++j) {
+      run.emplace_back(samples[order[j]].point.head<2>());
+      top = std::max(top, samples[order[j]].point.z());
+    }
+    ObjectCandidate& c = candidates_[CandidateFor(run)];
+    for (const Vec2& q : run) Add(c, q);
+    c.height_seen_m = std::max(c.height_seen_m, top);
+    const Vec3& first = samples[order[k]].point;
+    const Vec3& last = samples[order[end - 1]].point;
+    if (vertical) {
+      if (end < order.size() && beyond(order[end], last))
+        c.top_m = std::max(c.top_m.value_or(0.0), top);
+    } else {
+      c.horizontal = true;
+      if (k > 0 && end < order.size() && beyond(order[k - 1], first) && beyond(order[end], last))
+        c.face_whole = true;
+    }
+    c.last_profile = profiles_;
+    k = end;
+  }
+  for (ObjectCandidate& c : candidates_) {
+    if (c.last_profile != profiles_) continue;
+    ++c.views;
+    const double extent = BoxDiagonal(c.points);
+    c.stable = extent > c.extent_m + p_.growth_m ? 0 : c.stable + 1;
+    if (c.stable == 0) c.extent_m = extent;
+  }
+  // Bounded memory: the objects met longest ago and never named go first.
+  constexpr std::size_t kMaxCandidates = 200;
+  while (candidates_.size() > kMaxCandidates) {
+    auto oldest = std::min_element(candidates_.begin(), candidates_.end(),
+                                   [](const ObjectCandidate& a, const ObjectCandidate& b) {
+                                     return a.last_profile < b.last_profile;
+                                   });
+    candidates_.erase(oldest);
+  }
+}
+
+std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
+  std::vector<spott_map::MapFeature> found;
+  for (ObjectCandidate& c : candidates_) {
+    if (!c.label.empty()) continue;
+    Footprint fp;
+    const bool out_of_view =
+        profiles_ - c.last_profile >= static_cast<std::uint64_t>(p_.quiet_profiles);
+    const ObjectModel* m = Classify(c, p_, &fp, out_of_view);
+    if (!m) continue;
+    c.label = m->label;
+    spott_map::MapFeature f;
+    f.type = m->type;
+    f.label = m->label;
+    f.pose = spott_map::Pose2{fp.centre.x(), fp.centre.y(), fp.yaw};
+    f.size_x = fp.long_m;
+    f.size_y = fp.short_m;
+    f.size_z = c.top_m.value_or(c.height_seen_m);
+    f.attributes["sensor"] = "quadris";
+    std::ostringstream how;
+    how << c.views << " profiles, " << c.points.size() << " cells"
+        << (c.top_m ? ", top seen" : ", top not seen");
+    f.attributes["recognized_from"] = how.str();
+    found.push_back(std::move(f));
+  }
+  return found;
+}
+
+}  // namespace spott_tr_plus::controller

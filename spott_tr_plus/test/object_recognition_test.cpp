@@ -1,0 +1,226 @@
+// Object recognition from range profiles (object_recognition.h), on profiles cast in a small
+// scene of upright boxes and cylinders like robot_sim's (profile_caster.h), the heads panned
+// across the object.
+#include "spott_tr_plus/controller/object_recognition.h"
+
+#include <gtest/gtest.h>
+
+#include "profile_caster.h"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using spott_map::FeatureType;
+using spott_map::Vec2;
+using spott_tr_plus::controller::Classify;
+using spott_tr_plus::controller::FitFootprint;
+using spott_tr_plus::controller::Footprint;
+using spott_tr_plus::controller::ObjectRecognizer;
+using spott_tr_plus::controller::ProfileSample;
+using spott_tr_plus::controller::RecognitionParameters;
+using spott_tr_plus::controller::ValidateParameters;
+using spott_tr_plus::controller::Vec3;
+using spott_tr_plus::test_scene::Cast;
+using spott_tr_plus::test_scene::kHeadZ;
+using spott_tr_plus::test_scene::Solid;
+
+// The heads at `at` pan across `toward` and back (+-0.8 rad, 0.05 rad steps): each step a
+// horizontal and a vertical profile, as CONTROL_THE_PTU's room pattern sweeps them.
+void Sweep(ObjectRecognizer& r, const std::vector<Solid>& scene, const Vec2& at,
+           const Vec2& toward) {
+  const Vec3 o(at.x(), at.y(), kHeadZ);
+  const double centre = std::atan2(toward.y() - at.y(), toward.x() - at.x());
+  for (int pass = 0; pass < 2; ++pass) {  // there and back: the extent stops growing
+    for (int k = 0; k <= 32; ++k) {
+      const double pan = centre + (pass == 0 ? -0.8 + 0.05 * k : 0.8 - 0.05 * k);
+      r.AddProfile(o, Cast(scene, o, pan, false), false);
+      r.AddProfile(o, Cast(scene, o, pan, true), true);
+    }
+  }
+}
+
+std::vector<spott_map::MapFeature> Recognise(const std::vector<Solid>& scene,
+                                             const std::vector<Vec2>& standpoints,
+                                             const spott_map::MapDatabase* db = nullptr) {
+  ObjectRecognizer r{RecognitionParameters{}};
+  r.SetMap(db);
+  std::vector<spott_map::MapFeature> all;
+  for (const Vec2& at : standpoints) {
+    Sweep(r, scene, at, scene.front().centre);
+    for (auto& f : r.Take()) all.push_back(std::move(f));
+  }
+  return all;
+}
+
+TEST(ObjectRecognition, AChairSeenFromOneSideIsAChairWithItsSizeAndHeight) {
+  const Solid chair{{6.0, 8.1}, 0.3, 0.5, 0.5, 0.9, false};
+  const auto found = Recognise({chair}, {{4.3, 8.0}});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "chair");
+  EXPECT_EQ(found[0].type, FeatureType::kGeonCuboid);
+  EXPECT_EQ(found[0].attributes.at("sensor"), "quadris");
+  EXPECT_NEAR(found[0].size_z, 0.9, 0.03);
+  EXPECT_LE(found[0].size_x, 0.75);
+  // One or two faces seen: the centre lies within half the chair's side.
+  EXPECT_LT((found[0].pose.Position() - chair.centre).norm(), 0.3);
+}
+
+TEST(ObjectRecognition, ADeskBelowTheHeadsIsADeskFromTheVerticalProfiles) {
+  const Solid desk{{2.5, 1.0}, 0.0, 1.6, 0.8, 0.75, false};
+  const auto found = Recognise({desk}, {{2.3, 2.9}});
+  if (found.empty()) {
+    ObjectRecognizer r{RecognitionParameters{}};
+    Sweep(r, {desk}, {2.3, 2.9}, desk.centre);
+    for (const auto& c : r.candidates())
+      ADD_FAILURE() << c.points.size() << " cells, views " << c.views << ", stable " << c.stable
+                    << ", seen " << c.height_seen_m << ", top " << c.top_m.value_or(-1)
+                    << ", horizontal " << c.horizontal << ", whole " << c.face_whole;
+  }
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "desk");
+  EXPECT_NEAR(found[0].size_z, 0.75, 0.03);
+  EXPECT_GT(found[0].size_x, 1.2);
+}
+
+TEST(ObjectRecognition, AHighBenchSeenEndOnIsADeskNotAChair) {
+  // cim_office's desk_lab_3: 2.0 x 0.9 m, 0.9 m high (a chair's height), its 0.9 m end ahead.
+  const Solid bench{{27.5, 12.0}, 0.0, 2.0, 0.9, 0.9, false};
+  const auto found = Recognise({bench}, {{25.2, 12.0}});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "desk");
+}
+
+TEST(ObjectRecognition, ADrumIsACylinderWithItsDiameter) {
+  const Solid drum{{16.0, 11.5}, 0.0, 0.6, 0.6, 0.9, true};
+  const auto found = Recognise({drum}, {{14.2, 11.0}});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "cylinder");
+  EXPECT_EQ(found[0].type, FeatureType::kGeonCylinder);
+  EXPECT_NEAR(found[0].size_x, 0.6, 0.08);
+  EXPECT_LT((found[0].pose.Position() - drum.centre).norm(), 0.08);
+}
+
+TEST(ObjectRecognition, ALowCrateIsACuboid) {
+  const Solid crate{{24.0, 13.0}, 0.4, 0.8, 0.6, 0.6, false};
+  const auto found = Recognise({crate}, {{22.4, 12.2}});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "cuboid");
+  EXPECT_NEAR(found[0].size_z, 0.6, 0.03);
+}
+
+TEST(ObjectRecognition, AShelfTallerThanTheHeadsSeeIsNotNamed) {
+  // Its top is never seen: not a chair, not a desk, not a cuboid of known height.
+  const Solid shelf{{0.3, 12.0}, 0.0, 0.4, 2.0, 2.0, false};
+  EXPECT_TRUE(Recognise({shelf}, {{2.0, 12.0}}).empty());
+}
+
+// cim_office's office_201 seen from its door (FIND, 2026-12-06): the shelf's face 3.96 m away,
+// the rays above 1.3 m out of the heads' 4 m range. A ray that ends at the range limit did not
+// pass over anything: that is no top, and no "cuboid" 1.3 m high.
+TEST(ObjectRecognition, RaysEndingAtTheRangeLimitDoNotSeeATop) {
+  const Solid shelf{{0.3, 12.0}, 0.0, 0.4, 2.0, 2.0, false};
+  const Vec2 at(0.5 + 3.96, 12.0);
+  EXPECT_TRUE(Recognise({shelf}, {at}).empty());
+  RecognitionParameters all_range;  // the echoes up to the limit used: still no top
+  all_range.max_range_m = 4.0;
+  ObjectRecognizer r{all_range};
+  Sweep(r, {shelf}, at, shelf.centre);
+  EXPECT_TRUE(r.Take().empty());
+  for (const auto& c : r.candidates()) EXPECT_FALSE(c.top_m.has_value());
+}
+
+TEST(ObjectRecognition, WhatTheMapHoldsIsNotAnObject) {
+  // A chair-sized block that is a CAD feature: its echoes are explained.
+  const Solid block{{6.0, 8.1}, 0.0, 0.5, 0.5, 0.9, false};
+  spott_map::MapDatabase db;
+  spott_map::MapFeature f;
+  f.id = "pillar";
+  f.type = FeatureType::kRectangle;
+  f.source = spott_map::FeatureSource::kCad;
+  f.pose = spott_map::Pose2{6.0, 8.1, 0.0};
+  f.size_x = f.size_y = 0.5;
+  ASSERT_TRUE(db.AddFeature(f));
+  EXPECT_TRUE(Recognise({block}, {{4.3, 8.0}}, &db).empty());
+  // The same block unmapped is named.
+  EXPECT_EQ(Recognise({block}, {{4.3, 8.0}}).size(), 1u);
+}
+
+TEST(ObjectRecognition, TwoObjectsApartAreTwoAndEachIsNamedOnce) {
+  const Solid chair{{6.0, 8.1}, 0.0, 0.5, 0.5, 0.9, false};
+  const Solid drum{{6.0, 6.6}, 0.0, 0.6, 0.6, 0.9, true};
+  ObjectRecognizer r{RecognitionParameters{}};
+  Sweep(r, {chair, drum}, {4.3, 7.3}, {6.0, 7.3});
+  auto found = r.Take();
+  ASSERT_EQ(found.size(), 2u);
+  std::vector<std::string> labels{found[0].label, found[1].label};
+  std::sort(labels.begin(), labels.end());
+  EXPECT_EQ(labels, (std::vector<std::string>{"chair", "cylinder"}));
+  Sweep(r, {chair, drum}, {4.3, 7.3}, {6.0, 7.3});
+  EXPECT_TRUE(r.Take().empty()) << "named again";
+  r.Forget();
+  EXPECT_TRUE(r.candidates().empty());
+}
+
+TEST(ObjectRecognition, ACandidateSeenTooLittleOrStillGrowingIsNotNamed) {
+  RecognitionParameters p;
+  spott_tr_plus::controller::ObjectCandidate c;
+  for (int i = 0; i < 20; ++i) c.points.emplace_back(6.0, 8.0 + 0.025 * i);  // a 0.5 m face
+  c.top_m = 0.9;
+  c.height_seen_m = 0.9;
+  c.views = 5;
+  c.stable = 5;
+  Footprint fp;
+  ASSERT_NE(Classify(c, p, &fp), nullptr);
+  EXPECT_EQ(Classify(c, p, &fp)->label, "chair");
+  c.stable = 0;  // its extent grew at the last view
+  EXPECT_EQ(Classify(c, p, &fp), nullptr);
+  c.stable = 5;
+  c.horizontal = true;  // met at the heads' height, never seen whole
+  EXPECT_EQ(Classify(c, p, &fp), nullptr);
+  c.face_whole = true;
+  EXPECT_NE(Classify(c, p, &fp), nullptr);
+  c.views = 1;
+  EXPECT_EQ(Classify(c, p, &fp), nullptr);
+}
+
+TEST(ObjectRecognition, FootprintOfATurnedRectangleAndOfAnArc) {
+  RecognitionParameters p;
+  std::vector<Vec2> rect;
+  const double yaw = 0.5;
+  const Vec2 u(std::cos(yaw), std::sin(yaw)), w(-u.y(), u.x());
+  for (int i = 0; i <= 40; ++i) rect.push_back(Vec2(1, 1) + u * (i * 0.04));  // 1.6 m side
+  for (int i = 0; i <= 20; ++i) rect.push_back(Vec2(1, 1) + w * (i * 0.04));  // 0.8 m side
+  const Footprint f = FitFootprint(rect, p);
+  EXPECT_FALSE(f.round);
+  EXPECT_NEAR(f.long_m, 1.6, 0.03);
+  EXPECT_NEAR(f.short_m, 0.8, 0.03);
+  EXPECT_NEAR(std::abs(spott_map::NormalizeAngle(f.yaw - yaw)), 0.0, 0.02);
+  std::vector<Vec2> arc;
+  for (int i = 0; i <= 30; ++i) {
+    const double a = -1.2 + 2.4 * i / 30;
+    arc.push_back(Vec2(5, 5) + 0.3 * Vec2(std::cos(a), std::sin(a)));
+  }
+  const Footprint c = FitFootprint(arc, p);
+  EXPECT_TRUE(c.round);
+  EXPECT_NEAR(c.radius_m, 0.3, 0.005);
+  EXPECT_NEAR((c.centre - Vec2(5, 5)).norm(), 0.0, 0.005);
+}
+
+TEST(ObjectRecognition, ParametersOutOfRangeAreNamed) {
+  RecognitionParameters p;
+  EXPECT_TRUE(ValidateParameters(p).empty());
+  p.cell_m = 0.0;
+  p.min_views = 0;
+  p.top_jump_m = std::nan("");
+  const auto v = ValidateParameters(p);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_NE(v[0].find("cell_m"), std::string::npos);
+  EXPECT_NE(v[1].find("top_jump_m"), std::string::npos);
+  EXPECT_NE(v[2].find("min_views"), std::string::npos);
+}
+
+}  // namespace
