@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+# SPOTT's FIND on the stack (issue 19: "`find chair` in cim_office reports a chair within 0.5 m
+# of a real one"): scenarios/cim_office_find_chair.yaml run whole as ./spott run runs it. The
+# TR+ controller visits the rooms of its schedule (Fig. 13), looks around in each, and ends when
+# QUADRIS's profiles recognise a chair (spott_tr_plus object_recognition.h). The report judges
+# the object the controller reports against the world file's objects; the body must not touch
+# anything on the way.
+import json
+import os
+import sys
+import tempfile
+import unittest
+
+import rospkg
+import rostest
+from workspace_tools import run_scenario
+
+PKG = 'spott_launch'
+SCENARIO = 'cim_office_find_chair.yaml'
+
+
+class Find(unittest.TestCase):
+    def test_find_chair_reports_a_real_chair(self):
+        scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
+        with tempfile.TemporaryDirectory() as d:
+            _, r = run_scenario(self, scenario, d, timeout_s=300)
+        legs = json.dumps(r.get('legs', []), indent=1)[:4000]
+        self.assertTrue(r['ok'], r.get('failure'))
+        self.assertEqual(len(r['legs']), 1, legs)
+        leg = r['legs'][0]
+        self.assertTrue(leg['reached'], legs)
+        self.assertIn('found', leg, legs)
+        self.assertEqual(leg['found']['label'], 'chair', legs)
+        self.assertLessEqual(leg['found']['nearest_of_kind_m'], 0.5, legs)
+        self.assertEqual(leg['body_contacts'], 0, legs)
+        self.assertEqual(leg['bumper_hits'], 0, legs)
+
+
+if __name__ == '__main__':
+    rostest.rosrun(PKG, 'find_test', Find, sys.argv)
