@@ -74,7 +74,9 @@ std::vector<ObjectModel> DefaultObjectModels() {
       {"cylinder", FeatureType::kGeonCylinder, true, 0.2, 1.2, 1.2, 0.3, 1.6},
       {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05},
       {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.65, 0.95},
-      {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.2, 1.2, 0.0},
+      // Taller than the heads see over: a thin one is a partition, a deeper one a shelf.
+      {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.15, 1.2, 0.0},
+      {"shelf", FeatureType::kGeonCuboid, false, 0.8, 3.0, 0.8, 1.3, 0.0},
       // Lower than a desk: a desk seen in part (a side shorter than a desk's) is not a cuboid.
       {"cuboid", FeatureType::kGeonCuboid, false, 0.2, 2.0, 2.0, 0.2, 0.65},
   };
@@ -96,6 +98,7 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
   if (!(p.top_flat_m >= 0 && std::isfinite(p.top_flat_m)))
     v.push_back(Violation("top_flat_m", ">= 0", p.top_flat_m));
   if (p.min_points < 3) v.push_back(Violation("min_points", ">= 3", p.min_points));
+  if (p.min_cell_hits < 1) v.push_back(Violation("min_cell_hits", ">= 1", p.min_cell_hits));
   if (p.min_views < 1) v.push_back(Violation("min_views", ">= 1", p.min_views));
   if (!(p.growth_m > 0 && std::isfinite(p.growth_m)))
     v.push_back(Violation("growth_m", "> 0", p.growth_m));
@@ -162,16 +165,18 @@ Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParamet
 
 const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameters& p, Footprint* fp,
                             bool out_of_view) {
-  if (static_cast<int>(c.points.size()) < p.min_points || c.views < p.min_views) return nullptr;
-  if (c.stable < p.stable_views && !out_of_view) return nullptr;
-  // A face met at the heads' height but never seen whole may go on beyond the profiles' field.
-  if (c.horizontal && !c.face_whole) return nullptr;
-  *fp = FitFootprint(c.points, p);
+  if (c.views < p.min_views || (c.stable < p.stable_views && !out_of_view)) return nullptr;
+  const std::vector<Vec2> cells = c.Confirmed(p.min_cell_hits);
+  if (static_cast<int>(cells.size()) < p.min_points) return nullptr;
+  *fp = FitFootprint(cells, p);
   if (fp->long_m > p.max_extent_m) return nullptr;
   for (const ObjectModel& m : p.models) {
     if (m.round != fp->round) continue;
     if (fp->long_m < m.min_long_m || fp->long_m > m.max_long_m || fp->short_m > m.max_short_m)
       continue;
+    // A face met at the heads' height but never seen whole may go on beyond the profiles'
+    // field; of the things taller than the heads see over, sides are lower bounds anyway.
+    if (m.max_height_m > 0 && c.horizontal && !c.face_whole) continue;
     if (m.max_height_m > 0) {
       if (!c.top_m || *c.top_m < m.min_height_m || *c.top_m > m.max_height_m) continue;
     } else if (c.height_seen_m < m.min_height_m) {
@@ -200,8 +205,24 @@ bool ObjectRecognizer::Known(const Vec2& p,
   return false;
 }
 
-void ObjectRecognizer::Add(ObjectCandidate& c, const Vec2& p) const {
-  if (c.cells.insert(CellKey(p, p_.cell_m)).second) c.points.push_back(p);
+std::vector<Vec2> ObjectCandidate::Confirmed(int min_hits) const {
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (hits[i] >= min_hits) out.push_back(points[i]);
+  }
+  return out;
+}
+
+void ObjectRecognizer::Add(ObjectCandidate& c, const Vec2& p, std::uint64_t profile) const {
+  const auto [it, added] = c.cells.emplace(CellKey(p, p_.cell_m), c.points.size());
+  if (added) {
+    c.points.push_back(p);
+    c.hits.push_back(1);
+    c.last_hit.push_back(profile);
+  } else if (c.last_hit[it->second] != profile) {
+    ++c.hits[it->second];
+    c.last_hit[it->second] = profile;
+  }
 }
 
 std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
@@ -223,7 +244,17 @@ std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
   ObjectCandidate& keep = candidates_[hits[0]];
   for (std::size_t k = hits.size(); k-- > 1;) {
     ObjectCandidate& other = candidates_[hits[k]];
-    for (const Vec2& q : other.points) Add(keep, q);
+    for (std::size_t i = 0; i < other.points.size(); ++i) {
+      const auto [it, added] =
+          keep.cells.emplace(CellKey(other.points[i], p_.cell_m), keep.points.size());
+      if (added) {
+        keep.points.push_back(other.points[i]);
+        keep.hits.push_back(other.hits[i]);
+        keep.last_hit.push_back(other.last_hit[i]);
+      } else {
+        keep.hits[it->second] += other.hits[i];
+      }
+    }
     keep.height_seen_m = std::max(keep.height_seen_m, other.height_seen_m);
     if (other.top_m) keep.top_m = std::max(keep.top_m.value_or(0.0), *other.top_m);
     keep.face_whole = keep.face_whole || other.face_whole;
@@ -298,7 +329,7 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
       top = std::max(top, samples[order[j]].point.z());
     }
     ObjectCandidate& c = candidates_[CandidateFor(run)];
-    for (const Vec2& q : run) Add(c, q);
+    for (const Vec2& q : run) Add(c, q, profiles_);
     c.height_seen_m = std::max(c.height_seen_m, top);
     const Vec3& first = samples[order[k]].point;
     const Vec3& last = samples[order[end - 1]].point;
@@ -350,8 +381,8 @@ std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
     f.size_z = c.top_m.value_or(c.height_seen_m);
     f.attributes["sensor"] = "quadris";
     std::ostringstream how;
-    how << c.views << " profiles, " << c.points.size() << " cells"
-        << (c.top_m ? ", top seen" : ", top not seen");
+    how << c.views << " profiles, " << c.Confirmed(p_.min_cell_hits).size() << " of "
+        << c.points.size() << " cells confirmed" << (c.top_m ? ", top seen" : ", top not seen");
     f.attributes["recognized_from"] = how.str();
     found.push_back(std::move(f));
   }

@@ -98,6 +98,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("recognition/top_jump_m", g.top_jump_m, "m");
   r.Get("recognition/top_flat_m", g.top_flat_m, "m");
   r.Get("recognition/min_points", g.min_points);
+  r.Get("recognition/min_cell_hits", g.min_cell_hits);
   r.Get("recognition/min_views", g.min_views);
   r.Get("recognition/growth_m", g.growth_m, "m");
   r.Get("recognition/stable_views", g.stable_views);

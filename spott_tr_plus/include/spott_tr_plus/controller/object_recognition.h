@@ -19,7 +19,8 @@
 // no profile has met it for `quiet_profiles`: the heads moved on). The rectangle around its
 // footprint whose sides the echoes lie on (or a circle when they lie on an arc) gives its
 // sides, and the first model whose side and height bands contain the object names it (chair,
-// desk, partition, cylinder, cuboid: the geons of [42] and the furniture of SPOTT's lab). The
+// desk, partition, shelf, cylinder, cuboid: the geons of [42] and the furniture of SPOTT's lab
+// and offices). The
 // sides seen are lower bounds of the real ones when only one face was seen, which is why a
 // model's bands are wide and height carries most of the decision.
 // ROS-free; the caller gives samples in the map frame.
@@ -29,7 +30,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "spott_map/map_database.h"
@@ -71,7 +72,8 @@ struct RecognitionParameters {
   double top_jump_m = 0.15;        ///< The ray above a run this much farther: the top seen (m).
   /// Successive echoes up a vertical profile this close in height lie on a flat top (m).
   double top_flat_m = 0.02;
-  int min_points = 12;     ///< Footprint cells needed, >= 3.
+  int min_points = 12;     ///< Footprint cells needed (confirmed ones), >= 3.
+  int min_cell_hits = 2;   ///< Profiles that must hit a cell to confirm it, >= 1.
   int min_views = 3;       ///< Profiles that saw the object, >= 1.
   double growth_m = 0.06;  ///< Extent growth that resets the stability count (m), > 0.
   int stable_views = 2;    ///< Views without growth before a verdict, >= 0.
@@ -98,12 +100,17 @@ struct Footprint {
 
 /// What has been seen of one object.
 struct ObjectCandidate {
-  std::vector<Vec2> points;                ///< Footprint cells' first echoes.
-  std::unordered_set<std::int64_t> cells;  ///< Their keys on the cell_m grid.
-  double height_seen_m = 0.0;              ///< Highest echo on it (m).
-  std::optional<double> top_m;             ///< Height where a ray was seen passing over it (m).
-  bool face_whole = false;                 ///< A horizontal run with both ends free.
-  bool horizontal = false;                 ///< A horizontal profile met it.
+  std::vector<Vec2> points;                             ///< Footprint cells' first echoes.
+  std::vector<int> hits;                                ///< How many profiles hit each of them.
+  std::vector<std::uint64_t> last_hit;                  ///< The last profile that did.
+  std::unordered_map<std::int64_t, std::size_t> cells;  ///< Key on the cell_m grid -> index.
+  /// The cells `min_hits` profiles hit: one profile placed with a wrong pose adds cells that
+  /// no other confirms (a chair 0.9 m long, so a desk, in a FIND run).
+  std::vector<Vec2> Confirmed(int min_hits) const;
+  double height_seen_m = 0.0;   ///< Highest echo on it (m).
+  std::optional<double> top_m;  ///< Height where a ray was seen passing over it (m).
+  bool face_whole = false;      ///< A horizontal run with both ends free.
+  bool horizontal = false;      ///< A horizontal profile met it.
   int views = 0;
   int stable = 0;                  ///< Views since its extent last grew.
   double extent_m = 0.0;           ///< Diagonal of its bounding box at the last view.
@@ -145,7 +152,8 @@ class ObjectRecognizer {
   bool Known(const Vec2& p, const std::vector<const spott_map::MapFeature*>& near) const;
   /// The index of the candidate `run` belongs to (merging those it bridges), or of a new one.
   std::size_t CandidateFor(const std::vector<Vec2>& run);
-  void Add(ObjectCandidate& c, const Vec2& p) const;
+  /// `profile`: the profile it came from (a cell counts each profile once).
+  void Add(ObjectCandidate& c, const Vec2& p, std::uint64_t profile) const;
 
   RecognitionParameters p_;
   const spott_map::MapDatabase* db_ = nullptr;
