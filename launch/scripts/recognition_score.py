@@ -3,8 +3,9 @@
 recorded runs (./spott run ... --out DIR writes DIR/run.bag) against the world file.
 
 Precision, per label: of the labelled features the controller kept in the map at the end of the
-run (/map_updates: added, less removed), those whose centre lies within --tolerance of a world
-object of the same kind (spott_map's kind names: chair, desk, cylinder, cuboid, partition,
+run (/map_updates: added, less removed), those whose centre lies within --tolerance of the
+footprint of a world object of the same kind (a partition 5 m long seen in part is named where
+it was seen, not at its middle) (spott_map's kind names: chair, desk, cylinder, cuboid, partition,
 shelf). Recall, per kind: of the world objects the robot was near, in the same room, within
 --reach of its centre on the ground truth (/sim/ground_truth) for at least one second, those
 matched by a feature of their kind. A wrong label is counted under the label given.
@@ -32,6 +33,18 @@ def room_of(p, rooms):
         if inside(p, r["polygon"]):
             return r["id"]
     return None
+
+
+def footprint_distance(p, o):
+    """From p to the object's footprint (0 inside): a box turned by its yaw, or a circle."""
+    x, y, yaw = o["pose"]
+    sx, sy = o["size"]
+    dx, dy = p[0] - x, p[1] - y
+    if o["kind"] == "cylinder":
+        return max(0.0, math.hypot(dx, dy) - sx / 2)
+    u = math.cos(yaw) * dx + math.sin(yaw) * dy
+    w = -math.sin(yaw) * dx + math.cos(yaw) * dy
+    return math.hypot(max(0.0, abs(u) - sx / 2), max(0.0, abs(w) - sy / 2))
 
 
 def score(bag_path, world, reach, tolerance):
@@ -66,7 +79,7 @@ def score(bag_path, world, reach, tolerance):
     for label, x, y in kept.values():
         best = None
         for o in objects:
-            d = math.dist((x, y), o["pose"][:2])
+            d = footprint_distance((x, y), o)
             if o["kind"] == label and d <= tolerance and (best is None or d < best[0]):
                 best = (d, o["id"])
         results.append((label, best is not None))

@@ -71,14 +71,16 @@ std::vector<ObjectModel> DefaultObjectModels() {
   // The bands hold the objects of the shipped worlds with what one view shows of them (a chair's
   // single face, a desk's short end): sides are lower bounds, heights are measured.
   return {
-      {"cylinder", FeatureType::kGeonCylinder, true, 0.2, 1.2, 1.2, 0.3, 1.6},
-      {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05},
-      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.65, 0.95},
+      {"cylinder", FeatureType::kGeonCylinder, true, 0.2, 1.2, 1.2, 0.3, 1.6, 0.0},
+      // A chair's seat is about square; a desk is about 0.8 m deep.
+      {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05, 0.5},
+      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.65, 0.95, 0.8},
       // Taller than the heads see over: a thin one is a partition, a deeper one a shelf.
-      {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.15, 1.2, 0.0},
-      {"shelf", FeatureType::kGeonCuboid, false, 0.8, 3.0, 0.8, 1.3, 0.0},
+      // (the lab's 0.08 m partition measured 0.09-0.2 m thick from the moving robot).
+      {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.25, 1.2, 0.0, 0.0},
+      {"shelf", FeatureType::kGeonCuboid, false, 0.8, 3.0, 0.8, 1.3, 0.0, 0.0},
       // Lower than a desk: a desk seen in part (a side shorter than a desk's) is not a cuboid.
-      {"cuboid", FeatureType::kGeonCuboid, false, 0.2, 2.0, 2.0, 0.2, 0.65},
+      {"cuboid", FeatureType::kGeonCuboid, false, 0.2, 2.0, 2.0, 0.2, 0.65, 0.0},
   };
 }
 
@@ -98,7 +100,8 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
   if (!(p.top_flat_m >= 0 && std::isfinite(p.top_flat_m)))
     v.push_back(Violation("top_flat_m", ">= 0", p.top_flat_m));
   if (p.min_points < 3) v.push_back(Violation("min_points", ">= 3", p.min_points));
-  if (p.min_cell_hits < 1) v.push_back(Violation("min_cell_hits", ">= 1", p.min_cell_hits));
+  if (p.min_cell_hits < 1 || p.min_cell_hits > 3)
+    v.push_back(Violation("min_cell_hits", "in [1, 3]", p.min_cell_hits));
   if (p.min_views < 1) v.push_back(Violation("min_views", ">= 1", p.min_views));
   if (!(p.growth_m > 0 && std::isfinite(p.growth_m)))
     v.push_back(Violation("growth_m", "> 0", p.growth_m));
@@ -166,7 +169,7 @@ Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParamet
 const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameters& p, Footprint* fp,
                             bool out_of_view) {
   if (c.views < p.min_views || (c.stable < p.stable_views && !out_of_view)) return nullptr;
-  const std::vector<Vec2> cells = c.Confirmed(p.min_cell_hits);
+  const std::vector<Vec2> cells = c.Confirmed(p.min_cell_hits, p.cell_m);
   if (static_cast<int>(cells.size()) < p.min_points) return nullptr;
   *fp = FitFootprint(cells, p);
   if (fp->long_m > p.max_extent_m) return nullptr;
@@ -205,24 +208,36 @@ bool ObjectRecognizer::Known(const Vec2& p,
   return false;
 }
 
-std::vector<Vec2> ObjectCandidate::Confirmed(int min_hits) const {
-  std::vector<Vec2> out;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (hits[i] >= min_hits) out.push_back(points[i]);
+void ObjectCandidate::Hit(const Vec2& p, std::uint64_t profile, double cell_m) {
+  const auto [it, added] = cells.emplace(CellKey(p, cell_m), points.size());
+  if (added) {
+    points.push_back(p);
+    seen_by.push_back({profile, 0, 0});
+    return;
   }
-  return out;
+  auto& ids = seen_by[it->second];
+  if (std::find(ids.begin(), ids.end(), profile) != ids.end()) return;
+  ids = {profile, ids[0], ids[1]};  // the newest three
 }
 
-void ObjectRecognizer::Add(ObjectCandidate& c, const Vec2& p, std::uint64_t profile) const {
-  const auto [it, added] = c.cells.emplace(CellKey(p, p_.cell_m), c.points.size());
-  if (added) {
-    c.points.push_back(p);
-    c.hits.push_back(1);
-    c.last_hit.push_back(profile);
-  } else if (c.last_hit[it->second] != profile) {
-    ++c.hits[it->second];
-    c.last_hit[it->second] = profile;
+std::vector<Vec2> ObjectCandidate::Confirmed(int min_hits, double cell_m) const {
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::array<std::uint64_t, 27> ids{};
+    std::size_t n = 0;
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find(CellKey(points[i] + cell_m * Vec2(dx, dy), cell_m));
+        if (it == cells.end()) continue;
+        for (std::uint64_t id : seen_by[it->second]) {
+          if (id != 0 && std::find(ids.begin(), ids.begin() + n, id) == ids.begin() + n)
+            ids[n++] = id;
+        }
+      }
+    }
+    if (static_cast<int>(n) >= min_hits) out.push_back(points[i]);
   }
+  return out;
 }
 
 std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
@@ -245,14 +260,8 @@ std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
   for (std::size_t k = hits.size(); k-- > 1;) {
     ObjectCandidate& other = candidates_[hits[k]];
     for (std::size_t i = 0; i < other.points.size(); ++i) {
-      const auto [it, added] =
-          keep.cells.emplace(CellKey(other.points[i], p_.cell_m), keep.points.size());
-      if (added) {
-        keep.points.push_back(other.points[i]);
-        keep.hits.push_back(other.hits[i]);
-        keep.last_hit.push_back(other.last_hit[i]);
-      } else {
-        keep.hits[it->second] += other.hits[i];
+      for (std::uint64_t id : other.seen_by[i]) {
+        if (id != 0) keep.Hit(other.points[i], id, p_.cell_m);
       }
     }
     keep.height_seen_m = std::max(keep.height_seen_m, other.height_seen_m);
@@ -329,7 +338,7 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
       top = std::max(top, samples[order[j]].point.z());
     }
     ObjectCandidate& c = candidates_[CandidateFor(run)];
-    for (const Vec2& q : run) Add(c, q, profiles_);
+    for (const Vec2& q : run) c.Hit(q, profiles_, p_.cell_m);
     c.height_seen_m = std::max(c.height_seen_m, top);
     const Vec3& first = samples[order[k]].point;
     const Vec3& last = samples[order[end - 1]].point;
@@ -342,6 +351,7 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
         c.face_whole = true;
     }
     c.last_profile = profiles_;
+    c.viewer = origin.head<2>();
     k = end;
   }
   for (ObjectCandidate& c : candidates_) {
@@ -372,6 +382,13 @@ std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
     const ObjectModel* m = Classify(c, p_, &fp, out_of_view);
     if (!m) continue;
     c.label = m->label;
+    if (!fp.round && fp.short_m < m->depth_m) {
+      // One face seen: the object goes on behind it, away from the heads.
+      Vec2 normal(-std::sin(fp.yaw), std::cos(fp.yaw));
+      if (normal.dot(fp.centre - c.viewer) < 0) normal = -normal;
+      fp.centre += normal * (m->depth_m - fp.short_m) / 2;
+      fp.short_m = m->depth_m;
+    }
     spott_map::MapFeature f;
     f.type = m->type;
     f.label = m->label;
@@ -381,7 +398,7 @@ std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
     f.size_z = c.top_m.value_or(c.height_seen_m);
     f.attributes["sensor"] = "quadris";
     std::ostringstream how;
-    how << c.views << " profiles, " << c.Confirmed(p_.min_cell_hits).size() << " of "
+    how << c.views << " profiles, " << c.Confirmed(p_.min_cell_hits, p_.cell_m).size() << " of "
         << c.points.size() << " cells confirmed" << (c.top_m ? ", top seen" : ", top not seen");
     f.attributes["recognized_from"] = how.str();
     found.push_back(std::move(f));

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -58,6 +59,9 @@ struct ObjectModel {
   double min_height_m = 0.0;
   /// <= 0: taller than the heads see over; the height seen must only reach min_height_m.
   double max_height_m = 0.0;
+  /// The short side assumed when less of it was seen (one face only): the footprint grows to it
+  /// away from where the heads saw it, so that the centre is not on the face (m; 0: none).
+  double depth_m = 0.0;
 };
 
 /// The furniture of SPOTT's lab and offices and the geons of [42], in the order tried.
@@ -73,7 +77,7 @@ struct RecognitionParameters {
   /// Successive echoes up a vertical profile this close in height lie on a flat top (m).
   double top_flat_m = 0.02;
   int min_points = 12;     ///< Footprint cells needed (confirmed ones), >= 3.
-  int min_cell_hits = 2;   ///< Profiles that must hit a cell to confirm it, >= 1.
+  int min_cell_hits = 2;   ///< Profiles that must hit a cell (or a neighbour), in [1, 3].
   int min_views = 3;       ///< Profiles that saw the object, >= 1.
   double growth_m = 0.06;  ///< Extent growth that resets the stability count (m), > 0.
   int stable_views = 2;    ///< Views without growth before a verdict, >= 0.
@@ -100,13 +104,17 @@ struct Footprint {
 
 /// What has been seen of one object.
 struct ObjectCandidate {
-  std::vector<Vec2> points;                             ///< Footprint cells' first echoes.
-  std::vector<int> hits;                                ///< How many profiles hit each of them.
-  std::vector<std::uint64_t> last_hit;                  ///< The last profile that did.
+  std::vector<Vec2> points;  ///< Footprint cells' first echoes.
+  /// The last three distinct profiles that hit each of them (0: none).
+  std::vector<std::array<std::uint64_t, 3>> seen_by;
   std::unordered_map<std::int64_t, std::size_t> cells;  ///< Key on the cell_m grid -> index.
-  /// The cells `min_hits` profiles hit: one profile placed with a wrong pose adds cells that
-  /// no other confirms (a chair 0.9 m long, so a desk, in a FIND run).
-  std::vector<Vec2> Confirmed(int min_hits) const;
+  /// Records an echo at `p` from `profile` (> 0) on the `cell_m` grid.
+  void Hit(const Vec2& p, std::uint64_t profile, double cell_m);
+  /// The cells that `min_hits` (<= 3) distinct profiles hit, counted over each cell and its
+  /// eight neighbours (a moving robot's profiles scatter a face's echoes by a cell or so). One
+  /// profile placed with a wrong pose adds cells no other confirms: in a FIND run such a line
+  /// made a chair 0.9 m long, so a desk.
+  std::vector<Vec2> Confirmed(int min_hits, double cell_m) const;
   double height_seen_m = 0.0;   ///< Highest echo on it (m).
   std::optional<double> top_m;  ///< Height where a ray was seen passing over it (m).
   bool face_whole = false;      ///< A horizontal run with both ends free.
@@ -115,6 +123,7 @@ struct ObjectCandidate {
   int stable = 0;                  ///< Views since its extent last grew.
   double extent_m = 0.0;           ///< Diagonal of its bounding box at the last view.
   std::uint64_t last_profile = 0;  ///< The last profile that met it.
+  Vec2 viewer{0.0, 0.0};           ///< Where the heads were for that profile (map).
   std::string label;               ///< Recognised as ("": not yet).
 };
 
@@ -152,8 +161,6 @@ class ObjectRecognizer {
   bool Known(const Vec2& p, const std::vector<const spott_map::MapFeature*>& near) const;
   /// The index of the candidate `run` belongs to (merging those it bridges), or of a new one.
   std::size_t CandidateFor(const std::vector<Vec2>& run);
-  /// `profile`: the profile it came from (a cell counts each profile once).
-  void Add(ObjectCandidate& c, const Vec2& p, std::uint64_t profile) const;
 
   RecognitionParameters p_;
   const spott_map::MapDatabase* db_ = nullptr;
