@@ -78,7 +78,7 @@ std::vector<ObjectModel> DefaultObjectModels() {
       // Taller than the heads see over: a thin one is a partition, a deeper one a shelf.
       // (the lab's 0.08 m partition measured 0.09-0.2 m thick from the moving robot).
       {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.25, 1.2, 0.0, 0.0},
-      {"shelf", FeatureType::kGeonCuboid, false, 0.8, 3.0, 0.8, 1.3, 0.0, 0.0},
+      {"shelf", FeatureType::kGeonCuboid, false, 0.8, 3.0, 0.8, 1.3, 0.0, 0.0, 0.25},
       // Lower than a desk: a desk seen in part (a side shorter than a desk's) is not a cuboid.
       {"cuboid", FeatureType::kGeonCuboid, false, 0.2, 2.0, 2.0, 0.2, 0.65, 0.0},
   };
@@ -175,7 +175,8 @@ const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameter
   if (fp->long_m > p.max_extent_m) return nullptr;
   for (const ObjectModel& m : p.models) {
     if (m.round != fp->round) continue;
-    if (fp->long_m < m.min_long_m || fp->long_m > m.max_long_m || fp->short_m > m.max_short_m)
+    if (fp->long_m < m.min_long_m || fp->long_m > m.max_long_m || fp->short_m > m.max_short_m ||
+        fp->short_m < m.min_short_m)
       continue;
     // A face met at the heads' height but never seen whole may go on beyond the profiles'
     // field; of the things taller than the heads see over, sides are lower bounds anyway.

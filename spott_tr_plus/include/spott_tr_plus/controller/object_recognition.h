@@ -62,18 +62,21 @@ struct ObjectModel {
   /// The short side assumed when less of it was seen (one face only): the footprint grows to it
   /// away from where the heads saw it, so that the centre is not on the face (m; 0: none).
   double depth_m = 0.0;
+  /// The short side seen must reach this (m): a shelf shows some depth, a wall seen 0.2 m off
+  /// (the estimate's error) shows none.
+  double min_short_m = 0.0;
 };
 
 /// The furniture of SPOTT's lab and offices and the geons of [42], in the order tried.
 std::vector<ObjectModel> DefaultObjectModels();
 
 struct RecognitionParameters {
-  double cell_m = 0.03;            ///< Footprint grid (m), in [0.005, 0.2].
-  double cluster_gap_m = 0.2;      ///< Echoes this close belong to one object (m), > cell_m.
-  double known_tolerance_m = 0.2;  ///< Echoes this close to a known feature are it (m), >= 0.
-  double floor_m = 0.05;           ///< Echoes lower than this are the floor (m).
-  double max_range_m = 3.5;        ///< Echoes farther from the head are not used (m), > 0.
-  double top_jump_m = 0.15;        ///< The ray above a run this much farther: the top seen (m).
+  double cell_m = 0.03;             ///< Footprint grid (m), in [0.005, 0.2].
+  double cluster_gap_m = 0.2;       ///< Echoes this close belong to one object (m), > cell_m.
+  double known_tolerance_m = 0.25;  ///< Echoes this close to a known feature are it (m), >= 0.
+  double floor_m = 0.05;            ///< Echoes lower than this are the floor (m).
+  double max_range_m = 3.5;         ///< Echoes farther from the head are not used (m), > 0.
+  double top_jump_m = 0.15;         ///< The ray above a run this much farther: the top seen (m).
   /// Successive echoes up a vertical profile this close in height lie on a flat top (m).
   double top_flat_m = 0.02;
   int min_points = 12;     ///< Footprint cells needed (confirmed ones), >= 3.
