@@ -139,6 +139,16 @@ TEST(ObjectRecognition, RaysEndingAtTheRangeLimitDoNotSeeATop) {
   for (const auto& c : r.candidates()) EXPECT_FALSE(c.top_m.has_value());
 }
 
+// The footprint grid's keys of negative cells (controller_messages_fuzz found a negative index
+// shifted left: undefined): a chair south-west of the map's origin is a chair as well.
+TEST(ObjectRecognition, AChairAtNegativeCoordinatesIsAChair) {
+  const Solid chair{{-6.0, -8.1}, 0.3, 0.5, 0.5, 0.9, false};
+  const auto found = Recognise({chair}, {{-7.7, -8.2}});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "chair");
+  EXPECT_LT((found[0].pose.Position() - chair.centre).norm(), 0.1);
+}
+
 TEST(ObjectRecognition, WhatTheMapHoldsIsNotAnObject) {
   // A chair-sized block that is a CAD feature: its echoes are explained.
   const Solid block{{6.0, 8.1}, 0.0, 0.5, 0.5, 0.9, false};

@@ -15,10 +15,14 @@ namespace {
 
 using spott_map::FeatureType;
 
+// Unsigned arithmetic: a negative index shifted left is undefined (the fuzzer found it); the
+// indices are clamped so that any finite point has one.
 std::int64_t CellKey(const Vec2& p, double cell) {
-  const auto ix = static_cast<std::int64_t>(std::floor(p.x() / cell));
-  const auto iy = static_cast<std::int64_t>(std::floor(p.y() / cell));
-  return (ix << 32) ^ (iy & 0xffffffff);
+  const auto index = [cell](double v) {
+    return static_cast<std::uint64_t>(
+        static_cast<std::int64_t>(std::clamp(std::floor(v / cell), -2e9, 2e9)));
+  };
+  return static_cast<std::int64_t>((index(p.x()) << 32) ^ (index(p.y()) & 0xffffffffULL));
 }
 
 double BoxDiagonal(const std::vector<Vec2>& points) {
