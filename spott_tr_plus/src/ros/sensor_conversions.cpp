@@ -66,21 +66,15 @@ std::optional<std::vector<Vec2>> ProfilePoints(const spott_msgs::RangeProfile& m
                                                const geometry_msgs::Transform& head,
                                                double min_height_m, double max_height_m,
                                                Vec2* origin) {
-  std::vector<Vec2> points;
-  const auto& q = head.rotation;
-  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
-  const Eigen::Vector3d from(head.translation.x, head.translation.y, head.translation.z);
+  controller::Vec3 from;
+  const auto samples = ProfileSamples(msg, head, &from);
+  if (!samples) return std::nullopt;
   *origin = Vec2(from.x(), from.y());
-  if (!from.allFinite() || !rotation.coeffs().allFinite() || rotation.norm() < 1e-6)
-    return std::nullopt;
   // In 3-D: a head tilted down sees the floor, which is no obstacle.
-  const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
-  for (std::size_t i = 0; i < msg.points.size(); ++i) {
-    if (i < msg.ranges.size() && !(msg.ranges[i] < msg.max_range - 1e-3)) continue;
-    const Eigen::Vector3d p =
-        from + r * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
-    if (!p.allFinite() || p.z() < min_height_m || p.z() > max_height_m) continue;
-    points.emplace_back(p.x(), p.y());
+  std::vector<Vec2> points;
+  for (const controller::ProfileSample& s : *samples) {
+    if (s.echo && s.point.allFinite() && s.point.z() >= min_height_m && s.point.z() <= max_height_m)
+      points.emplace_back(s.point.x(), s.point.y());
   }
   return points;
 }

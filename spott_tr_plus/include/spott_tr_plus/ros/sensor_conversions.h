@@ -35,8 +35,9 @@ std::vector<double> PressedAngles(const spott_msgs::BumperRing& msg);
 
 /// A horizontal profile's points that hit something between `min_height_m` and `max_height_m`
 /// above the base, in the base frame (x, y), with `head` the head's pose in the base frame; the
-/// head's origin in `*origin`. Points at max range (no echo), not finite or out of that height
-/// band are left out. nullopt when the head's pose is not finite (or a zero quaternion).
+/// head's origin in `*origin`. Points at max range or without a range (no echo), not finite or
+/// out of that height band are left out. nullopt when the head's pose is not finite (or a zero
+/// quaternion). ProfileSamples' echoes, in 2-D.
 std::optional<std::vector<Vec2>> ProfilePoints(const spott_msgs::RangeProfile& msg,
                                                const geometry_msgs::Transform& head,
                                                double min_height_m, double max_height_m,
