@@ -78,7 +78,10 @@ std::vector<ObjectModel> DefaultObjectModels() {
       {"cylinder", FeatureType::kGeonCylinder, true, 0.2, 1.2, 1.2, 0.3, 1.6, 0.0},
       // A chair's seat is about square; a desk is about 0.8 m deep.
       {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05, 0.5},
-      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.65, 0.95, 0.8},
+      // Below a chair's height a part of a desk is a desk (one seen behind a chair, or in
+      // passing, shows 0.4-0.7 m of its face); at a chair's height only a longer side tells.
+      {"desk", FeatureType::kGeonCuboid, false, 0.4, 3.2, 1.5, 0.65, 0.8, 0.8},
+      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.8, 0.95, 0.8},
       // Taller than the heads see over: a thin one is a partition, a deeper one a shelf.
       // (the lab's 0.08 m partition measured 0.09-0.2 m thick from the moving robot).
       {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.25, 1.2, 0.0, 0.0},
