@@ -93,7 +93,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--world", required=True)
     parser.add_argument("--reach", type=float, default=3.0)
-    parser.add_argument("--tolerance", type=float, default=0.5)
+    parser.add_argument("--tolerance", type=float, default=0.25)
     parser.add_argument("bags", nargs="+")
     args = parser.parse_args()
     with open(args.world) as f:
