@@ -4,11 +4,13 @@
 # TR+ controller visits the rooms of its schedule (Fig. 13), looks around in each, and ends when
 # QUADRIS's profiles recognise a chair (spott_tr_plus object_recognition.h). The report judges
 # the object the controller reports against the world file's objects; the body must not touch
-# anything on the way.
+# anything on the way. A failing run's bag is kept in ~/.ros/log (CI keeps no other trace).
 import json
 import os
+import shutil
 import sys
 import tempfile
+import time
 import unittest
 
 import rospkg
@@ -23,7 +25,16 @@ class Find(unittest.TestCase):
     def test_find_chair_reports_a_real_chair(self):
         scenario = os.path.join(rospkg.RosPack().get_path(PKG), 'scenarios', SCENARIO)
         with tempfile.TemporaryDirectory() as d:
-            _, r = run_scenario(self, scenario, d, timeout_s=300)
+            bag = os.path.join(d, 'run.bag')
+            _, r = run_scenario(self, scenario, d, extra_args=['bag:=' + bag], timeout_s=300)
+            leg = (r.get('legs') or [{}])[0]
+            if not leg.get('reached') and os.path.exists(bag):
+                # A miss keeps its run for reading (the labels the controller gave, where it
+                # looked): ~/.ros/log/find_test_<time>.bag.
+                kept = os.path.join(os.path.expanduser('~/.ros/log'),
+                                    'find_test_%d.bag' % int(time.time()))
+                shutil.copy(bag, kept)
+                print('find_test: the failing run is kept in ' + kept)
         legs = json.dumps(r.get('legs', []), indent=1)[:4000]
         self.assertTrue(r['ok'], r.get('failure'))
         self.assertEqual(len(r['legs']), 1, legs)
