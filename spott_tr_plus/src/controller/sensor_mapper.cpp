@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <sstream>
+#include <unordered_set>
 
 #include <Eigen/Eigenvalues>
 
@@ -20,7 +21,8 @@ enum Flag : std::uint8_t {
   kDoor = 4,        // in a door opening's zone
   kOutside = 8,     // outside every room
   kConfirmed = 16,  // confirmed (sent to Take once)
-  kNear = 32        // within near_miss_m of a map feature (kKnown's band and beyond it)
+  kNear = 32,       // within near_miss_m of a map feature (kKnown's band and beyond it)
+  kOwn = 64         // within known_tolerance_m of a feature this mapper made
 };
 
 }  // namespace
@@ -108,6 +110,7 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db, const std::optional<
     width_ = std::max(1, static_cast<int>(std::ceil((box.max.x() - box.min.x()) / p_.cell_m)));
     height_ = std::max(1, static_cast<int>(std::ceil((box.max.y() - box.min.y()) / p_.cell_m)));
     score_.assign(static_cast<std::size_t>(width_) * height_, 0);
+    echoes_.assign(score_.size(), EchoMean{});
     flags_.assign(score_.size(), 0);
     have_map_ = true;
   }
@@ -136,19 +139,35 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db, const std::optional<
     static_drawn_ = true;
   }
   // What the map holds now: known (within the tolerance of a feature or a closed door) and
-  // blocked (an obstacle meets the cell).
+  // blocked (an obstacle meets the cell). The mapper's own features are neither: its echoes
+  // keep voting there, so that a wall seen bit by bit grows into one segment (Take re-fuses
+  // the whole cluster) instead of a row of points each hiding the next echoes.
   spott_map::OccupancyRaster known(origin_, width_, height_, p_.cell_m);
   spott_map::OccupancyRaster blocked(origin_, width_, height_, p_.cell_m);
   spott_map::OccupancyRaster near(origin_, width_, height_, p_.cell_m);
-  spott_map::RasterizeDatabase(db, p_.known_tolerance_m, 0.05, known);
-  spott_map::RasterizeDatabase(db, 0.0, 0.05, blocked);
-  if (p_.near_miss_m > p_.known_tolerance_m)
-    spott_map::RasterizeDatabase(db, p_.near_miss_m, 0.05, near);
+  spott_map::OccupancyRaster own(origin_, width_, height_, p_.cell_m);
+  const bool near_check = p_.near_miss_m > p_.known_tolerance_m;
+  const auto draw = [&](const spott_map::MapFeature& f) {
+    if (IsOwn(f)) {
+      spott_map::RasterizeFeature(f, p_.known_tolerance_m, own);
+    } else {
+      spott_map::RasterizeFeature(f, p_.known_tolerance_m, known);
+      spott_map::RasterizeFeature(f, 0.0, blocked);
+    }
+    if (near_check) spott_map::RasterizeFeature(f, p_.near_miss_m, near);
+  };
+  const spott_map::Box area = known.Bounds().Inflated(p_.near_miss_m + p_.cell_m);
+  for (const spott_map::MapFeature* f : db.FeaturesIn(area)) draw(*f);
+  for (const spott_map::Door& door : db.graph().doors()) {
+    if (door.state != spott_map::DoorState::kClosed) continue;
+    draw(spott_map::MakeSegment(door.id, door.opening, "door", 0.05));
+  }
   for (int iy = 0; iy < height_; ++iy) {
     for (int ix = 0; ix < width_; ++ix) {
       std::uint8_t& f = flags_[Index(ix, iy)];
       f &= static_cast<std::uint8_t>(kConfirmed | kDoor | kOutside);
       if (known.at(ix, iy) != spott_map::Cell::kFree) f |= kKnown;
+      if (own.at(ix, iy) != spott_map::Cell::kFree) f |= kOwn;
       if (near.at(ix, iy) != spott_map::Cell::kFree) f |= kNear;
       if (blocked.at(ix, iy) == spott_map::Cell::kObstacle) f |= kBlocked;
     }
@@ -219,12 +238,12 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
   // a known obstacle (a door's jamb, a wall met obliquely) at that range within the cone
   // explains it. Placed on the axis it would be a phantom in free space beside the jamb.
   if (ArcMeetsKnown(from, angle, range, half_cone)) return;
-  const Vec2 h = from + range * dir;
   int ix, iy;
-  if (!CellOf(h, &ix, &iy)) return;
+  if (!CellOf(from + range * dir, &ix, &iy)) return;
   const std::size_t index = Index(ix, iy);
   if (flags_[index] & (kKnown | kBlocked | kDoor | kOutside)) return;
   score_[index] = static_cast<std::int8_t>(std::min(p_.max_score, score_[index] + hit));
+  echoes_[index].Add(from + range * dir);
   if (score_[index] >= p_.confirm_score && !(flags_[index] & kConfirmed)) {
     flags_[index] |= kConfirmed;
     pending_.emplace_back(ix, iy);
@@ -319,7 +338,7 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
       if (!CellOf(to_map(p), &ix, &iy)) continue;
       const std::uint8_t f = flags_[Index(ix, iy)];
       if (f & kDoor) continue;  // a leaf the map does not know of is no pose error
-      if (f & kKnown) {
+      if (f & (kKnown | kOwn)) {
         ++on;
       } else if (f & kNear) {
         ++off;
@@ -351,55 +370,111 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
 
 void SensorMapper::Forget() {
   std::fill(score_.begin(), score_.end(), 0);
+  std::fill(echoes_.begin(), echoes_.end(), EchoMean{});
   for (std::uint8_t& f : flags_) f &= static_cast<std::uint8_t>(~kConfirmed);
   pending_.clear();
   for (auto& [id, votes] : door_votes_) votes = 0;
 }
 
+bool SensorMapper::IsOwn(const spott_map::MapFeature& f) const {
+  if (f.source != spott_map::FeatureSource::kSensed) return false;
+  if (f.type != spott_map::FeatureType::kLineSegment && f.type != spott_map::FeatureType::kPoint)
+    return false;
+  const auto it = f.attributes.find("sensor");
+  return it != f.attributes.end() && it->second == sensor_;
+}
+
 SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
   SensedBatch batch;
   if (!have_map_) return batch;
-  // Cells that the map has come to hold meanwhile (a feature added from another sensor) are
-  // already there.
-  std::vector<Vec2> cells;
-  for (const auto& [ix, iy] : pending_) {
-    const Vec2 c = origin_ + p_.cell_m * Vec2(ix + 0.5, iy + 0.5);
-    bool known = false;
-    const spott_map::Box around{c - Vec2::Constant(p_.known_tolerance_m),
-                                c + Vec2::Constant(p_.known_tolerance_m)};
-    for (const spott_map::MapFeature* f : db.FeaturesIn(around)) {
-      if (f->DistanceTo(c) <= p_.known_tolerance_m) {
-        known = true;
-        break;
-      }
-    }
-    if (!known) cells.push_back(c);
-  }
-  pending_.clear();
-  // Clusters of cells within cluster_gap_m of each other, each fused into segments.
-  std::vector<bool> used(cells.size(), false);
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (used[i]) continue;
-    std::vector<Vec2> cluster;
-    std::deque<std::size_t> queue{i};
-    used[i] = true;
+  const double tol = p_.known_tolerance_m;
+  // A cell another feature explains (another sensor's, a recognised object, a contact) is that
+  // feature's: the map holds it already.
+  const auto explained = [&](const Vec2& c) {
+    for (const spott_map::MapFeature* f : db.FeaturesIn({c - Vec2(tol, tol), c + Vec2(tol, tol)}))
+      if (!IsOwn(*f) && f->DistanceTo(c) <= tol) return true;
+    return false;
+  };
+  const auto centre = [&](std::size_t i) -> Vec2 {
+    return origin_ + p_.cell_m * Vec2(i % width_ + 0.5, i / width_ + 0.5);
+  };
+  // Each newly confirmed cell's cluster: every confirmed cell within cluster_gap_m of another,
+  // old ones included. The cluster is fused anew and replaces the mapper's features it covers,
+  // so a wall confirmed over many readings ends as one segment, refined as evidence comes.
+  const int reach = static_cast<int>(std::ceil(p_.cluster_gap_m / p_.cell_m - 1e-9));
+  std::unordered_set<std::size_t> visited;
+  std::vector<std::string> replaced;
+  for (const auto& [sx, sy] : pending_) {
+    const std::size_t seed = Index(sx, sy);
+    if (visited.count(seed)) continue;
+    std::vector<std::size_t> cluster;
+    std::deque<std::size_t> queue{seed};
+    visited.insert(seed);
     while (!queue.empty()) {
       const std::size_t k = queue.front();
       queue.pop_front();
-      cluster.push_back(cells[k]);
-      for (std::size_t j = 0; j < cells.size(); ++j) {
-        if (!used[j] && (cells[j] - cells[k]).norm() <= p_.cluster_gap_m) {
-          used[j] = true;
+      if (explained(centre(k))) continue;
+      cluster.push_back(k);
+      const int kx = static_cast<int>(k % width_), ky = static_cast<int>(k / width_);
+      for (int dy = -reach; dy <= reach; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const int x = kx + dx, y = ky + dy;
+          if (x < 0 || y < 0 || x >= width_ || y >= height_) continue;
+          if (p_.cell_m * std::hypot(dx, dy) > p_.cluster_gap_m + 1e-9) continue;
+          const std::size_t j = Index(x, y);
+          if (!(flags_[j] & kConfirmed) || visited.count(j)) continue;
+          visited.insert(j);
           queue.push_back(j);
         }
       }
     }
-    for (spott_map::MapFeature& f : FuseIntoSegments(cluster, p_.segment_residual_m, p_.cell_m)) {
+    if (cluster.empty()) continue;
+    std::vector<Vec2> cells;
+    spott_map::Box box{centre(cluster[0]), centre(cluster[0])};
+    std::unordered_set<std::size_t> members(cluster.begin(), cluster.end());
+    for (const std::size_t k : cluster) {
+      // Where its echoes fell, not the cell's centre: a wall's echoes straddle two rows of
+      // cells, and a fit through the centres tilted short segments by up to 14 degrees.
+      cells.push_back(echoes_[k].n > 0 ? echoes_[k].Mean() : centre(k));
+      box.min = box.min.cwiseMin(cells.back());
+      box.max = box.max.cwiseMax(cells.back());
+    }
+    // The mapper's features that this cluster's cells cover (every sample of them within a
+    // cell and the residual of a member) were fused from its cells before: replaced.
+    const double cover = 0.75 * p_.cell_m + p_.segment_residual_m;
+    const auto covered = [&](const Vec2& q) {
+      int qx, qy;
+      if (!CellOf(q, &qx, &qy)) return false;
+      const int r = static_cast<int>(std::ceil(cover / p_.cell_m));
+      for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+          const int x = qx + dx, y = qy + dy;
+          if (x < 0 || y < 0 || x >= width_ || y >= height_) continue;
+          const std::size_t j = Index(x, y);
+          if (members.count(j) && (centre(j) - q).norm() <= cover) return true;
+        }
+      }
+      return false;
+    };
+    for (const spott_map::MapFeature* f :
+         db.FeaturesIn({box.min - Vec2::Constant(cover), box.max + Vec2::Constant(cover)})) {
+      if (!IsOwn(*f) || f->points.empty()) continue;
+      bool all = true;
+      const Vec2 a = f->points.front(), b = f->points.back();
+      const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * p_.cell_m))));
+      for (int i = 0; i <= n && all; ++i) all = covered(a + (b - a) * (double(i) / n));
+      if (all) replaced.push_back(f->id);
+    }
+    for (spott_map::MapFeature& f : FuseIntoSegments(cells, p_.segment_residual_m, p_.cell_m)) {
       f.source = spott_map::FeatureSource::kSensed;
       f.attributes["sensor"] = sensor_;
       batch.features.push_back(std::move(f));
     }
   }
+  pending_.clear();
+  std::sort(replaced.begin(), replaced.end());
+  replaced.erase(std::unique(replaced.begin(), replaced.end()), replaced.end());
+  batch.replaced = std::move(replaced);
   // Door states: a door whose net votes decide a state the map does not have.
   if (sense_doors_) {
     for (const spott_map::Door& door : db.graph().doors()) {
@@ -418,41 +493,50 @@ SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
 
 namespace {
 
-void Fuse(const std::vector<Vec2>& cells, double residual, double cell, int depth,
-          std::vector<spott_map::MapFeature>& out) {
-  Vec2 mean = Vec2::Zero();
-  for (const Vec2& c : cells) mean += c;
-  mean /= static_cast<double>(cells.size());
-  if (cells.size() == 1) {
-    spott_map::MapFeature f = spott_map::MakePoint("", mean, "");
-    out.push_back(std::move(f));
-    return;
-  }
+// A group's principal axis through its mean, its extent along the axis and its largest distance
+// from the axis.
+struct AxisFit {
+  Vec2 mean, axis;
+  double tmin = 0, tmax = 0, worst = 0;
+};
+
+AxisFit FitAxis(const std::vector<Vec2>& cells) {
+  AxisFit f;
+  f.mean = Vec2::Zero();
+  for (const Vec2& c : cells) f.mean += c;
+  f.mean /= static_cast<double>(cells.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Vec2& c : cells) cov += (c - mean) * (c - mean).transpose();
+  for (const Vec2& c : cells) cov += (c - f.mean) * (c - f.mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const Vec2 axis = eig.eigenvectors().col(1).normalized();  // the largest eigenvalue's
-  const Vec2 normal(-axis.y(), axis.x());
-  double tmin = 1e300, tmax = -1e300, worst = 0.0;
-  std::vector<double> t(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    t[i] = (cells[i] - mean).dot(axis);
-    tmin = std::min(tmin, t[i]);
-    tmax = std::max(tmax, t[i]);
-    worst = std::max(worst, std::abs((cells[i] - mean).dot(normal)));
+  f.axis = eig.eigenvectors().col(1).normalized();  // the largest eigenvalue's
+  const Vec2 normal(-f.axis.y(), f.axis.x());
+  f.tmin = 1e300;
+  f.tmax = -1e300;
+  for (const Vec2& c : cells) {
+    const double t = (c - f.mean).dot(f.axis);
+    f.tmin = std::min(f.tmin, t);
+    f.tmax = std::max(f.tmax, t);
+    f.worst = std::max(f.worst, std::abs((c - f.mean).dot(normal)));
   }
-  if (worst <= residual || depth >= 8) {
-    if (tmax - tmin < 0.9 * cell) {
-      out.push_back(spott_map::MakePoint("", mean, ""));
-      return;
-    }
-    // The cells' extent along the axis, to the outer edges of the end cells.
-    const spott_map::Segment s{mean + (tmin - 0.5 * cell) * axis,
-                               mean + (tmax + 0.5 * cell) * axis};
-    out.push_back(spott_map::MakeSegment("", s, "", 0.0));
+  return f;
+}
+
+// Split: recursively at the median along the principal axis until each group lies within
+// `residual` of its axis (`residual` counts from the cells' squares, not their centres: echoes
+// of one wall spread over two or three rows of cells).
+void Split(const std::vector<Vec2>& cells, double residual, int depth,
+           std::vector<std::vector<Vec2>>& out) {
+  if (cells.size() == 1) {
+    out.push_back(cells);
     return;
   }
-  // Split at the median projection along the axis.
+  const AxisFit fit = FitAxis(cells);
+  if (fit.worst <= residual || depth >= 8) {
+    out.push_back(cells);
+    return;
+  }
+  std::vector<double> t(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) t[i] = (cells[i] - fit.mean).dot(fit.axis);
   std::vector<double> sorted = t;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double median = sorted[sorted.size() / 2];
@@ -462,8 +546,8 @@ void Fuse(const std::vector<Vec2>& cells, double residual, double cell, int dept
     low.assign(cells.begin(), cells.begin() + cells.size() / 2);
     high.assign(cells.begin() + cells.size() / 2, cells.end());
   }
-  Fuse(low, residual, cell, depth + 1, out);
-  Fuse(high, residual, cell, depth + 1, out);
+  Split(low, residual, depth + 1, out);
+  Split(high, residual, depth + 1, out);
 }
 
 }  // namespace
@@ -471,7 +555,36 @@ void Fuse(const std::vector<Vec2>& cells, double residual, double cell, int dept
 std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
                                                     double residual_m, double cell_m) {
   std::vector<spott_map::MapFeature> out;
-  if (!cells.empty()) Fuse(cells, residual_m, cell_m, 0, out);
+  if (cells.empty()) return out;
+  std::vector<std::vector<Vec2>> groups;
+  const double residual = residual_m + 0.5 * cell_m;  // from a cell's centre
+  Split(cells, residual, 0, groups);
+  // Merge: groups whose union still lies within the residual of one axis are one line (a split
+  // at the median cuts a straight run in two where another part of the cluster bent).
+  for (bool merged = true; merged && groups.size() > 1;) {
+    merged = false;
+    for (std::size_t i = 0; i < groups.size() && !merged; ++i) {
+      for (std::size_t j = i + 1; j < groups.size() && !merged; ++j) {
+        std::vector<Vec2> both = groups[i];
+        both.insert(both.end(), groups[j].begin(), groups[j].end());
+        if (FitAxis(both).worst > residual) continue;
+        groups[i] = std::move(both);
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
+        merged = true;
+      }
+    }
+  }
+  for (const std::vector<Vec2>& g : groups) {
+    const AxisFit fit = FitAxis(g);
+    if (g.size() == 1 || fit.tmax - fit.tmin < 0.9 * cell_m) {
+      out.push_back(spott_map::MakePoint("", fit.mean, ""));
+      continue;
+    }
+    // The cells' extent along the axis, to the outer edges of the end cells.
+    const spott_map::Segment s{fit.mean + (fit.tmin - 0.5 * cell_m) * fit.axis,
+                               fit.mean + (fit.tmax + 0.5 * cell_m) * fit.axis};
+    out.push_back(spott_map::MakeSegment("", s, "", 0.0));
+  }
   return out;
 }
 

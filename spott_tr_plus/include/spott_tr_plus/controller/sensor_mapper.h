@@ -9,16 +9,20 @@
 // confirmed when its score reaches `confirm_score`, which takes several consistent echoes: single
 // echoes (multipath, crosstalk) do not make features. Echoes are discarded when
 //   - they lie within `known_tolerance_m` of a feature the map holds (the CAD walls, closed door
-//     leaves, features sensed before): already there;
+//     leaves, features another sensor or the recognition made): already there. The mapper's
+//     own features are not: their echoes keep voting, and Take refines them (below);
 //   - their beam crossed a known obstacle first (a reflection from beyond a wall);
 //   - they lie in a door's opening (the opening votes on the door's state instead) or outside
 //     every room;
 //   - the sonar reading is within `sonar_min_margin_m` of its minimum range (clamped readings say
 //     only "closer than this") or beyond `sonar_max_range_m`.
-// Newly confirmed cells are clustered and each cluster fused into line segments by recursive
-// splitting at the principal axis (a cluster whose cells all lie within `segment_residual_m` of
-// its axis is one segment); single cells are points.
-// ROS-free; the caller passes the robot's pose with each reading.
+// A newly confirmed cell's cluster (every confirmed cell within `cluster_gap_m` of another, old
+// ones included; each cell stands for the mean of the echoes it gained) is fused into line segments
+// by recursive splitting at the principal axis (a cluster whose cells all lie within
+// `segment_residual_m` of its axis is one segment; single cells are points), and the result
+// replaces the mapper's features fused from that cluster before: a wall confirmed reading by
+// reading ends as one segment, not a row of points. ROS-free; the caller passes the robot's pose
+// with each reading.
 #pragma once
 
 #include <cstdint>
@@ -61,9 +65,10 @@ struct MappingParameters {
   /// near_miss_points do: the pose it was taken from is off. <= known_tolerance_m: no check.
   double near_miss_m = 0.6;
   int near_miss_points = 3;
-  double door_zone_m = 0.3;          ///< Half depth of a door opening's zone (m), > 0.
-  double segment_residual_m = 0.07;  ///< Fusion: cells this close to an axis form a segment (m).
-  double cluster_gap_m = 0.15;       ///< Confirmed cells this close form one cluster (m), > 0.
+  double door_zone_m = 0.3;  ///< Half depth of a door opening's zone (m), > 0.
+  double segment_residual_m =
+      0.07;  ///< Fusion: cells whose squares come this close to an axis form a segment (m).
+  double cluster_gap_m = 0.15;  ///< Confirmed cells this close form one cluster (m), > 0.
   /// Side of the square the grid covers, centred on the robot, when the map has no rooms (no a
   /// priori map: SPOTT's Experiment 1) (m), in [5, 200].
   double mapless_extent_m = 40.0;
@@ -98,7 +103,9 @@ std::vector<std::string> ValidateParameters(const DoorSensingParameters& p);
 struct SensedBatch {
   std::vector<spott_map::MapFeature> features;  ///< New features (ids empty: the owner names them).
   std::vector<std::pair<std::string, spott_map::DoorState>> doors;  ///< Door states that changed.
-  bool empty() const { return features.empty() && doors.empty(); }
+  /// The mapper's earlier features that `features` supersede (refined: their cells' cluster grew).
+  std::vector<std::string> replaced;
+  bool empty() const { return features.empty() && doors.empty() && replaced.empty(); }
 };
 
 class SensorMapper {
@@ -132,9 +139,14 @@ class SensorMapper {
   void Forget();
 
   /// The features confirmed since the last call that `db` does not hold yet (fused), and the
-  /// door states sensed that differ from `db`'s.
+  /// door states sensed that differ from `db`'s. A newly confirmed cell's whole cluster (cells
+  /// confirmed before included) is fused anew; the mapper's features in `db` that the cluster
+  /// covers (its own: sensed, with this mapper's `sensor` attribute) are listed as replaced.
   SensedBatch Take(const spott_map::MapDatabase& db);
+  /// Whether `f` is one of this mapper's features (a sensed segment or point of its sensor).
+  bool IsOwn(const spott_map::MapFeature& f) const;
 
+  const std::string& sensor() const { return sensor_; }
   /// Range-finder profiles refused as taken from a wrong pose (MappingParameters::near_miss_m).
   int profiles_refused() const { return profiles_refused_; }
   /// Confirmed cells waiting for Take (for tests and the live state).
@@ -171,6 +183,18 @@ class SensorMapper {
   Vec2 origin_{0.0, 0.0};
   int width_ = 0, height_ = 0;
   std::vector<std::int8_t> score_;
+  /// The mean of the echoes each cell gained (fusion fits lines through them).
+  struct EchoMean {
+    float sx = 0.f, sy = 0.f;
+    std::uint32_t n = 0;
+    void Add(const Vec2& p) {
+      sx += static_cast<float>(p.x());
+      sy += static_cast<float>(p.y());
+      ++n;
+    }
+    Vec2 Mean() const { return Vec2(sx / n, sy / n); }
+  };
+  std::vector<EchoMean> echoes_;
   std::vector<std::uint8_t> flags_;  ///< kKnown | kBlocked | kDoor | kOutside | kConfirmed.
   std::vector<std::pair<int, int>> pending_;
   std::vector<DoorZone> doors_;
@@ -178,8 +202,9 @@ class SensorMapper {
   int profiles_refused_ = 0;
 };
 
-/// Fuses cell centres into line segments (recursive split at the principal axis) and points;
-/// `residual_m`: largest distance of a cell from its segment, `cell_m`: the cells' side.
+/// Fuses cell centres into line segments (recursive split at the principal axis, then merge of
+/// groups that share one) and points; `residual_m`: largest distance of a cell's square from its
+/// segment (a centre may lie residual_m + cell_m / 2 off), `cell_m`: the cells' side.
 std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
                                                     double residual_m, double cell_m);
 
