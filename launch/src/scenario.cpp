@@ -170,11 +170,11 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
     return result;
   }
   const std::string what = "scenario";
-  if (!in.ExpectMap(
-          root, what,
-          {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
-           "localization", "a_priori_map", "global_localization", "tasks", "goals", "missions",
-           "doors_to_close", "leg_timeout_s", "goal_tolerance_m", "time_limit_s", "faults"})) {
+  if (!in.ExpectMap(root, what,
+                    {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
+                     "localization", "a_priori_map", "global_localization", "tasks", "goals",
+                     "missions", "doors_to_close", "leg_timeout_s", "goal_tolerance_m",
+                     "time_limit_s", "faults", "subroutines_off"})) {
     result.errors = in.errors();
     return result;
   }
@@ -220,6 +220,19 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
   CheckTasks(in, s.tasks);
   CheckIds(in, s.goals, "goals");
   CheckIds(in, s.doors_to_close, "doors_to_close");
+  s.subroutines_off = Strings(in, root, "subroutines_off");
+  for (std::size_t i = 0; i < s.subroutines_off.size(); ++i) {
+    const std::string& name = s.subroutines_off[i].text;
+    if (name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+      in.Error(
+          s.subroutines_off[i].where,
+          "subroutines_off[" + std::to_string(i) + "]: '" + name +
+              "' is not a TR+ subroutine's name (capitals, digits, _: MAP_OBJECTS_WITH_QUADRIS)");
+  }
+  if (!s.subroutines_off.empty() && !root["tasks"])
+    in.Error(root["subroutines_off"],
+             "subroutines_off: switches off subroutines of the TR+ controller, which runs only "
+             "for `tasks:`");
   s.missions = Missions(in, root);
   const int kinds = (root["tasks"] ? 1 : 0) + (root["goals"] ? 1 : 0) + (root["missions"] ? 1 : 0);
   if (kinds > 1) {
@@ -308,6 +321,11 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
   if (!s.a_priori_map) args.push_back("a_priori_map:=false");
   if (s.global_localization) args.push_back("global_localization:=true");
   args.push_back("controller:=" + s.Controller());
+  if (!s.subroutines_off.empty()) {
+    std::string list;
+    for (const auto& name : s.subroutines_off) list += (list.empty() ? "" : ", ") + name.text;
+    args.push_back("subroutines_off:=[" + list + "]");
+  }
   args.push_back("executive:=" + s.Executive());
   return args;
 }

@@ -216,6 +216,28 @@ TEST(Scenario, AStackWithoutAPrioriMapRunsOnDeadReckoning) {
   EXPECT_EQ(std::find(plain.begin(), plain.end(), "a_priori_map:=false"), plain.end());
 }
 
+// A map from the sonar alone (issue 19): QUADRIS's mapping switched off for the run.
+TEST(Scenario, SubroutinesOffReachTheControllerAsAYamlList) {
+  const auto r = ParseScenario(
+      "world: cim_office\ntasks: [\"go in room(lab)\"]\n"
+      "subroutines_off: [MAP_OBJECTS_WITH_QUADRIS, CONTROL_THE_PTU]\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(),
+                      "subroutines_off:=[MAP_OBJECTS_WITH_QUADRIS, CONTROL_THE_PTU]"),
+            args.end());
+  const auto bad = ParseScenario(
+      "world: cim_office\ngoals: [lab_bench]\nsubroutines_off: [\"MAP QUADRIS\"]\n", "s.yaml");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(Errors(bad).find("s.yaml:3:19: subroutines_off[0]: 'MAP QUADRIS' is not a TR+"),
+            std::string::npos)
+      << Errors(bad);
+  EXPECT_NE(Errors(bad).find("s.yaml:3:18: subroutines_off: switches off subroutines of the TR+"),
+            std::string::npos)
+      << Errors(bad);
+}
+
 // Beetz et al. 2.3: the robot knows the map, not where it is.
 TEST(Scenario, GlobalLocalizationStartsTheMarkovBeliefUniform) {
   const auto r = ParseScenario(

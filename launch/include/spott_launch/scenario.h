@@ -58,9 +58,12 @@ struct Scenario {
   std::vector<Located> goals;           ///< places driven to through Navigate, or
   std::vector<MissionSpec> missions;    ///< missions for rpl_executive.
   std::vector<Located> doors_to_close;  ///< The demo's reachability experiment.
-  double leg_timeout_s = 240.0;         ///< Simulated s per task or goal.
-  double goal_tolerance_m = 0.25;       ///< Judged on the ground truth (m).
-  double time_limit_s = 0.0;            ///< Simulated s for the whole run (0 = legs x timeout).
+  /// TR+ subroutines switched off (tr_plus_controller ~subroutines_off): a sensor left out,
+  /// e.g. MAP_OBJECTS_WITH_QUADRIS for a map from the sonar alone. Tasks only.
+  std::vector<Located> subroutines_off;
+  double leg_timeout_s = 240.0;    ///< Simulated s per task or goal.
+  double goal_tolerance_m = 0.25;  ///< Judged on the ground truth (m).
+  double time_limit_s = 0.0;       ///< Simulated s for the whole run (0 = legs x timeout).
   std::vector<robot_sim::FaultEvent> faults;  ///< Sorted by time (simulated s since start).
   std::string faults_yaml;  ///< The `faults:` list as robot_sim reads it ("" none).
 
