@@ -17,15 +17,7 @@ import math
 
 import rosbag
 import yaml
-
-
-def inside(p, polygon):
-    x, y = p
-    hit = False
-    for (x1, y1), (x2, y2) in zip(polygon, polygon[1:] + polygon[:1]):
-        if (y1 > y) != (y2 > y) and x < x1 + (y - y1) * (x2 - x1) / (y2 - y1):
-            hit = not hit
-    return hit
+from world_shapes import inside
 
 
 def room_of(p, rooms):

@@ -21,6 +21,7 @@ import math
 
 import rosbag
 import yaml
+from world_shapes import inside
 
 STEP = 0.02  # sampling along walls and segments (m)
 LINE_SEGMENT = 1
@@ -138,15 +139,6 @@ def matches(segment, grid, distance, angle, kinds=("wall", "leaf", "object")):
                    for s in grid.near(p, distance + 0.1)):
             return False
     return True
-
-
-def inside(p, polygon):
-    x, y = p
-    hit = False
-    for (x1, y1), (x2, y2) in zip(polygon, polygon[1:] + polygon[:1]):
-        if (y1 > y) != (y2 > y) and x < x1 + (y - y1) * (x2 - x1) / (y2 - y1):
-            hit = not hit
-    return hit
 
 
 def on_boundary(p, polygon):
