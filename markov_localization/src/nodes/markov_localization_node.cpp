@@ -62,6 +62,10 @@ std::optional<spott_map::Pose2> PoseOf(const geometry_msgs::Pose& pose) {
   return spott_map::Pose2{p->x, p->y, p->theta};
 }
 
+// A ring's transducers this far off the model's beams are elsewhere (rad): the turret's step in
+// SPOTT's dense scan is 2.5 degrees (0.044 rad).
+constexpr double kMountToleranceRad = 0.01;
+
 // Why a ring is refused (its limit is not a usable number), or "".
 std::string RingProblem(const spott_msgs::RangeRing& ring) {
   if (!(std::isfinite(ring.max_range) && ring.max_range > 0.0f && ring.max_range < 1000.0f))
@@ -451,13 +455,26 @@ class LocalizationNode {
                params_.sonar_off_max_s);
       sonar_on_ = true;
     }
-    if (!sonar_on_) {  // switched off (enable_sonar): no update, the estimate on odometry
+    // No update, the estimate on odometry: switched off (enable_sonar), or read with the
+    // transducers elsewhere than the model's beams (the turret turned: SPOTT's dense scan).
+    const auto on_odometry = [&] {
       const auto at = ReadingOdometry(ring.header.stamp);
       if (!at) return;
       reading_odom_ = *at;
       Publish(ring.header.stamp, ml::LocalizerStep{}, sonar_model_->beam_angles_rad, ranges_,
               ring.max_range);
-      return;
+    };
+    if (!sonar_on_) return on_odometry();
+    if (params_.ring_geometry) {
+      const std::string turned = ml::ros_conversions::RingGeometryChange(
+          ring, sonar_model_->beam_angles_rad, kMountToleranceRad);
+      if (!turned.empty()) {
+        ROS_WARN_THROTTLE(10,
+                          "markov_localization: rings on '%s' read with other mounts than the "
+                          "first ring's are skipped, the estimate follows odometry: %s",
+                          params_.ring_topic.c_str(), turned.c_str());
+        return on_odometry();
+      }
     }
     last_ring_max_range_ = ring.max_range;
     OnReading(sonar_index_, ranges_, ring.header.stamp, sonar_model_->beam_angles_rad,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "markov_localization/sticky_estimate.h"
 #include "spott_map/ros/conversions.h"
@@ -203,6 +204,24 @@ std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
     if (!(zb <= h)) zb = h;  // NaN, +infinity or farther: the nearest return wins
   }
   return z;
+}
+
+std::string RingGeometryChange(const spott_msgs::RangeRing& ring,
+                               const std::vector<double>& beam_angles_rad, double tolerance_rad) {
+  if (ring.mounts.empty()) return "";
+  if (ring.mounts.size() != beam_angles_rad.size())
+    return std::to_string(ring.mounts.size()) + " mounts, the model has " +
+           std::to_string(beam_angles_rad.size()) + " beams";
+  for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
+    const double off = spott_map::NormalizeAngle(ring.mounts[i].theta - beam_angles_rad[i]);
+    if (!(std::abs(off) <= tolerance_rad)) {
+      std::ostringstream out;
+      out.precision(3);
+      out << "mount " << i << " points " << off << " rad off the model's beam (the turret turned?)";
+      return out.str();
+    }
+  }
+  return "";
 }
 
 }  // namespace markov_localization::ros_conversions

@@ -32,6 +32,31 @@ BeliefSnapshot SmallBelief() {
   return b;
 }
 
+// SPOTT's dense scan turns the Nomad's turret (and its sonar ring) in 2.5-degree steps: such a
+// ring must not be read as the model's beams.
+TEST(Conversions, ARingReadWithTheTurretTurnedIsNotTheModelsGeometry) {
+  spott_msgs::RangeRing ring;
+  std::vector<double> beams;
+  for (int i = 0; i < 16; ++i) {
+    geometry_msgs::Pose2D m;
+    m.theta = spott_map::NormalizeAngle(i * M_PI / 8);
+    m.x = 0.23 * std::cos(m.theta);
+    m.y = 0.23 * std::sin(m.theta);
+    ring.mounts.push_back(m);
+    beams.push_back(m.theta);
+  }
+  EXPECT_EQ(conv::RingGeometryChange(ring, beams, 0.01), "");
+  for (auto& m : ring.mounts) m.theta = spott_map::NormalizeAngle(m.theta + 2.5 * M_PI / 180);
+  EXPECT_NE(conv::RingGeometryChange(ring, beams, 0.01).find("mount 0 points 0.0436 rad off"),
+            std::string::npos)
+      << conv::RingGeometryChange(ring, beams, 0.01);
+  ring.mounts.pop_back();
+  EXPECT_NE(conv::RingGeometryChange(ring, beams, 0.01).find("15 mounts, the model has 16 beams"),
+            std::string::npos);
+  ring.mounts.clear();  // a ring without mounts: the configured geometry holds
+  EXPECT_EQ(conv::RingGeometryChange(ring, beams, 0.01), "");
+}
+
 TEST(Conversions, BeliefGridIsTheMarginalOverThetaScaledToAMaximumOf100) {
   const auto grid = conv::BeliefGrid(SmallBelief(), {}, "map", ros::Time(5.0));
   EXPECT_EQ(grid.header.frame_id, "map");

@@ -15,6 +15,7 @@
 #include <spott_msgs/BeliefModes.h>
 #include <spott_msgs/NavigateGoal.h>
 #include <spott_msgs/RangeProfile.h>
+#include <spott_msgs/RangeRing.h>
 
 #include "markov_localization/certainty.h"
 #include "markov_localization/occupancy_map.h"
@@ -75,6 +76,13 @@ std::vector<double> LaserRanges(const sensor_msgs::LaserScan& scan, const std::v
 std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
                                     const geometry_msgs::Transform& to_base, int bins,
                                     double min_height_m, double max_height_m, std::string* why);
+
+/// Why a ring's transducers do not point where the sonar model's beams do ("" when they do, every
+/// mount's axis within `tolerance_rad` of `beam_angles_rad`; a ring without mounts: ""). The
+/// model's tables are cast for the beams' angles once: a ring read with the turret turned (the
+/// Nomad's sonars ride on it; robot_sim's /turret/command) would be read as the wrong beams.
+std::string RingGeometryChange(const spott_msgs::RangeRing& ring,
+                               const std::vector<double>& beam_angles_rad, double tolerance_rad);
 
 geometry_msgs::TransformStamped ToTransform(const Pose2& map_to_odom, const std::string& map_frame,
                                             const std::string& odom_frame, const ros::Time& stamp);
