@@ -962,6 +962,32 @@ TEST(SensorMapper, ForgetDropsTheEvidenceGatheredSoFar) {
   EXPECT_EQ(m.Take(db).features.size(), 1u);
 }
 
+TEST(SensorMapper, AfterForgetAWallThatGrowsOnStillReplacesItsSegment) {
+  // A 1 m piece of the hall's north wall is in the map; the estimate jumps (Forget) and the
+  // controller keeps that piece. Echoes of the next metre must grow it, not add a second
+  // segment beside the first (the first's cells were forgotten with the rest).
+  spott_map::MapDatabase db;
+  SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db, Vec2(4.5, 8.25));
+  int next = 0;
+  const auto drive = [&](double x0, double x1) {
+    for (double x = x0 + 0.05; x < x1; x += 0.1)
+      for (int k = 0; k < 4; ++k) m.AddRing(OneBeam(0, kRadius, M_PI / 2, 0.9465), {x, 8.25, 0});
+  };
+  drive(3.0, 4.0);
+  ApplyBatch(m.Take(db), db, next);
+  ASSERT_EQ(db.features().size(), 1u);
+  m.Forget();
+  m.SetMap(db);  // the controller's map change after the retraction
+  drive(4.0, 5.0);
+  const SensedBatch b = m.Take(db);
+  EXPECT_EQ(b.replaced, std::vector<std::string>{"sonar_1"});
+  ApplyBatch(b, db, next);
+  ASSERT_EQ(db.features().size(), 1u);
+  const spott_map::MapFeature& f = db.features()[0];
+  EXPECT_NEAR(std::abs(f.points[1].x() - f.points[0].x()), 2.0, 0.11);
+}
+
 TEST(SensorMapper, ClampedAndReflectedEchoesAreNotMapped) {
   const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("sonar", MappingParameters{}, DoorSensingParameters{}, true);

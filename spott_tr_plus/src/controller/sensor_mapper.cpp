@@ -172,6 +172,7 @@ void SensorMapper::SetMap(const spott_map::MapDatabase& db, const std::optional<
       if (blocked.at(ix, iy) == spott_map::Cell::kObstacle) f |= kBlocked;
     }
   }
+  if (reseed_) Reseed(db);
   revision_ = db.revision();
 }
 
@@ -374,6 +375,33 @@ void SensorMapper::Forget() {
   for (std::uint8_t& f : flags_) f &= static_cast<std::uint8_t>(~kConfirmed);
   pending_.clear();
   for (auto& [id, votes] : door_votes_) votes = 0;
+  reseed_ = true;
+}
+
+void SensorMapper::Reseed(const spott_map::MapDatabase& db) {
+  // The mapper's features still in the map stand for confirmed cells again: else a cluster
+  // growing beside one after Forget would not cover it, and the wall would be mapped twice.
+  // Sampled between the end cells' centres (a segment reaches half a cell beyond them).
+  reseed_ = false;
+  for (const spott_map::MapFeature& f : db.features()) {
+    if (!IsOwn(f) || f.points.empty()) continue;
+    const Vec2 a = f.points.front(), b = f.points.back();
+    const double length = (b - a).norm();
+    const Vec2 u = length > 1e-9 ? Vec2((b - a) / length) : Vec2(1.0, 0.0);
+    const double inset = std::min(0.5 * p_.cell_m, 0.5 * length);
+    const int n = static_cast<int>(std::ceil((length - 2.0 * inset) / (0.5 * p_.cell_m)));
+    for (int i = 0; i <= n; ++i) {
+      const Vec2 q = a + (inset + (length - 2.0 * inset) * (n > 0 ? double(i) / n : 0.0)) * u;
+      int ix, iy;
+      if (!CellOf(q, &ix, &iy)) continue;
+      const std::size_t k = Index(ix, iy);
+      if (flags_[k] & kConfirmed) continue;
+      flags_[k] |= kConfirmed;
+      score_[k] = static_cast<std::int8_t>(std::max<int>(score_[k], p_.confirm_score));
+      echoes_[k] = EchoMean{};
+      echoes_[k].Add(q);
+    }
+  }
 }
 
 bool SensorMapper::IsOwn(const spott_map::MapFeature& f) const {
@@ -387,6 +415,7 @@ bool SensorMapper::IsOwn(const spott_map::MapFeature& f) const {
 SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
   SensedBatch batch;
   if (!have_map_) return batch;
+  if (reseed_) Reseed(db);  // Forget() ran and no map change has come since
   const double tol = p_.known_tolerance_m;
   // A cell another feature explains (another sensor's, a recognised object, a contact) is that
   // feature's: the map holds it already.

@@ -135,7 +135,9 @@ class SensorMapper {
   }
 
   /// Drops the evidence gathered so far (cell scores, confirmations not taken yet, door votes):
-  /// it was placed with a pose that turned out wrong (the estimate jumped).
+  /// it was placed with a pose that turned out wrong (the estimate jumped). The next SetMap or
+  /// Take confirms the cells under the mapper's features that are still in the map again (the
+  /// caller takes back the wrong ones first), so that Take keeps refining them.
   void Forget();
 
   /// The features confirmed since the last call that `db` does not hold yet (fused), and the
@@ -160,6 +162,8 @@ class SensorMapper {
     std::string id;
     spott_map::Segment opening;
   };
+  /// After Forget: the cells under the mapper's features in `db` confirmed again.
+  void Reseed(const spott_map::MapDatabase& db);
   /// `half_cone`: the beam's half width (rad; 0 for a range finder's point).
   void Beam(const Vec2& from, double angle, double range, bool echo, double max_range, int hit,
             double half_cone);
@@ -179,6 +183,7 @@ class SensorMapper {
   bool sense_doors_;
   std::uint64_t revision_ = ~0ull;
   bool have_map_ = false;
+  bool reseed_ = false;  ///< Forget() ran: the next SetMap or Take reseeds from the features.
   bool static_drawn_ = false;
   Vec2 origin_{0.0, 0.0};
   int width_ = 0, height_ = 0;
