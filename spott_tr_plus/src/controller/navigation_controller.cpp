@@ -310,12 +310,6 @@ void NavigationController::Bind(Registry& r) {
   // QUADRIS's batch carries the objects recognised from its profiles as well.
   const auto segments = [this](SensorMapper& mapper, ObjectRecognizer* recognizer = nullptr) {
     return [this, &mapper, recognizer](const ConditionCall&, Outputs& out) {
-      const std::string sensor = mapper.sensor();
-      if (const auto o = outstanding_.find(sensor);
-          o != outstanding_.end() && batches_.count(o->second)) {
-        if (!out.empty()) out[0] = static_cast<double>(o->second);
-        return true;  // the last batch is not added yet
-      }
       SensedBatch batch = mapper.Take(db_);
       if (recognizer) {
         for (spott_map::MapFeature& f : recognizer->Take()) batch.features.push_back(std::move(f));
@@ -323,7 +317,6 @@ void NavigationController::Bind(Registry& r) {
       if (batch.empty()) return false;
       const int id = ++next_batch_;
       batches_[id] = std::move(batch);
-      outstanding_[sensor] = id;
       while (batches_.size() > 32) batches_.erase(batches_.begin());
       if (!out.empty()) out[0] = static_cast<double>(id);
       return true;

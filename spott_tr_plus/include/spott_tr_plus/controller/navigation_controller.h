@@ -326,9 +326,6 @@ class NavigationController {
   KnownStructure known_;
   std::map<int, SensedBatch> batches_;
   int next_batch_ = 0;
-  /// Each mapper's batch taken and not yet added (by sensor): the next Take waits for it, else
-  /// it would fuse the same cells again into features beside the ones on their way.
-  std::map<std::string, int> outstanding_;
   std::map<std::string, int> next_id_;
   std::vector<std::string> added_ids_;
   std::deque<std::pair<double, std::string>> recent_ids_;  ///< (time added, id), for retraction.

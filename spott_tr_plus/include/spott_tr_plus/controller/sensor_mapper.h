@@ -148,7 +148,6 @@ class SensorMapper {
   /// Whether `f` is one of this mapper's features (a sensed segment or point of its sensor).
   bool IsOwn(const spott_map::MapFeature& f) const;
 
-  const std::string& sensor() const { return sensor_; }
   /// Range-finder profiles refused as taken from a wrong pose (MappingParameters::near_miss_m).
   int profiles_refused() const { return profiles_refused_; }
   /// Confirmed cells waiting for Take (for tests and the live state).
