@@ -33,8 +33,10 @@ bool MapDatabase::AddFeature(MapFeature feature) {
   return true;
 }
 
-MapDatabase::AddResult MapDatabase::AddSensedFeature(MapFeature feature, double tolerance_m) {
+MapDatabase::AddResult MapDatabase::AddSensedFeature(MapFeature feature, double tolerance_m,
+                                                     MatchAgainst against) {
   for (MapFeature& existing : features_) {
+    if (against == MatchAgainst::kCad && existing.source != FeatureSource::kCad) continue;
     if (!IsSameFeature(existing, feature, tolerance_m)) continue;
     if (!feature.label.empty() && feature.label != existing.label) {
       existing.label = feature.label;

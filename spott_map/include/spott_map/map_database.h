@@ -42,10 +42,13 @@ class MapDatabase {
     Outcome outcome = Outcome::kAdded;
     std::string id;
   };
-  /// Adds a sensed feature unless one already there matches it within `tolerance_m`
-  /// (IsSameFeature). A match with a different, non-empty label relabels the existing feature.
-  /// An empty id is replaced by "sensed_<n>".
-  AddResult AddSensedFeature(MapFeature feature, double tolerance_m);
+  /// Which features a sensed one is matched against.
+  enum class MatchAgainst { kAll, kCad };
+  /// Adds a sensed feature unless one already there (of those `against` names) matches it
+  /// within `tolerance_m` (IsSameFeature). A match with a different, non-empty label relabels
+  /// the existing feature. An empty id is replaced by "sensed_<n>".
+  AddResult AddSensedFeature(MapFeature feature, double tolerance_m,
+                             MatchAgainst against = MatchAgainst::kAll);
 
   bool RemoveFeature(const std::string& id);
   bool Relabel(const std::string& id, const std::string& label);

@@ -7,10 +7,17 @@ namespace spott_map::ros_conversions {
 std::vector<std::string> ApplyMapUpdate(const spott_msgs::MapUpdate& update,
                                         double feature_tolerance_m, MapDatabase& db) {
   std::vector<std::string> problems;
+  // Removals first: the successor of a refined feature overlaps it and would be its duplicate.
+  for (const std::string& id : update.removed) {
+    if (!db.RemoveFeature(id)) problems.push_back("cannot remove unknown feature '" + id + "'");
+  }
   for (const auto& msg : update.added) {
     std::string error;
     if (auto feature = FromMsg(msg, &error)) {
-      db.AddSensedFeature(std::move(*feature), feature_tolerance_m);
+      // The owner's features (with ids) are mirrored: it de-duplicated them by its own rules.
+      const auto against =
+          msg.id.empty() ? MapDatabase::MatchAgainst::kAll : MapDatabase::MatchAgainst::kCad;
+      db.AddSensedFeature(std::move(*feature), feature_tolerance_m, against);
     } else {
       problems.push_back(error);
     }
@@ -19,9 +26,6 @@ std::vector<std::string> ApplyMapUpdate(const spott_msgs::MapUpdate& update,
     if (!db.Relabel(msg.id, msg.label)) {
       problems.push_back("cannot relabel unknown feature '" + msg.id + "'");
     }
-  }
-  for (const std::string& id : update.removed) {
-    if (!db.RemoveFeature(id)) problems.push_back("cannot remove unknown feature '" + id + "'");
   }
   for (const auto& door : update.doors) {
     const auto state = DoorStateFromMsg(door.state);

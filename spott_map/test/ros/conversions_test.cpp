@@ -173,6 +173,43 @@ TEST(Conversions, MapUpdateAddsOnlyNewFeaturesAndReportsBadParts) {
   EXPECT_NE(problems[1].find("d_attic"), std::string::npos);
 }
 
+TEST(Conversions, MapUpdateReplacesAFeatureByItsOverlappingSuccessor) {
+  // The controller refines a sensed wall: one update removes sonar_1 and adds sonar_2, nearly
+  // the same segment. Applied add-first, sonar_2 was dropped as sonar_1's duplicate and then
+  // sonar_1 removed: the copies lost the wall (a cim_office demo drove into a crate this way).
+  MapDatabase db = MapDatabase::FromWorld(TestWorld());
+  const std::size_t walls = db.features().size();
+  spott_msgs::MapUpdate first;
+  first.added.push_back(conv::ToMsg(MakeSegment("sonar_1", Segment{Vec2(5, 1), Vec2(6, 1)}, "")));
+  ASSERT_TRUE(conv::ApplyMapUpdate(first, 0.1, db).empty());
+  ASSERT_EQ(db.features().size(), walls + 1);
+  spott_msgs::MapUpdate refined;
+  refined.added.push_back(
+      conv::ToMsg(MakeSegment("sonar_2", Segment{Vec2(5, 1.01), Vec2(6, 1.01)}, "")));
+  refined.removed = {"sonar_1"};
+  EXPECT_TRUE(conv::ApplyMapUpdate(refined, 0.1, db).empty());
+  EXPECT_EQ(db.features().size(), walls + 1);
+  EXPECT_EQ(db.FindFeature("sonar_1"), nullptr);
+  EXPECT_NE(db.FindFeature("sonar_2"), nullptr);
+}
+
+TEST(Conversions, MapUpdateMirrorsTheOwnersSensedFeatures) {
+  // The owner sends infrared_1 lying on its sonar_2 (it de-duplicates by its own rules), then
+  // refines sonar_2 away: the copy keeps infrared_1 as the owner does.
+  MapDatabase db = MapDatabase::FromWorld(TestWorld());
+  const std::size_t walls = db.features().size();
+  spott_msgs::MapUpdate u;
+  u.added.push_back(conv::ToMsg(MakeSegment("sonar_2", Segment{Vec2(5, 1), Vec2(6, 1)}, "")));
+  u.added.push_back(
+      conv::ToMsg(MakeSegment("infrared_1", Segment{Vec2(5.2, 1), Vec2(5.8, 1.01)}, "")));
+  ASSERT_TRUE(conv::ApplyMapUpdate(u, 0.1, db).empty());
+  EXPECT_EQ(db.features().size(), walls + 2);
+  spott_msgs::MapUpdate refined;
+  refined.removed = {"sonar_2"};
+  ASSERT_TRUE(conv::ApplyMapUpdate(refined, 0.1, db).empty());
+  EXPECT_NE(db.FindFeature("infrared_1"), nullptr);
+}
+
 TEST(Conversions, MarkersColourDoorsByState) {
   const MapDatabase db = MapDatabase::FromWorld(TestWorld());
   const auto markers = conv::ToMarkers(db, "map", ros::Time(0));

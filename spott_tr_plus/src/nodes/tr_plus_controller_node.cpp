@@ -270,8 +270,12 @@ class ControllerNode : public ControllerIo {
     u.header.stamp = ros::Time::now();
     for (const spott_map::MapFeature& f : change.added) u.added.push_back(mconv::ToMsg(f));
     u.removed = change.removed;
-    if (!change.removed.empty()) {
+    if (change.retraction && !change.removed.empty()) {
       ROS_WARN("tr_plus_controller: the estimate jumped: %zu sensed features taken back (%s%s)",
+               change.removed.size(), change.removed.front().c_str(),
+               change.removed.size() > 1 ? ", ..." : "");
+    } else if (!change.removed.empty()) {  // refined by a grown cluster, or cleared for a retry
+      ROS_INFO("tr_plus_controller: %zu sensed features removed from the map (%s%s)",
                change.removed.size(), change.removed.front().c_str(),
                change.removed.size() > 1 ? ", ..." : "");
     }
