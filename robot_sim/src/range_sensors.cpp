@@ -11,7 +11,10 @@ namespace {
 
 constexpr double kEps = 1e-4;  // Offset of a reflected ray's start off the surface (m).
 
-Eigen::Vector3d Heading(double yaw) { return {std::cos(yaw), std::sin(yaw), 0.0}; }
+Eigen::Vector3d Heading(double yaw, double elevation) {
+  const double c = std::cos(elevation);
+  return {c * std::cos(yaw), c * std::sin(yaw), std::sin(elevation)};
+}
 
 // Incidence angle between a ray and a surface normal, in the horizontal plane (rad).
 double Incidence(const Eigen::Vector3d& dir, const Eigen::Vector3d& normal) {
@@ -38,33 +41,56 @@ TransducerPose PlaceMount(const Mount& mount, const spott_map::Pose2& robot, dou
   return t;
 }
 
+namespace {
+
+// The echo one ray of a transducer's cone returns (m), or max_range.
+double EchoOfRay(const SimWorld& world, const RangeRingSpec& ring, const Eigen::Vector3d& origin,
+                 const Eigen::Vector3d& dir, const btCollisionObject* self,
+                 std::vector<ScatterPoint>* scatter) {
+  const auto hit = world.CastRay(origin, origin + dir * ring.max_range, self);
+  if (!hit) return ring.max_range;
+  if (std::abs(hit->normal.z()) > 0.7) {
+    // A solid's top met by a tilted ray: at grazing incidence the pulse glances off, upward or
+    // to the floor (not followed); it scatters back only within the critical angle.
+    const double incidence = std::acos(std::clamp(std::abs(dir.dot(hit->normal)), 0.0, 1.0));
+    if (incidence > ring.critical_angle) return ring.max_range;
+    if (scatter) scatter->push_back({hit->point, hit->distance});
+    return hit->distance;
+  }
+  if (Incidence(dir, hit->normal) <= ring.critical_angle) {
+    if (scatter) scatter->push_back({hit->point, hit->distance});
+    return hit->distance;
+  }
+  // Specular: follow the reflected pulse to a second surface; if that one scatters, the echo
+  // comes back the same way (a multipath reading of the whole path).
+  const double left = ring.max_range - hit->distance;
+  if (left <= 0) return ring.max_range;
+  Eigen::Vector3d n(hit->normal.x(), hit->normal.y(), 0.0);
+  n.normalize();
+  const Eigen::Vector3d reflected = dir - 2 * dir.dot(n) * n;
+  const Eigen::Vector3d start = hit->point + reflected * kEps;
+  const auto second = world.CastRay(start, start + reflected * left, self);
+  if (!second || Incidence(reflected, second->normal) > ring.critical_angle) return ring.max_range;
+  const double path = hit->distance + second->distance;
+  if (scatter) scatter->push_back({second->point, path});
+  return std::min(path, ring.max_range);
+}
+
+}  // namespace
+
 double EchoRange(const SimWorld& world, const RangeRingSpec& ring, const TransducerPose& t,
                  const btCollisionObject* self, std::vector<ScatterPoint>* scatter) {
   double best = ring.max_range;
-  for (int k = 0; k < ring.rays; ++k) {
-    const double offset =
-        ring.rays == 1 ? 0.0 : -ring.field_of_view / 2 + k * ring.field_of_view / (ring.rays - 1);
-    const Eigen::Vector3d dir = Heading(t.yaw + offset);
-    const auto hit = world.CastRay(t.origin, t.origin + dir * ring.max_range, self);
-    if (!hit) continue;
-    if (Incidence(dir, hit->normal) <= ring.critical_angle) {
-      best = std::min(best, hit->distance);
-      if (scatter) scatter->push_back({hit->point, hit->distance});
-      continue;
+  const double half = ring.field_of_view / 2;
+  for (int row = 0; row < ring.vertical_rays; ++row) {
+    // A circular cone: rows across its height, each as wide as the cone is at that elevation.
+    const double elevation = -half + (row + 0.5) * ring.field_of_view / ring.vertical_rays;
+    const double width = std::sqrt(std::max(half * half - elevation * elevation, 0.0));
+    for (int k = 0; k < ring.rays; ++k) {
+      const double offset = ring.rays == 1 ? 0.0 : -width + k * 2 * width / (ring.rays - 1);
+      best = std::min(best, EchoOfRay(world, ring, t.origin, Heading(t.yaw + offset, elevation),
+                                      self, scatter));
     }
-    // Specular: follow the reflected pulse to a second surface; if that one scatters, the echo
-    // comes back the same way (a multipath reading of the whole path).
-    const double left = ring.max_range - hit->distance;
-    if (left <= 0) continue;
-    Eigen::Vector3d n(hit->normal.x(), hit->normal.y(), 0.0);
-    n.normalize();
-    const Eigen::Vector3d reflected = dir - 2 * dir.dot(n) * n;
-    const Eigen::Vector3d start = hit->point + reflected * kEps;
-    const auto second = world.CastRay(start, start + reflected * left, self);
-    if (!second || Incidence(reflected, second->normal) > ring.critical_angle) continue;
-    const double path = hit->distance + second->distance;
-    if (path <= ring.max_range) best = std::min(best, path);
-    if (scatter) scatter->push_back({second->point, path});
   }
   return best;
 }
@@ -117,7 +143,7 @@ std::vector<double> SenseLaser(const SimWorld& world, const LaserSpec& laser,
   std::normal_distribution<double> noise(0.0, 1.0);
   const double step = (laser.angle_max - laser.angle_min) / (laser.beams - 1);
   for (int b = 0; b < laser.beams; ++b) {
-    const Eigen::Vector3d dir = Heading(pose.yaw + laser.angle_min + b * step);
+    const Eigen::Vector3d dir = Heading(pose.yaw + laser.angle_min + b * step, 0.0);
     const double z = noise(rng);
     const auto hit = world.CastRay(pose.origin, pose.origin + dir * laser.max_range, self);
     if (!hit) {

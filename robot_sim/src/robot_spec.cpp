@@ -107,9 +107,10 @@ void ReadDrive(YamlReader& in, const YAML::Node& node, DriveSpec& drive) {
 
 void ReadRing(YamlReader& in, const YAML::Node& node, const std::string& what,
               RangeRingSpec& ring) {
-  if (!in.ExpectMap(node, what,
-                    {"name", "kind", "link_prefix", "field_of_view", "min_range", "max_range",
-                     "rays", "critical_angle", "noise_stddev", "noise_per_metre", "fire_groups"})) {
+  if (!in.ExpectMap(
+          node, what,
+          {"name", "kind", "link_prefix", "field_of_view", "min_range", "max_range", "rays",
+           "vertical_rays", "critical_angle", "noise_stddev", "noise_per_metre", "fire_groups"})) {
     return;
   }
   ring.name = in.String(node, "name", what, true).value_or("");
@@ -128,6 +129,7 @@ void ReadRing(YamlReader& in, const YAML::Node& node, const std::string& what,
   ring.min_range = in.Number(node, "min_range", what, true, nonneg).value_or(0.0);
   ring.max_range = in.Number(node, "max_range", what, true, pos).value_or(1.0);
   ring.rays = Count(in, node, "rays", what, true, 1, 1000, 1);
+  ring.vertical_rays = Count(in, node, "vertical_rays", what, false, 1, 100, 1);
   ring.critical_angle = in.Number(node, "critical_angle", what, true, pos).value_or(1.5708);
   ring.noise_stddev = in.Number(node, "noise_stddev", what, true, nonneg).value_or(0.0);
   ring.noise_per_metre = in.Number(node, "noise_per_metre", what, false, nonneg).value_or(0.0);

@@ -70,6 +70,30 @@ TEST_F(SensorTest, SpecularPulseReturnsAsLongMultipathReading) {
   EXPECT_NEAR(r, 1.95 * std::sqrt(2.0) + 1.0, 1e-3);
 }
 
+TEST_F(SensorTest, AConeWithRowsHearsACrateBelowTheRing) {
+  // A 0.6 m high crate 2 m ahead of a transducer at 0.7 m, its 2 x 0.6 m face square on: a flat
+  // fan passes over it; a cone of three rows hears it with its lowest row (15 * 2/3 = 10
+  // degrees down meets the face at 0.35 m height, 2 / cos(10 deg) = 2.03 m away).
+  Solid crate;
+  crate.id = "low_crate";
+  crate.pose = {5.3, 3.0, 0.0};
+  crate.size_x = 0.6;
+  crate.size_y = 2.0;
+  crate.height = 0.6;
+  ASSERT_TRUE(world_.AddObstacle(crate, nullptr));
+  RangeRingSpec flat = Sonar(7);
+  EXPECT_GT(EchoRange(world_, flat, At(3.0, 3.0, 0.0), nullptr, nullptr), 4.0);  // the wall
+  RangeRingSpec cone = Sonar(7);
+  cone.vertical_rays = 3;
+  EXPECT_NEAR(EchoRange(world_, cone, At(3.0, 3.0, 0.0), nullptr, nullptr),
+              2.0 / std::cos(10 * M_PI / 180), 1e-3);
+  // 5 cm above the crate's top over its near edge, the lowest row meets the top 0.28 m on at 80
+  // degrees of incidence: glancing, no echo (the upper row's from the door 5 m on is the one).
+  EXPECT_GT(
+      EchoRange(world_, cone, TransducerPose{Vector3d(5.05, 3.0, 0.65), 0.0}, nullptr, nullptr),
+      4.0);
+}
+
 TEST_F(SensorTest, TransducersFiredTogetherHearEachOthersEchoes) {
   AddBoard();
   // Transducer 0 as above; transducer 1 at (8.5, 3) aimed at the point P = (9.2429, 5.6571)

@@ -46,7 +46,11 @@ struct RangeRingSpec {
   double field_of_view = 0.52;  ///< Full cone angle (rad), (0, pi).
   double min_range = 0.15;      ///< (m) >= 0
   double max_range = 6.5;       ///< (m) > min_range
-  int rays = 7;                 ///< Rays sampling the cone, >= 1.
+  int rays = 7;                 ///< Rays sampling the cone across, >= 1.
+  /// Rows of rays across the cone's height, >= 1: 1 is a flat fan at the mount's height (blind
+  /// to a solid below or above it); more sample a circular cone (each row as wide as the cone
+  /// at its elevation), so a Polaroid sonar hears a crate lower than its ring, as a real one.
+  int vertical_rays = 1;
   /// Incidence angle (rad) beyond which a surface reflects the pulse away (specular): the ray
   /// returns no echo, or a long multipath one. pi/2 disables specular reflection (infrared).
   double critical_angle = 0.35;
