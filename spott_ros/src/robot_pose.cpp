@@ -17,7 +17,7 @@ geometry_msgs::Pose2D Planar(const geometry_msgs::TransformStamped& t) {
 
 RobotPose Direct(const tf2::BufferCore& tf, const RobotFrames& f) {
   const auto t = tf.lookupTransform(f.map, f.base, ros::Time(0));
-  return RobotPose{Planar(t), t.header.stamp, 0.0};
+  return RobotPose{Planar(t), t.header.stamp, 0.0, std::nullopt};
 }
 
 }  // namespace
@@ -32,7 +32,8 @@ RobotPose LookupRobotPose(const tf2::BufferCore& tf, const RobotFrames& f) {
     return Direct(tf, f);  // odom is not between them; or nothing is there: Direct says which
   }
   RobotPose r;
-  r.pose = Compose(Planar(map_odom), Planar(odom_base));
+  r.odom = Planar(odom_base);
+  r.pose = Compose(Planar(map_odom), *r.odom);
   r.stamp = odom_base.header.stamp;
   r.map_to_odom_age_s = (odom_base.header.stamp - map_odom.header.stamp).toSec();
   return r;

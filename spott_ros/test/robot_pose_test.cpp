@@ -44,6 +44,9 @@ TEST_F(SilentLocalization, TheRobotPoseFollowsTheOdometryOnTheLastMapToOdom) {
   EXPECT_NEAR(r.pose.theta, M_PI / 2, 1e-6);
   EXPECT_NEAR(r.stamp.toSec(), 5.0, 1e-9);
   EXPECT_NEAR(r.map_to_odom_age_s, 3.8, 1e-6);
+  ASSERT_TRUE(r.odom);  // the odometry the pose was composed with
+  EXPECT_NEAR(r.odom->x, 2.0, 1e-6);
+  EXPECT_NEAR(r.odom->y, 0.0, 1e-6);
 }
 
 TEST(RobotPose, AFutureDatedMapToOdomHasNoAge) {
@@ -63,6 +66,7 @@ TEST(RobotPose, WithoutAnOdomFrameTheMapToBaseIsReadDirectly) {
     EXPECT_NEAR(r.pose.x, 3.0, 1e-9);
     EXPECT_NEAR(r.pose.theta, 0.2, 1e-9);
     EXPECT_EQ(r.map_to_odom_age_s, 0.0);
+    EXPECT_FALSE(r.odom);
   }
 }
 

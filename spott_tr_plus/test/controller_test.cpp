@@ -683,6 +683,22 @@ TEST_F(Controller, AnEstimateJumpTakesBackWhatWasJustSensedAndPausesMapping) {
   EXPECT_EQ(c_->estimate_jumps(), 2);
 }
 
+TEST_F(Controller, AnOdometryMessageOlderThanThePosesOdometryIsNoJump) {
+  // Turning in place on a busy machine: the odometry message from the callback queue lags the
+  // odometry tf composed the pose with by 0.45 s (0.36 rad at 0.79 rad/s) once.
+  const auto step = [&](double message_yaw, double yaw, double t) {
+    c_->SetOdometry(Pose2{23.0, 3.0, message_yaw}, 0.0, 0.79, t);
+    c_->SetPose(Pose2{24.0, 11.0, yaw}, t, Pose2{23.0, 3.0, yaw});
+  };
+  step(0.0, 0.0, 1.0);
+  step(0.04, 0.4, 1.5);
+  step(0.8, 0.8, 2.0);
+  EXPECT_EQ(c_->estimate_jumps(), 0);
+  // The estimate 1 m off where odometry puts it: a jump.
+  c_->SetPose(Pose2{25.0, 11.0, 0.8}, 2.5, Pose2{23.0, 3.0, 0.8});
+  EXPECT_EQ(c_->estimate_jumps(), 1);
+}
+
 RangeRing OneBeam(double x, double y, double yaw, double range);  // below: one sonar transducer
 
 // bonn_kidnap_tasks: 0.5 s after the unseen 70-degree turn, on the estimate that had not yet

@@ -8,6 +8,7 @@
 // the hallway's end wall that way). map -> odom changes slowly (REP-105); the odometry does not.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <geometry_msgs/Pose2D.h>
@@ -32,6 +33,10 @@ struct RobotPose {
   /// How far map -> odom's stamp lags the odometry's (s); <= 0 while the localization publishes
   /// (its transform is future-dated), growing while it is silent: the pose is dead-reckoned.
   double map_to_odom_age_s = 0.0;
+  /// The odometry part (odom -> base) the pose was composed with; empty when map -> base was
+  /// looked up directly. Whoever compares the pose with odometry uses this one: an odometry
+  /// message from a callback queue can be half a second older than tf's.
+  std::optional<geometry_msgs::Pose2D> odom;
 };
 
 /// Throws tf2::TransformException when a part is missing, and when a transform is not planar

@@ -439,7 +439,9 @@ class ControllerNode : public ControllerIo {
     try {
       const spott_ros::RobotPose r = spott_ros::LookupRobotPose(
           tf_, {params_.frame_id, params_.odom_frame, params_.base_frame});
-      core_->SetPose(Pose2{r.pose.x, r.pose.y, r.pose.theta}, Now());
+      std::optional<Pose2> odom;
+      if (r.odom) odom = Pose2{r.odom->x, r.odom->y, r.odom->theta};
+      core_->SetPose(Pose2{r.pose.x, r.pose.y, r.pose.theta}, Now(), odom);
       have_pose_ = true;
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "tr_plus_controller: no pose yet (%s)", e.what());

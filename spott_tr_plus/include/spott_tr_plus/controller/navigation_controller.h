@@ -30,6 +30,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "spott_map/map_database.h"
@@ -212,8 +213,10 @@ class NavigationController {
   void SetPlaces(const std::vector<spott_map::Place>& places);
 
   // --- The robot
-  /// The localization's estimate (map -> base_link).
-  void SetPose(const Pose2& pose, double now);
+  /// The localization's estimate (map -> base_link), with the odometry (odom -> base_link) it
+  /// was composed with when known (else the last SetOdometry's is compared with it).
+  void SetPose(const Pose2& pose, double now,
+               const std::optional<Pose2>& odom_at_pose = std::nullopt);
   /// Odometry: the pose in the odom frame and the speeds (m/s, rad/s).
   void SetOdometry(const Pose2& odom, double linear_mps, double angular_rps, double now);
   /// markov_localization's status: certain (TRACKING and not lost).
@@ -283,7 +286,7 @@ class NavigationController {
               bool defer = false);
   /// A change with `retraction` set is not itself retracted later.
   void ApplyChange(MapChange change, double now);
-  /// `before`: the robot's pose now by the correction before the jump; `after`: the new one.
+  /// `before`: the robot's pose now by the last pose and odometry since; `after`: the new one.
   void EstimateJumped(const Pose2& before, const Pose2& after, double now);
   /// Takes back the sensed features within `radius` of `at`; returns how many.
   int ClearSensedNear(const Vec2& at, double radius, double now);
@@ -336,7 +339,8 @@ class NavigationController {
     spott_map::DoorState before;
   };
   std::deque<DoorChange> recent_doors_;
-  std::optional<Pose2> correction_;  ///< map->odom of the last pose (pose composed with odom^-1).
+  /// The last pose and the odometry when it came: the next pose is predicted from them.
+  std::optional<std::pair<Pose2, Pose2>> last_pose_odom_;
   double mapping_resumes_ = -1e300;  ///< After an estimate jump: no mapping before this time.
   int estimate_jumps_ = 0;
 
