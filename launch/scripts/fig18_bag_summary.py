@@ -2,7 +2,9 @@
 """Summarizes a Fig. 18 run's bag (fig18_campaign.sh with FIG18_BAG=1) on the ground truth:
 the localization's error over the run (mean, max, time over 0.5 m), each bumper contact with
 where the robot really was and how far off the estimate was then, the map updates sent (features
-added, door states as DoorState's numbers) and the controller's last firing rule.
+added, door states as DoorState's numbers), whether world_server's copy held the controller's
+features (those the controller held from 0.3 s before a /map_features message to 0.3 s after it
+that the message lacked) and the controller's last firing rule.
 Usage: launch/scripts/fig18_bag_summary.py RUN.bag [RUN.bag ...]"""
 import bisect
 import math
@@ -18,6 +20,7 @@ def yaw_of(q):
 def summarize(path):
     truth_t, truth = [], []
     errors, contacts, updates, rules = [], [], [], []
+    life, copies = {}, []  # feature id -> [added, removed] at the owner; world_server's copies
     pressed_before = False
     with rosbag.Bag(path) as bag:
         for topic, msg, t in bag.read_messages():
@@ -44,6 +47,13 @@ def summarize(path):
                 added = len(getattr(msg, "added", []))
                 removed = len(getattr(msg, "removed", []))
                 updates.append((s, added, removed, doors))
+                for fid in getattr(msg, "removed", []):
+                    if fid in life:
+                        life[fid][1] = s
+                for f in getattr(msg, "added", []):
+                    life[f.id] = [s, float("inf")]
+            elif topic == "/map_features":
+                copies.append((s, {f.id for f in msg.features}))
             elif topic == "/tr_plus_controller/state":
                 rules.append((s, msg.firing_program, msg.firing_rule, msg.firing_action))
     print("== %s" % path)
@@ -60,6 +70,11 @@ def summarize(path):
     for s, added, removed, doors in updates:
         print("map update t=%.1f s: %d added, %d removed, doors %s" % (s, added, removed,
                                                                        " ".join(doors) or "-"))
+    lacked = sorted({fid for s, ids in copies for fid, (a, r) in life.items()
+                     if a <= s - 0.3 and r > s + 0.3 and fid not in ids})
+    if copies:
+        print("world_server's copy: %d of the controller's %d features lacked at some time%s"
+              % (len(lacked), len(life), (" (" + ", ".join(lacked[:6]) + ")") if lacked else ""))
     if rules:
         s, prog, rule, action = rules[-1]
         print("last rule t=%.1f s: %s[%d] %s" % (s, prog, rule, action))
