@@ -40,7 +40,9 @@ TEST(RobotSpecTest, Nomad200RingsComeFromTheUrdf) {
   EXPECT_NEAR(sonar->mounts[4].x, 0.0, 1e-4);
   EXPECT_NEAR(sonar->mounts[4].y, 0.2285, 1e-4);
   EXPECT_NEAR(sonar->mounts[4].z, 0.65, 1e-4);
+  EXPECT_EQ(sonar->vertical_rays, 3);  // a cone: it hears what is lower than the ring
   ASSERT_NE(nomad.FindRing("infrared"), nullptr);
+  EXPECT_EQ(nomad.FindRing("infrared")->vertical_rays, 1);
   EXPECT_EQ(nomad.FindRing("infrared")->mounts.size(), 16u);
   ASSERT_TRUE(nomad.bumper);
   EXPECT_EQ(nomad.bumper->segments, 20);
@@ -110,6 +112,18 @@ TEST(RobotSpecTest, CountsOutOfRangeOrFractionalAreRefusedByName) {
               std::string::npos)
         << errors;
   }
+  const auto rows = LoadRobotSpecFromStrings(
+      head +
+          "rings:\n  - {name: sonar, kind: ultrasound, link_prefix: sonar_, field_of_view: "
+          "0.4,\n     max_range: 6, rays: 7, vertical_rays: 0, critical_angle: 0.35}\n",
+      "bad.yaml", urdf, "b12.urdf");
+  ASSERT_FALSE(rows.ok());
+  EXPECT_NE(spott_map::FormatErrors(rows.errors).find("bad.yaml:6:"), std::string::npos)
+      << spott_map::FormatErrors(rows.errors);
+  EXPECT_NE(
+      spott_map::FormatErrors(rows.errors).find("vertical_rays must be a whole number in [1, 100]"),
+      std::string::npos)
+      << spott_map::FormatErrors(rows.errors);
   const auto bumper = LoadRobotSpecFromStrings(head + "bumper: {segments: 1e20, travel_m: 0.01}\n",
                                                "bad.yaml", urdf, "b12.urdf");
   ASSERT_FALSE(bumper.ok());
