@@ -118,12 +118,10 @@ TEST(RobotSpecTest, CountsOutOfRangeOrFractionalAreRefusedByName) {
           "0.4,\n     max_range: 6, rays: 7, vertical_rays: 0, critical_angle: 0.35}\n",
       "bad.yaml", urdf, "b12.urdf");
   ASSERT_FALSE(rows.ok());
-  EXPECT_NE(spott_map::FormatErrors(rows.errors).find("bad.yaml:6:"), std::string::npos)
-      << spott_map::FormatErrors(rows.errors);
-  EXPECT_NE(
-      spott_map::FormatErrors(rows.errors).find("vertical_rays must be a whole number in [1, 100]"),
-      std::string::npos)
-      << spott_map::FormatErrors(rows.errors);
+  const std::string rows_errors = spott_map::FormatErrors(rows.errors);
+  EXPECT_NE(rows_errors.find("bad.yaml:6:"), std::string::npos) << rows_errors;
+  EXPECT_NE(rows_errors.find("vertical_rays must be a whole number in [1, 100]"), std::string::npos)
+      << rows_errors;
   const auto bumper = LoadRobotSpecFromStrings(head + "bumper: {segments: 1e20, travel_m: 0.01}\n",
                                                "bad.yaml", urdf, "b12.urdf");
   ASSERT_FALSE(bumper.ok());

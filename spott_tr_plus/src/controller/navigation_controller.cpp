@@ -858,25 +858,23 @@ void NavigationController::SetPlaces(const std::vector<spott_map::Place>& places
 
 void NavigationController::SetPose(const Pose2& pose, double now,
                                    const std::optional<Pose2>& odom_at_pose) {
-  // The estimate moves with odometry while it tracks; a jump means the localization changed
-  // its mind about where the robot is: the last pose moved on by odometry's motion since,
-  // against the new one. The odometry must be the one the pose was composed with: a message
-  // from the callback queue lagged tf's by up to 0.5 s on a busy machine, and a robot turning
-  // at 0.79 rad/s then "jumped" 0.36 rad (the crate's sonar features were taken back and the
-  // Nomad drove into it).
+  // map->odom: where odometry's frame lies in the map. It moves smoothly while the estimate
+  // tracks; a jump means the localization changed its mind about where the robot is. The
+  // odometry must be the one the pose was composed with: a message from the callback queue
+  // lagged tf's by up to 0.5 s on a busy machine, and a robot turning at 0.79 rad/s "jumped"
+  // 0.36 rad (the crate's sonar features were taken back and the Nomad drove into it).
   const std::optional<Pose2> odom = odom_at_pose ? odom_at_pose : odom_;
   if (odom) {
-    if (last_pose_odom_) {
-      const auto& [last_pose, last_odom] = *last_pose_odom_;
-      const Pose2 motion =
-          spott_map::Compose(spott_map::MapToOdom(Pose2{0.0, 0.0, 0.0}, last_odom), *odom);
-      const Pose2 predicted = spott_map::Compose(last_pose, motion);
+    const Pose2 correction = spott_map::MapToOdom(pose, *odom);
+    if (correction_) {
+      // Where the last correction puts the robot now, against where the estimate does.
+      const Pose2 predicted = spott_map::Compose(*correction_, *odom);
       const double moved = (predicted.Position() - pose.Position()).norm();
-      const double turned = std::abs(NormalizeAngle(pose.yaw - predicted.yaw));
+      const double turned = std::abs(NormalizeAngle(correction.yaw - correction_->yaw));
       if (moved > params_.localization.jump_m || turned > params_.localization.jump_rad)
         EstimateJumped(predicted, pose, now);
     }
-    last_pose_odom_ = std::make_pair(pose, *odom);
+    correction_ = correction;
   }
   const bool first = !pose_;
   pose_ = pose;

@@ -30,7 +30,6 @@
 #include <random>
 #include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "spott_map/map_database.h"
@@ -286,7 +285,7 @@ class NavigationController {
               bool defer = false);
   /// A change with `retraction` set is not itself retracted later.
   void ApplyChange(MapChange change, double now);
-  /// `before`: the robot's pose now by the last pose and odometry since; `after`: the new one.
+  /// `before`: the robot's pose now by the correction before the jump; `after`: the new one.
   void EstimateJumped(const Pose2& before, const Pose2& after, double now);
   /// Takes back the sensed features within `radius` of `at`; returns how many.
   int ClearSensedNear(const Vec2& at, double radius, double now);
@@ -339,8 +338,7 @@ class NavigationController {
     spott_map::DoorState before;
   };
   std::deque<DoorChange> recent_doors_;
-  /// The last pose and the odometry when it came: the next pose is predicted from them.
-  std::optional<std::pair<Pose2, Pose2>> last_pose_odom_;
+  std::optional<Pose2> correction_;  ///< map->odom of the last pose (pose composed with odom^-1).
   double mapping_resumes_ = -1e300;  ///< After an estimate jump: no mapping before this time.
   int estimate_jumps_ = 0;
 
