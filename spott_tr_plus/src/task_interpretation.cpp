@@ -310,6 +310,14 @@ View ViewOf(const TargetGeometry& g, Vec robot) {
   return v;
 }
 
+// Where `at` (and the path word `to`) puts the goal point into its band: halfway in, clear of
+// the target, for anything with an extent; on the target itself for a point, which has nothing
+// to keep clear of (`go to point(x, y)` ends on (x, y), not at_distance_m / 2 short of it).
+double AtOffset(const TargetGeometry& g, const TaskInterpretationParameters& q) {
+  const bool point = g.half_length <= 0 && g.half_width <= 0 && g.polygon.empty();
+  return point ? 0.0 : q.at_distance_m / 2;
+}
+
 void SetGoal(GoalRegion& r, Vec p) {
   r.goal_x = p.x;
   r.goal_y = p.y;
@@ -402,7 +410,7 @@ GoalRegion DestinationRegion(const std::string& p, const Target& t, const Target
   // A room or hallway named bare or with in/inside is a place to be in; along it, its length.
   if (IsRoomWord(t.word) && (p.empty() || p == "in" || p == "inside")) return Inside(r, v);
   if (IsRoomWord(t.word) && p == "along") return AlongInside(r, v, robot, q);
-  if (p.empty() || p == "at") return Band(r, v, 0, q.at_distance_m, q.at_distance_m / 2);
+  if (p.empty() || p == "at") return Band(r, v, 0, q.at_distance_m, AtOffset(g, q));
   if (p == "against") return Band(r, v, 0, q.against_distance_m, q.against_distance_m / 2);
   if (p == "near" || p == "by") return Band(r, v, 0, q.near_distance_m, q.near_distance_m / 2);
   if (p == "around") {
@@ -510,7 +518,7 @@ GoalRegion PathGoalRegion(const TargetGeometry& pg, Vec robot,
   r.tolerance = p.goal_tolerance_m;
   View v = ViewOf(pg, robot);
   v.toward_robot = Unit(robot - v.center, Vec{1, 0});
-  return Band(r, v, 0, p.at_distance_m, p.at_distance_m / 2);
+  return Band(r, v, 0, p.at_distance_m, AtOffset(pg, p));
 }
 
 // --- The whole command ---------------------------------------------------------------------------

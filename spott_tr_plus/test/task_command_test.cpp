@@ -241,6 +241,21 @@ TEST(TaskInterpretation, DistancePrepositions) {
   EXPECT_NEAR(at.goal->goal_y, 0.0, 1e-9);
 }
 
+// A point has no extent to keep clear of: `to` and `at` aim at the point itself (Fig. 18's
+// `go to point(x, y)` aimed 0.15 m short of it and, with Navigate's 0.25 m tolerance, ended up
+// to 0.40 m away on the ground truth). `near` still aims halfway into its wider band.
+TEST(TaskInterpretation, ToOrAtAPointAimsAtThePoint) {
+  for (const char* text : {"go to point(4, 0)", "go at point(4, 0)", "go point(4, 0)"}) {
+    const TaskInterpretation in = Interpret(text);
+    ASSERT_TRUE(in.goal) << text;
+    EXPECT_NEAR(in.goal->goal_x, 4.0, 1e-9) << text;
+    EXPECT_NEAR(in.goal->goal_y, 0.0, 1e-9) << text;
+    EXPECT_TRUE(in.goal->Contains(4.29, 0.0)) << text;  // the band: within at_distance_m
+    EXPECT_FALSE(in.goal->Contains(4.31, 0.0)) << text;
+  }
+  EXPECT_NEAR(Interpret("go near point(4, 0)").goal->goal_x, 3.5, 1e-9);
+}
+
 TEST(TaskInterpretation, DeicticPrepositionsAreSeenFromTheRobot) {
   struct Case {
     const char* prep;

@@ -115,7 +115,7 @@ TEST_F(TaskMapTest, WithoutAPrioriMapTheGoalIsTheGeometrys) {
   const GoalRegion geometric = Goal("go to point(5, 2)", 1, 1, false);
   EXPECT_DOUBLE_EQ(r.interpretation->goal->goal_x, geometric.goal_x);
   EXPECT_DOUBLE_EQ(r.interpretation->goal->goal_y, geometric.goal_y);
-  EXPECT_NEAR(std::hypot(geometric.goal_x - 5, geometric.goal_y - 2), 0.15, 0.01);  // "to": at it
+  EXPECT_NEAR(std::hypot(geometric.goal_x - 5, geometric.goal_y - 2), 0.0, 1e-9);  // "to": on it
   // With the building's rooms the same robot outside every room is refused (nothing to fit in).
   EXPECT_FALSE(InterpretTask(*p.command, -50, -50, 0, params_, map_, resolve_).ok());
 }
