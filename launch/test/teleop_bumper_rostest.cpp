@@ -73,12 +73,15 @@ TEST_F(TeleopBumper, BumperContactTakesTheWheelsBacksOffRecordsHandsBackAndTheTa
   EXPECT_TRUE(handed_back) << "the reflex did not hand the wheels back";
   // The contact is in the map: a contact feature on the box's east face (x = 26.2).
   bool recorded = false;
+  std::string contacts;
   for (const auto& f : watch_->features()) {
     if (f.id.rfind("contact_", 0) != 0 || f.points.empty()) continue;
     recorded =
         recorded || (std::abs(f.points[0].x - 26.2) < 0.25 && std::abs(f.points[0].y - 8.25) < 0.6);
+    contacts += " " + f.id + " (" + std::to_string(f.points[0].x) + ", " +
+                std::to_string(f.points[0].y) + ")";
   }
-  EXPECT_TRUE(recorded) << "no contact feature at the box";
+  EXPECT_TRUE(recorded) << "no contact feature at the box; contacts:" << contacts;
   bool reflex_fired = false;
   for (const std::string& rule : r->trace) {
     reflex_fired = reflex_fired || rule.rfind("BUMPER_CHECK[1]", 0) == 0;
