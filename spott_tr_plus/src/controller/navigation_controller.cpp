@@ -454,7 +454,8 @@ void NavigationController::Bind(Registry& r) {
           // gives up; what is really there is sensed again.
           if (!ok && pose_ && params_.tasks.clear_radius_m > 0.0) {
             const int cleared =
-                ClearSensedNear(pose_->Position(), std::numeric_limits<double>::infinity(), c.now);
+                ClearSensedNear(pose_->Position(), std::numeric_limits<double>::infinity(),
+                                /*contacts=*/true, c.now);
             if (cleared > 0) {
               t->message += "; all " + std::to_string(cleared) + " sensed features taken back";
               ok = Interpret(*t, c.now, &why);
@@ -694,6 +695,22 @@ bool NavigationController::PoseTrusted(double now) const {
          now >= mapping_resumes_;
 }
 
+// The spot of the door nearest the robot when its state was sensed, moved as the jump moves what
+// was sensed near the robot: still on the door's opening, clear of its ends.
+bool NavigationController::StillOnTheDoor(const DoorChange& c,
+                                          const std::function<Vec2(const Vec2&)>& move) const {
+  const spott_map::Door* door = db_.graph().FindDoor(c.door);
+  if (!door || !c.robot || door->opening.Length() <= 0.0) return false;
+  const Vec2 spot = spott_map::ClosestPointOnSegment(*c.robot, door->opening);
+  if ((spot - *c.robot).norm() > params_.localization.keep_radius_m) return false;
+  const Vec2 moved = move(spot);
+  const Vec2 along = door->opening.Direction();
+  const double t = (moved - door->opening.a).dot(along);
+  const double margin = params_.doors.end_margin_m;
+  return spott_map::DistancePointSegment(moved, door->opening) <= params_.doors.match_m &&
+         t >= margin && t <= door->opening.Length() - margin;
+}
+
 // The estimate jumped: the features sensed in the seconds before were placed where the robot
 // was believed to be, not where it was. Take them back (those near the robot move with it: the
 // sensor measured them from the robot), drop the evidence not yet confirmed, and map nothing
@@ -731,24 +748,42 @@ void NavigationController::EstimateJumped(const Pose2& before, const Pose2& afte
   // Door states too: sensed on the wrong pose, a closed door read open (bonn_kidnap_tasks: 0.5 s
   // after the unseen turn, door_n4 "sensed open" went to the global planner and into the
   // localization's map while it relocalized). A door changed twice gets its state from before
-  // both.
+  // both. But a door sensed close by whose sensed spot the jump leaves on its opening was sensed
+  // right either way: door.test's 1.8 m leaf, read closed 0.6 m ahead, was taken back by a 0.3 m
+  // slip along the hallway, and the localization's map, open there again, then disagreed with
+  // the leaf and pulled the estimate 3 m away.
   std::map<std::string, spott_map::DoorState> restore;
+  std::deque<DoorChange> kept;  // sensed from where the jump moves the robot: a later jump
+                                // may take them back still
   while (!recent_doors_.empty() &&
          recent_doors_.back().time >= now - params_.localization.retract_s) {
-    restore[recent_doors_.back().door] = recent_doors_.back().before;  // the oldest wins
+    DoorChange c = recent_doors_.back();
     recent_doors_.pop_back();
+    const bool superseded = std::any_of(kept.begin(), kept.end(),
+                                        [&](const DoorChange& k) { return k.door == c.door; });
+    if (superseded) continue;  // newest first: what an older change sensed is past
+    if (StillOnTheDoor(c, move)) {
+      c.robot = move(*c.robot);
+      kept.push_front(std::move(c));  // newer changes taken back go back to what it sensed
+    } else {
+      restore[c.door] = c.before;  // the oldest wins
+    }
   }
-  recent_doors_.clear();
+  recent_doors_ = std::move(kept);
   for (const auto& [door, state] : restore) change.doors.emplace_back(door, state);
   change.retraction = true;
   ApplyChange(std::move(change), now);
 }
 
-int NavigationController::ClearSensedNear(const Vec2& at, double radius, double now) {
+int NavigationController::ClearSensedNear(const Vec2& at, double radius, bool contacts,
+                                          double now) {
   MapChange change;
   for (const std::string& id : added_ids_) {
     const spott_map::MapFeature* f = db_.FindFeature(id);
-    if (f && f->DistanceTo(at) <= radius) change.removed.push_back(id);
+    if (!f || f->DistanceTo(at) > radius) continue;
+    const auto sensor = f->attributes.find("sensor");
+    if (!contacts && sensor != f->attributes.end() && sensor->second == "contact") continue;
+    change.removed.push_back(id);
   }
   const int n = static_cast<int>(change.removed.size());
   // The evidence behind them goes too: else the next Take() would add them again at once.
@@ -790,8 +825,10 @@ void NavigationController::ApplyChange(MapChange change, double now) {
     if (db_.SetDoorState(id, state)) {
       sent.doors.emplace_back(id, state);
       doors = true;
-      if (!change.retraction && known && before != state)
-        recent_doors_.push_back({now, id, before});
+      if (!change.retraction && known && before != state) {
+        recent_doors_.push_back(
+            {now, id, before, pose_ ? std::optional<Vec2>(pose_->Position()) : std::nullopt});
+      }
     }
   }
   while (!recent_doors_.empty() &&
@@ -1086,7 +1123,9 @@ void NavigationController::NavigateFailed(Ticket owner, const std::string& messa
     return;
   }
   if (pose_ && params_.tasks.clear_radius_m > 0.0) {
-    const int cleared = ClearSensedNear(pose_->Position(), params_.tasks.clear_radius_m, now);
+    // Contacts go only before the last retry: the conservative reset, then the aggressive one.
+    const bool last = task_->failures == params_.tasks.navigate_retries;
+    const int cleared = ClearSensedNear(pose_->Position(), params_.tasks.clear_radius_m, last, now);
     if (cleared > 0) {
       std::ostringstream note;
       note << "; " << cleared << " sensed features within " << params_.tasks.clear_radius_m

@@ -141,10 +141,12 @@ struct TaskParameters {
   int navigate_retries = 2;        ///< Navigate failures retried before the task fails, >= 0.
   double retry_delay_s = 2.0;      ///< Wait before a retry (s), >= 0.
   /// Before a retry, the features the controller sensed within this distance of the robot are
-  /// taken back (m), >= 0; 0: none. move_base's clearing recovery: a contact at a jamb or echoes
-  /// placed under a wrong estimate may be what cuts the robot off; what is really there the
-  /// sensors put back. When the goal then still cannot be fitted in the free space, every
-  /// sensed feature is taken back (move_base's aggressive reset) before the task fails.
+  /// taken back (m), >= 0; 0: none. move_base's clearing recovery: echoes placed under a wrong
+  /// estimate, or a door jamb's corner read on a sonar cone's axis, may be what cuts the robot
+  /// off; what is really there the sensors put back. Bumper contacts stay until the last retry:
+  /// only another collision would put them back (teleop_bumper: cleared at once, the robot hit
+  /// the same box face again). When the goal then still cannot be fitted in the free space,
+  /// every sensed feature is taken back (move_base's aggressive reset) before the task fails.
   double clear_radius_m = 1.5;
   /// A GO task is done early (before Navigate's success) only when the estimate lies this far
   /// inside its goal region (m), >= 0: the estimate is some cm off, and a robot stopped at the
@@ -287,8 +289,9 @@ class NavigationController {
   void ApplyChange(MapChange change, double now);
   /// `before`: the robot's pose now by the correction before the jump; `after`: the new one.
   void EstimateJumped(const Pose2& before, const Pose2& after, double now);
-  /// Takes back the sensed features within `radius` of `at`; returns how many.
-  int ClearSensedNear(const Vec2& at, double radius, double now);
+  /// Takes back the sensed features within `radius` of `at`, bumper contacts only if
+  /// `contacts`; returns how many.
+  int ClearSensedNear(const Vec2& at, double radius, bool contacts, double now);
   /// The estimate may be acted on (sensed features placed with it, a GO judged reached on it):
   /// certain, fresh and settled after the last jump.
   bool PoseTrusted(double now) const;
@@ -331,13 +334,17 @@ class NavigationController {
   std::map<std::string, int> next_id_;
   std::vector<std::string> added_ids_;
   std::deque<std::pair<double, std::string>> recent_ids_;  ///< (time added, id), for retraction.
-  /// Door states the controller changed (time, door, state before), for retraction alike.
+  /// Door states the controller changed (time, door, state before, the robot's position by
+  /// the estimate then), for retraction alike.
   struct DoorChange {
     double time;
     std::string door;
     spott_map::DoorState before;
+    std::optional<Vec2> robot;
   };
   std::deque<DoorChange> recent_doors_;
+  /// After an estimate jump that moves what was sensed by `move`: the door's state stands.
+  bool StillOnTheDoor(const DoorChange& c, const std::function<Vec2(const Vec2&)>& move) const;
   std::optional<Pose2> correction_;  ///< map->odom of the last pose (pose composed with odom^-1).
   double mapping_resumes_ = -1e300;  ///< After an estimate jump: no mapping before this time.
   int estimate_jumps_ = 0;
