@@ -599,6 +599,28 @@ TEST_F(Controller, ARetryThatCannotFitTheGoalTakesBackEverySensedFeatureFirst) {
   EXPECT_TRUE(sent) << "the other copies of the map are told";
 }
 
+// teleop_bumper (2026-12-06): the reflex ended with the robot's side still on the box; the
+// arbiter refused every command towards the contact and nothing fired again for 90 s. A contact
+// still pressed reflex/repeat_s after its reflex ended fires BUMPER_CHECK again.
+TEST_F(Controller, AContactStillPressedAfterItsReflexFiresItAgain) {
+  const Vec2 contact(5.0, 8.25 + kRadius);
+  std::size_t features = 0;
+  for (double t = 0.1; t < 12.0; t += 0.05) {
+    At(5.0, 8.25, 0.0, t);  // held: the reflex's commands do not move it
+    c_->Bumper({M_PI / 2}, t);
+    if (c_->NextWakeTime() <= t) c_->Advance(t);
+    c_->Tick(t);
+    if (t < 8.0) features = c_->added_features().size();
+  }
+  ASSERT_EQ(features, 1u);
+  // The first reflex gives up after reflex/timeout_s (8 s) and hands the wheels back; 1 s later
+  // the contact, still pressed at the same point, takes them again.
+  ASSERT_GE(io_.releases.size(), 1u);
+  EXPECT_EQ(io_.takes, (std::vector<std::string>{"reflex", "reflex"}));
+  EXPECT_EQ(c_->added_features().size(), 1u) << "the same contact mapped twice";
+  EXPECT_LT((c_->map().FindFeature("contact_1")->points[0] - contact).norm(), 1e-6);
+}
+
 TEST_F(Controller, AContactAtADoorsJambWithTheEstimateOffIsNotANewObstacle) {
   // The robot touches the west jamb of d_201 (the wall y in [9.425, 9.575] ends at x = 3.55)
   // behind it on the left; the estimate (3.88, 9.34) is 0.1 m off in x and 0.05 m in y and the
@@ -1260,6 +1282,33 @@ TEST(MoveAway, NeverDrivesTheBodyIntoTheKnownStructure) {
   ASSERT_TRUE(v);
   EXPECT_DOUBLE_EQ(v->linear_mps, -p.speed_mps);
   EXPECT_FALSE(off.blocked());
+}
+
+// teleop_bumper (2026-12-06): the low box at the robot's side, the hallway's wall 0.27 m off its
+// other side. "Away" (0.3 m, across the axis) is not clear and backing along the axis moves no
+// farther from the contact: the reflex went as far as was clear instead of giving up.
+TEST(MoveAway, GoesAsFarAsIsClearWhenTheDistanceAskedIsNot) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  KnownStructure known;
+  known.Build(db);
+  ReflexParameters p;
+  // In hall_w facing east, the north wall's face at y = 9.425: 0.2665 m beside the body.
+  Pose2 at{5.0, 8.93, 0.0};
+  MoveAway side(Vec2(5.0, 8.93 - kRadius), 0.3, at, 0.0, p, &known, kRadius);
+  double t = 0.0;
+  int steps = 0;
+  for (; t < p.timeout_s; t += 0.05, ++steps) {
+    const auto v = side.Step(at, t);
+    if (!v) break;
+    at.yaw += v->angular_rps * 0.05;
+    at.x += v->linear_mps * std::cos(at.yaw) * 0.05;
+    at.y += v->linear_mps * std::sin(at.yaw) * 0.05;
+  }
+  EXPECT_FALSE(side.blocked());
+  EXPECT_FALSE(side.timed_out());
+  EXPECT_GT(steps, 10);
+  EXPECT_GT(at.y - 8.93, 0.15) << "moved away " << at.y - 8.93 << " m";
+  EXPECT_LT(at.y + kRadius, 9.425) << "the body met the wall";
 }
 
 TEST(Teleop, ANewObstacleAheadIsAvoidedAndTheCommandedDirectionKeptOtherwise) {

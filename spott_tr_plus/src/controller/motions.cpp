@@ -29,6 +29,8 @@ std::vector<std::string> ValidateParameters(const ReflexParameters& p) {
     v.push_back(Violation("infrared_close_m", "> 0", p.infrared_close_m));
   if (!(p.known_tolerance_m >= 0))
     v.push_back(Violation("known_tolerance_m", ">= 0", p.known_tolerance_m));
+  if (!(p.repeat_s > 0 && p.repeat_s <= 60))
+    v.push_back(Violation("repeat_s", "in (0, 60]", p.repeat_s));
   return v;
 }
 
@@ -51,20 +53,22 @@ std::vector<std::string> ValidateParameters(const TeleopParameters& p) {
 MoveAway::MoveAway(const Vec2& source, double distance_m, const Pose2& start, double now_s,
                    const ReflexParameters& params, const KnownStructure* known, double radius_m)
     : source_(source),
+      start_distance_m_((start.Position() - source).norm()),
+      asked_m_(std::max(0.0, distance_m)),
       target_distance_m_((start.Position() - source).norm() + std::max(0.0, distance_m)),
       started_s_(now_s),
       params_(params),
       known_(known),
       radius_m_(radius_m) {}
 
-bool MoveAway::Clear(const Vec2& at, double heading, double length_m) const {
-  if (!known_) return true;
+double MoveAway::FreeRun(const Vec2& at, double heading, double length_m) const {
+  if (!known_) return length_m;
   // A body already touching (the contact's own wall, or one the estimate puts it into) is
   // checked with the radius it has room for: moving off the structure stays possible, moving
   // further into it does not.
   const double radius = std::min(radius_m_, known_->Clearance(at, radius_m_ + 0.1) - 0.01);
-  if (radius <= 0.0) return true;  // the centre on the structure: the estimate is no help
-  return known_->FreeRun(at, heading, radius, length_m) >= length_m;
+  if (radius <= 0.0) return length_m;  // the centre on the structure: the estimate is no help
+  return known_->FreeRun(at, heading, radius, length_m);
 }
 
 std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
@@ -96,8 +100,16 @@ std::optional<Velocity> MoveAway::Step(const Pose2& pose, double now_s) {
       v.linear_mps = (forwards ? 1.0 : -1.0) * params_.speed_mps;
       return v;
     }
-    blocked_ = true;
-    return std::nullopt;
+    // Neither: as far "away" as is clear, if that is half the distance asked (teleop_bumper: the
+    // box at the robot's side, the hallway's wall 0.27 m off its other side; blocked, the reflex
+    // left it touching the box).
+    const double free = FreeRun(pose.Position(), aligned ? axis : want, run) - 0.02;
+    if (d + free - start_distance_m_ < 0.5 * asked_m_) {
+      blocked_ = true;
+      return std::nullopt;
+    }
+    if (free < 0.01) return std::nullopt;  // as far as was clear
+    target_distance_m_ = d + free;
   }
   if (!aligned) {
     v.angular_rps = std::copysign(params_.turn_rps, error);  // turn in place first

@@ -993,11 +993,18 @@ void NavigationController::Bumper(const std::vector<double>& pressed_angles_rad,
   }
   const double a = pose_->yaw + std::atan2(sy, sx);
   const Vec2 p = pose_->Position() + params_.robot_radius_m * Vec2(std::cos(a), std::sin(a));
-  if (!contact_.empty() && (contact_[0] - p).norm() < 0.05) return;  // the same contact
-  const bool rising = contact_.empty();
+  // BUMPER_CHECK's action is ballistic: it starts when bumper_contact turns true. Still pressed
+  // a while after its reflex ended, the reflex did not free the robot (the arbiter then refuses
+  // every command towards the contact): the condition goes false and true again, so the rule
+  // fires again.
+  const bool reflex_over = reflexes_.empty() && reflex_ended_s_ >= contact_raised_s_;
+  const bool again =
+      !contact_.empty() && reflex_over && now - reflex_ended_s_ >= params_.reflex.repeat_s;
+  if (!contact_.empty() && (contact_[0] - p).norm() < 0.05 && !again) return;  // the same
   contact_ = {p};
+  contact_raised_s_ = now;
+  if (again) interpreter_->SetCondition("bumper_contact", false, now);
   interpreter_->SetCondition("bumper_contact", true, now, {std::vector<double>{p.x(), p.y()}});
-  (void)rising;
   Settle(now);
 }
 
@@ -1288,6 +1295,7 @@ void NavigationController::DriveMotions(double now) {
   // The reflexes: the newest one drives; the wheels are handed back when the last is done.
   for (auto it = reflexes_.begin(); it != reflexes_.end();) {
     if (!(*it)->motion.Step(*pose_, now)) {
+      reflex_ended_s_ = now;
       Complete((*it)->ticket, !(*it)->motion.timed_out());
       it = reflexes_.erase(it);
     } else {

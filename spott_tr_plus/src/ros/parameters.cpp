@@ -113,6 +113,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("reflex/timeout_s", x.timeout_s, "s");
   r.Get("reflex/infrared_close_m", x.infrared_close_m, "m");
   r.Get("reflex/known_tolerance_m", x.known_tolerance_m, "m");
+  r.Get("reflex/repeat_s", x.repeat_s, "s");
   auto& t = c.teleop;
   r.Get("teleop/stop_distance_m", t.stop_distance_m, "m");
   r.Get("teleop/lookahead_m", t.lookahead_m, "m");

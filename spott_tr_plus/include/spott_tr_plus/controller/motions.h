@@ -32,6 +32,10 @@ struct ReflexParameters {
   /// and the bumper's travel, rounded up. At 0.1 m contacts at door jambs were mapped as new
   /// obstacles that closed the door.
   double known_tolerance_m = 0.15;
+  /// A contact still pressed this long after its reflex ended fires the reflex again (s), > 0:
+  /// the condition holds, so the rule fires again (teleop_bumper: the robot's side stayed on the
+  /// box, the arbiter refused every forward command and nothing moved for 90 s).
+  double repeat_s = 1.0;
 };
 
 std::vector<std::string> ValidateParameters(const ReflexParameters& p);
@@ -59,10 +63,16 @@ class MoveAway {
   const Vec2& source() const { return source_; }
 
  private:
-  /// The body can drive `length_m` from `at` along `heading` without meeting known structure.
-  bool Clear(const Vec2& at, double heading, double length_m) const;
+  /// How far (up to `length_m`) the body can drive from `at` along `heading` without meeting
+  /// known structure.
+  double FreeRun(const Vec2& at, double heading, double length_m) const;
+  bool Clear(const Vec2& at, double heading, double length_m) const {
+    return FreeRun(at, heading, length_m) >= length_m;
+  }
 
   Vec2 source_;
+  double start_distance_m_;  ///< From the source when the motion started.
+  double asked_m_;           ///< The distance to move away.
   double target_distance_m_;
   double started_s_;
   ReflexParameters params_;

@@ -364,7 +364,9 @@ class NavigationController {
   RangeRing sonar_, infrared_;
   Pose2 sonar_pose_, infrared_pose_;
   double sonar_time_ = -1e300, infrared_time_ = -1e300;
-  std::vector<Vec2> contact_;  ///< The pressed contact point (map), empty when none.
+  std::vector<Vec2> contact_;         ///< The pressed contact point (map), empty when none.
+  double contact_raised_s_ = -1e300;  ///< bumper_contact last set true.
+  double reflex_ended_s_ = -1e300;    ///< A reflex's motion last ended.
 
   std::unique_ptr<Task> task_;
   std::vector<std::unique_ptr<Task>> finishing_;  ///< Ended: reported once their scan settled.
