@@ -88,6 +88,10 @@ TEST_F(TeleopBumper, BumperContactTakesTheWheelsBacksOffRecordsHandsBackAndTheTa
   }
   EXPECT_TRUE(reflex_fired) << Describe(r);
   EXPECT_EQ(r->outcome, "reached") << Describe(r);
+  // Judged where the robot comes to rest: at the answer it may still be braking towards the
+  // goal (0.36 m from it at the answer, 0.27 m at rest, 2026-12-06).
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (watch_->speed() >= 0.02 && ros::WallTime::now() < until) ros::WallDuration(0.05).sleep();
   EXPECT_LT((watch_->position() - spott_map::Vec2(24.0, 8.25)).norm(), 0.35);
 }
 
