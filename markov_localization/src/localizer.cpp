@@ -46,6 +46,24 @@ std::shared_ptr<const LocalizationModels> LocalizationModels::Build(
   return m;
 }
 
+std::shared_ptr<const LocalizationModels> LocalizationModels::Build(
+    std::shared_ptr<const MapModel> map, const std::vector<SensorModelParameters>& sensor_params,
+    int num_headings, const std::shared_ptr<const LocalizationModels>& previous) {
+  const bool reuse = previous && map && previous->map && previous->num_headings == num_headings &&
+                     previous->sensors.size() == sensor_params.size() &&
+                     map->SameRaster(*previous->map);
+  if (!reuse) return Build(std::move(map), sensor_params, num_headings);
+  for (std::size_t i = 0; i < sensor_params.size(); ++i)
+    if (!(sensor_params[i] == previous->sensors[i]->parameters()))
+      return Build(std::move(map), sensor_params, num_headings);
+  auto m = std::make_shared<LocalizationModels>();
+  m->map = std::move(map);
+  m->num_headings = num_headings;
+  for (const auto& s : previous->sensors)
+    m->sensors.push_back(std::make_unique<SensorModel>(*s, *previous->map, *m->map));
+  return m;
+}
+
 Localizer::Localizer(std::shared_ptr<const LocalizationModels> models,
                      const LocalizerParameters& params)
     : models_(std::move(models)), params_(params), sticky_(params.sticky) {

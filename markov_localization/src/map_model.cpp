@@ -216,6 +216,30 @@ void MapModel::ComputeStates(double clearance_m, const std::vector<std::uint8_t>
   for (auto s : state_) num_state_cells_ += s;
 }
 
+bool MapModel::SameRaster(const MapModel& other) const {
+  return width_ == other.width_ && height_ == other.height_ && resolution_ == other.resolution_ &&
+         origin_ == other.origin_ && subdivision_ == other.subdivision_ &&
+         surface_inside_cells_ == other.surface_inside_cells_ && fine_width_ == other.fine_width_ &&
+         fine_height_ == other.fine_height_ && fine_occupied_.size() == other.fine_occupied_.size();
+}
+
+std::optional<spott_map::Box> MapModel::OccupancyChangedFrom(const MapModel& other) const {
+  int x0 = fine_width_, y0 = fine_height_, x1 = -1, y1 = -1;
+  for (int fy = 0; fy < fine_height_; ++fy) {
+    const std::size_t row = static_cast<std::size_t>(fy) * fine_width_;
+    for (int fx = 0; fx < fine_width_; ++fx) {
+      if (fine_occupied_[row + fx] == other.fine_occupied_[row + fx]) continue;
+      x0 = std::min(x0, fx);
+      y0 = std::min(y0, fy);
+      x1 = std::max(x1, fx);
+      y1 = std::max(y1, fy);
+    }
+  }
+  if (x1 < 0) return std::nullopt;
+  const double fres = resolution_ / subdivision_;
+  return spott_map::Box{origin_ + fres * Vec2(x0, y0), origin_ + fres * Vec2(x1 + 1, y1 + 1)};
+}
+
 bool MapModel::FineOccupiedAt(const Vec2& p) const {
   const double fres = resolution_ / subdivision_;
   const int fx = static_cast<int>(std::floor((p.x() - origin_.x()) / fres));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "worker_pool.h"
 
@@ -59,9 +60,10 @@ namespace {
 // pulse reflects and the echo is the whole path to a second surface that scatters (a corner), or
 // none (max range).
 double EchoRange(const MapModel& map, const Vec2& from, double angle, double max_range,
-                 double critical_angle, bool with_depth = false) {
+                 double critical_angle, bool with_depth = false, double* first_leg = nullptr) {
   const MapModel::Hit first = map.RayCastHit(from, angle, max_range);
   if (!first.hit) return max_range;
+  if (first_leg) *first_leg = first.range_m;
   const double cos_critical = std::cos(critical_angle) - 1e-9;
   const double dx = std::cos(angle), dy = std::sin(angle);
   if ((first.x_face ? std::abs(dx) : std::abs(dy)) >= cos_critical)
@@ -79,7 +81,38 @@ double EchoRange(const MapModel& map, const Vec2& from, double angle, double max
   return std::min(max_range, first.range_m + second.range_m + (with_depth ? second.depth_m : 0.0));
 }
 
+double DistanceToBox(const Vec2& p, const spott_map::Box& b) {
+  return (b.min - p).cwiseMax(p - b.max).cwiseMax(Vec2::Zero()).norm();
+}
+
+// Whether the segment from `from` along unit `dir` for `length` meets box `b` (slabs).
+bool SegmentMeetsBox(const Vec2& from, const Vec2& dir, double length, const spott_map::Box& b) {
+  double lo = 0.0, hi = length;
+  for (int i = 0; i < 2; ++i) {
+    if (std::abs(dir[i]) < 1e-12) {
+      if (from[i] < b.min[i] || from[i] > b.max[i]) return false;
+      continue;
+    }
+    double t0 = (b.min[i] - from[i]) / dir[i], t1 = (b.max[i] - from[i]) / dir[i];
+    if (t0 > t1) std::swap(t0, t1);
+    lo = std::max(lo, t0);
+    hi = std::min(hi, t1);
+    if (lo > hi) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+bool operator==(const SensorModelParameters& a, const SensorModelParameters& b) {
+  return a.beam_angles_rad == b.beam_angles_rad && a.sensor_offset_m == b.sensor_offset_m &&
+         a.beam_origins_m == b.beam_origins_m && a.max_range_m == b.max_range_m &&
+         a.beam_width_rad == b.beam_width_rad && a.critical_angle_rad == b.critical_angle_rad &&
+         a.range_bin_m == b.range_bin_m && a.sigma_hit_m == b.sigma_hit_m &&
+         a.lambda_short_per_m == b.lambda_short_per_m && a.z_hit == b.z_hit &&
+         a.z_short == b.z_short && a.z_max == b.z_max && a.z_rand == b.z_rand &&
+         a.likelihood_exponent == b.likelihood_exponent;
+}
 
 SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorModelParameters& params)
     : params_(params), num_headings_(num_headings) {
@@ -125,21 +158,18 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   }
   // Reads shifted past the first or last cell land in padding that holds the max-range bin.
   pad_ = static_cast<std::size_t>(max_shift);
-  expected_.assign(num_cells_ * num_headings + 2 * pad_, static_cast<std::uint8_t>(max_bin));
+  rays_.assign(num_cells_ * num_headings + 2 * pad_, static_cast<std::uint8_t>(max_bin));
+  first_.assign(num_cells_ * num_headings, kNoEcho);
   // One ray per state cell and heading: the node's start waits for these (3.5 s for cim_office's
   // sonar and profiles on one core), so the headings' rows are filled on both cores.
   auto fill_row = [&](int d) {
-    const double angle = d * heading_res;
-    const Vec2 offset(params.sensor_offset_m * std::cos(angle),
-                      params.sensor_offset_m * std::sin(angle));
-    std::uint8_t* row = expected_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
+    std::uint8_t* row = rays_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
+    std::uint8_t* first = first_.data() + static_cast<std::size_t>(d) * num_cells_;
     for (int iy = 0; iy < map.height(); ++iy) {
       for (int ix = 0; ix < map.width(); ++ix) {
         if (!map.IsState(ix, iy)) continue;
-        const double range = EchoRange(map, map.CellCentre(ix, iy) + offset, angle,
-                                       params.max_range_m, params.critical_angle_rad);
-        const int bin = RangeBin(range);
-        row[map.Index(ix, iy)] = static_cast<std::uint8_t>(bin);
+        const std::size_t c = map.Index(ix, iy);
+        std::tie(row[c], first[c]) = CastRay(map, ix, iy, d);
       }
     }
   };
@@ -149,29 +179,143 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   } else {
     for (int d = 0; d < num_headings; ++d) fill_row(d);
   }
+  rays_cast_ = map.NumStateCells() * static_cast<std::size_t>(num_headings);
   // A beam with an opening angle reads the nearest echo in its cone: the shortest of the rays
   // of the heading bins within +-beam_width / 2.
-  const int half_cone =
-      static_cast<int>(std::floor(0.5 * params.beam_width_rad / heading_res + 1e-9));
-  half_cone_ = half_cone;
-  if (half_cone > 0) {
-    const std::vector<std::uint8_t> rays = expected_;
+  half_cone_ = static_cast<int>(std::floor(0.5 * params.beam_width_rad / heading_res + 1e-9));
+  expected_ = rays_;
+  if (half_cone_ > 0) {
     for (int d = 0; d < num_headings; ++d) {
       std::uint8_t* row = expected_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
-      for (int k = -half_cone; k <= half_cone; ++k) {
+      for (int k = -half_cone_; k <= half_cone_; ++k) {
         const int dk = ((d + k) % num_headings + num_headings) % num_headings;
-        const std::uint8_t* ray = rays.data() + pad_ + static_cast<std::size_t>(dk) * num_cells_;
+        const std::uint8_t* ray = rays_.data() + pad_ + static_cast<std::size_t>(dk) * num_cells_;
         for (std::size_t c = 0; c < num_cells_; ++c) row[c] = std::min(row[c], ray[c]);
       }
     }
   }
-  std::vector<double> histogram(num_bins_, 0.0);
-  for (int d = 0; d < num_headings; ++d) {
-    const std::uint8_t* row = ExpectedRow(d);
-    for (std::size_t c = 0; c < num_cells_; ++c)
-      if (map.state_mask()[c]) histogram[row[c]] += 1.0;
-  }
+  ComputeTable();
+  ComputeAverages(map);
+}
 
+SensorModel::SensorModel(const SensorModel& previous, const MapModel& previous_map,
+                         const MapModel& map)
+    : SensorModel(previous) {
+  if (!map.SameRaster(previous_map) || map.NumCells() != num_cells_)
+    throw std::invalid_argument("SensorModel: the new map's raster differs from the previous");
+  const std::uint8_t max_bin = static_cast<std::uint8_t>(num_bins_ - 1);
+  const auto changed = map.OccupancyChangedFrom(previous_map);
+  // A ray is cast again when its cell became a state, or when its path in the old map came
+  // within a fine cell of the changed box: a path that kept off it meets the same cells in both
+  // maps. The path: the first leg up to its echo, then the specular leg, which lies within the
+  // rest of the range around the first echo.
+  const double margin = map.resolution() / map.subdivision();
+  const spott_map::Box box = changed ? changed->Inflated(margin) : spott_map::Box{};
+  std::vector<std::pair<std::size_t, bool>> cells;  // (cell, every ray)
+  std::vector<std::size_t> dropped;                 // states no more
+  for (int iy = 0; iy < map.height(); ++iy) {
+    for (int ix = 0; ix < map.width(); ++ix) {
+      const std::size_t c = map.Index(ix, iy);
+      const bool was = previous_map.IsState(ix, iy), is = map.IsState(ix, iy);
+      if (was && !is) dropped.push_back(c);
+      if (!is) continue;
+      if (!was) {
+        cells.emplace_back(c, true);
+      } else if (changed && DistanceToBox(map.CellCentre(ix, iy), box) <=
+                                params_.max_range_m + params_.sensor_offset_m) {
+        cells.emplace_back(c, false);
+      }
+    }
+  }
+  std::vector<std::uint8_t> touched(num_cells_, 0);
+  for (std::size_t c : dropped) {
+    touched[c] = 1;
+    for (int d = 0; d < num_headings_; ++d) {
+      const std::size_t at = static_cast<std::size_t>(d) * num_cells_ + c;
+      rays_[pad_ + at] = expected_[pad_ + at] = max_bin;
+      first_[at] = kNoEcho;
+    }
+  }
+  const double bin_m = params_.range_bin_m;
+  // The cells whose rays were cast again, per direction (each written by one thread).
+  std::vector<std::vector<std::size_t>> recast_cells(num_headings_);
+  auto recast = [&](int d) {
+    const double angle = d * 2.0 * M_PI / num_headings_;
+    const Vec2 dir(std::cos(angle), std::sin(angle));
+    std::uint8_t* row = rays_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
+    std::uint8_t* first = first_.data() + static_cast<std::size_t>(d) * num_cells_;
+    for (const auto& [c, every] : cells) {
+      const int ix = static_cast<int>(c % map.width()), iy = static_cast<int>(c / map.width());
+      if (!every) {
+        const Vec2 from = map.CellCentre(ix, iy) + params_.sensor_offset_m * dir;
+        // Bins hold ranges to half a bin above their centre.
+        const double reach = row[c] >= max_bin ? params_.max_range_m : (row[c] + 0.5) * bin_m;
+        const bool echo = first[c] != kNoEcho;
+        const double leg = echo ? std::min(reach, (first[c] + 0.5) * bin_m) : reach;
+        bool near = SegmentMeetsBox(from, dir, leg, box);
+        if (!near && echo && reach > (first[c] - 0.5) * bin_m) {
+          // The specular leg starts at the first echo (within half a bin) and runs the rest.
+          const Vec2 at = from + first[c] * bin_m * dir;
+          near = DistanceToBox(at, box) <= reach - (first[c] - 0.5) * bin_m + 0.5 * bin_m;
+        }
+        if (!near) continue;
+      }
+      std::tie(row[c], first[c]) = CastRay(map, ix, iy, d);
+      recast_cells[d].push_back(c);
+    }
+  };
+  if (WorkerThreadsEnabled()) {
+    WorkerPool pool;
+    pool.Run(num_headings_, recast);
+  } else {
+    for (int d = 0; d < num_headings_; ++d) recast(d);
+  }
+  rays_cast_ = 0;
+  for (const auto& row : recast_cells) {
+    rays_cast_ += row.size();
+    for (std::size_t c : row) touched[c] = 1;
+  }
+  std::vector<std::size_t> cone_cells;
+  for (std::size_t c = 0; c < num_cells_; ++c)
+    if (touched[c] && map.state_mask()[c]) cone_cells.push_back(c);
+  // The cone again where a ray changed, row by row (a row's cells lie together in memory).
+  auto cone = [&](int d) {
+    std::uint8_t* row = expected_.data() + pad_ + static_cast<std::size_t>(d) * num_cells_;
+    for (std::size_t c : cone_cells) {
+      std::uint8_t best = max_bin;
+      for (int k = -half_cone_; k <= half_cone_; ++k) {
+        const int dk = ((d + k) % num_headings_ + num_headings_) % num_headings_;
+        best = std::min(best, rays_[pad_ + static_cast<std::size_t>(dk) * num_cells_ + c]);
+      }
+      row[c] = best;
+    }
+  };
+  if (WorkerThreadsEnabled()) {
+    WorkerPool pool;
+    pool.Run(num_headings_, cone);
+  } else {
+    for (int d = 0; d < num_headings_; ++d) cone(d);
+  }
+  ComputeAverages(map);
+}
+
+std::pair<std::uint8_t, std::uint8_t> SensorModel::CastRay(const MapModel& map, int ix, int iy,
+                                                           int d) const {
+  const double angle = d * 2.0 * M_PI / num_headings_;
+  const Vec2 offset(params_.sensor_offset_m * std::cos(angle),
+                    params_.sensor_offset_m * std::sin(angle));
+  double first = params_.max_range_m;
+  const double range = EchoRange(map, map.CellCentre(ix, iy) + offset, angle, params_.max_range_m,
+                                 params_.critical_angle_rad, /*with_depth=*/false, &first);
+  // Bins up to 254 (ValidateParameters), so kNoEcho is no bin.
+  const std::uint8_t first_bin =
+      first >= params_.max_range_m ? kNoEcho : static_cast<std::uint8_t>(RangeBin(first));
+  return {static_cast<std::uint8_t>(RangeBin(range)), first_bin};
+}
+
+void SensorModel::ComputeTable() {
+  const SensorModelParameters& params = params_;
+  const int max_bin = num_bins_ - 1;
   // P(z | e): the mixture, integrated over each bin and normalized over the bins.
   table_.assign(static_cast<std::size_t>(num_bins_) * num_bins_, 0.0);
   const double bw = params.range_bin_m;
@@ -207,7 +351,15 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
       row[z] = p;
     }
   }
+}
 
+void SensorModel::ComputeAverages(const MapModel& map) {
+  std::vector<double> histogram(num_bins_, 0.0);
+  for (int d = 0; d < num_headings_; ++d) {
+    const std::uint8_t* row = ExpectedRow(d);
+    for (std::size_t c = 0; c < num_cells_; ++c)
+      if (map.state_mask()[c]) histogram[row[c]] += 1.0;
+  }
   // P~(z) = (1/|L|) sum_l P(z | l): every beam sees the same average under a uniform belief,
   // since its absolute direction is uniform over the heading bins.
   double total = 0.0;
@@ -224,7 +376,7 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
   for (int e = 0; e < num_bins_; ++e)
     for (int z = 0; z < num_bins_; ++z)
       ratio_[e * num_bins_ + z] =
-          static_cast<float>(std::pow(Likelihood(e, z) / average_[z], params.likelihood_exponent));
+          static_cast<float>(std::pow(Likelihood(e, z) / average_[z], params_.likelihood_exponent));
 }
 
 double SensorModel::ExpectedRange(const MapModel& map, const Pose2& pose, int b) const {

@@ -308,6 +308,64 @@ TEST(Localizer, AnOpenGateWaitsJoinSForASlowSensorAndJoinsOnlyReadingsTakenSince
   EXPECT_THROW(loc.OnReading(2, desk, odom, t), std::invalid_argument);
 }
 
+// A door's state changes in the map database: the models are built from the current ones,
+// casting only the rays that can reach the door, and equal a full build bin for bin (sonar
+// physics: cone and specular second legs; the doorway's cells leave or join the states).
+TEST(LocalizationModels, AnIncrementalBuildEqualsAFullOneAndCastsFewRays) {
+  const spott_map::World world = testing::LoadWorld("cim_office");
+  MapModelParameters mp;
+  mp.resolution_m = 0.25;
+  mp.ray_cast_subdivision = 5;
+  auto open = std::make_shared<const MapModel>(MapModel::FromWorld(world, mp));
+  spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(world);
+  ASSERT_TRUE(db.SetDoorState("d_lab_w", spott_map::DoorState::kClosed));
+  auto closed = std::make_shared<const MapModel>(MapModel::FromDatabase(world, db, mp));
+  ASSERT_TRUE(closed->SameRaster(*open));
+  ASSERT_TRUE(closed->OccupancyChangedFrom(*open));
+  SensorModelParameters sonar;
+  sonar.beam_angles_rad = SonarRingAngles(16);
+  sonar.sensor_offset_m = 0.2;
+  sonar.max_range_m = 6.5;
+  sonar.beam_width_rad = 0.4;
+  sonar.critical_angle_rad = 0.4;
+  const int nt = 72;
+  const auto full_open = LocalizationModels::Build(open, {sonar}, nt);
+  const auto full_closed = LocalizationModels::Build(closed, {sonar}, nt);
+  const auto closing = LocalizationModels::Build(closed, {sonar}, nt, full_open);
+  const auto opening = LocalizationModels::Build(open, {sonar}, nt, closing);
+  const auto same = [&](const LocalizationModels& a, const LocalizationModels& b) {
+    const SensorModel& x = *a.sensors[0];
+    const SensorModel& y = *b.sensors[0];
+    int differ = 0;
+    for (int d = 0; d < nt; ++d)
+      for (std::size_t c = 0; c < a.map->NumCells(); ++c)
+        differ += x.ExpectedBin(d, c) != y.ExpectedBin(d, c);
+    EXPECT_EQ(differ, 0);
+    for (int z = 0; z < x.num_bins(); ++z) {
+      EXPECT_NEAR(x.AverageLikelihood(z), y.AverageLikelihood(z), 1e-12);
+      for (int e = 0; e < x.num_bins(); ++e) EXPECT_EQ(x.Ratio(e, z), y.Ratio(e, z));
+    }
+  };
+  same(*closing, *full_closed);
+  same(*opening, *full_open);
+  // Tables that must differ do (the beam through the doorway), and few rays were cast.
+  bool through = false;
+  for (int d = 0; d < nt; ++d)
+    for (std::size_t c = 0; c < open->NumCells(); ++c)
+      through = through || full_open->sensors[0]->ExpectedBin(d, c) !=
+                               full_closed->sensors[0]->ExpectedBin(d, c);
+  EXPECT_TRUE(through);
+  EXPECT_LT(closing->sensors[0]->rays_cast(), full_closed->sensors[0]->rays_cast() / 10)
+      << closing->sensors[0]->rays_cast() << " of " << full_closed->sensors[0]->rays_cast();
+  EXPECT_LT(opening->sensors[0]->rays_cast(), full_open->sensors[0]->rays_cast() / 10);
+  // Another raster: a full build.
+  MapModelParameters coarse = mp;
+  coarse.resolution_m = 0.3;
+  auto other = std::make_shared<const MapModel>(MapModel::FromWorld(world, coarse));
+  const auto rebuilt = LocalizationModels::Build(other, {sonar}, nt, full_open);
+  EXPECT_EQ(rebuilt->sensors[0]->rays_cast(), other->NumStateCells() * nt);
+}
+
 TEST(Localizer, ANewMapKeepsTheBeliefWhereTheStatesRemain) {
   // bonn_department; then door_b closes (a map update): the belief in room B stays there.
   spott_map::World world = testing::LoadWorld("bonn_department");

@@ -118,6 +118,12 @@ class MapModel {
   };
   Hit RayCastHit(const Vec2& from, double angle_rad, double max_range_m) const;
 
+  /// Both maps have the same cells and the same beam raster (a map database's maps of one world).
+  bool SameRaster(const MapModel& other) const;
+  /// The box (map frame) of the fine cells whose occupancy differs from `other`'s: a door
+  /// opened or closed, a feature added. Nullopt when none does. Requires SameRaster(other).
+  std::optional<spott_map::Box> OccupancyChangedFrom(const MapModel& other) const;
+
  private:
   void ComputeStates(double clearance_m, const std::vector<std::uint8_t>& unknown);
   bool FineOccupied(int fx, int fy) const {

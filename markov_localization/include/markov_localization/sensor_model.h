@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "markov_localization/map_model.h"
@@ -57,6 +58,7 @@ struct SensorModelParameters {
 };
 
 std::vector<std::string> ValidateParameters(const SensorModelParameters& params);
+bool operator==(const SensorModelParameters& a, const SensorModelParameters& b);
 
 /// A 24-beam ring, 15 degrees apart, beam 0 straight ahead (the B21's sonar ring).
 std::vector<double> SonarRingAngles(int count = 24);
@@ -66,10 +68,18 @@ class SensorModel {
   /// Precomputes the tables for `map` and `num_headings` heading bins (bin k is heading
   /// k * 2 pi / num_headings). Throws std::invalid_argument on invalid parameters.
   SensorModel(const MapModel& map, int num_headings, const SensorModelParameters& params);
+  /// The tables for `map` from `previous`, built on `previous_map` with the same raster
+  /// (MapModel::SameRaster): a door opened or closed re-casts only the rays that can reach the
+  /// cells whose occupancy changed (a ray's whole path, its specular leg included, lies within its
+  /// range of its origin), and the cells that became states; the result equals a full build.
+  /// Throws std::invalid_argument when the rasters differ.
+  SensorModel(const SensorModel& previous, const MapModel& previous_map, const MapModel& map);
 
   const SensorModelParameters& parameters() const { return params_; }
   int num_bins() const { return num_bins_; }  ///< Range bins; the last is max range.
   int num_headings() const { return num_headings_; }
+  /// Rays cast to build these tables (a full build: every state cell in every direction).
+  std::size_t rays_cast() const { return rays_cast_; }
   std::size_t num_cells() const { return num_cells_; }  ///< Cells of the map it was built on.
   int num_beams() const { return static_cast<int>(beam_offsets_.size()); }
   /// Heading-bin offset of beam b (its angle rounded to the heading grid).
@@ -113,6 +123,14 @@ class SensorModel {
   float Ratio(int expected, int z) const { return ratio_[expected * num_bins_ + z]; }
 
  private:
+  static constexpr std::uint8_t kNoEcho = 255;  ///< first_: the first leg met nothing.
+  /// The ray from cell (ix, iy) in heading bin d: its expected bin and its first leg's bin.
+  std::pair<std::uint8_t, std::uint8_t> CastRay(const MapModel& map, int ix, int iy, int d) const;
+  /// table_ from the parameters.
+  void ComputeTable();
+  /// average_, expected_log_ and ratio_ from table_ and the expected bins of `map`'s states.
+  void ComputeAverages(const MapModel& map);
+
   SensorModelParameters params_;
   int num_headings_ = 0;
   int num_bins_ = 0;
@@ -123,10 +141,13 @@ class SensorModel {
   std::vector<std::ptrdiff_t> shift_;   // [beam][direction]: cells to the origin's cell
   std::size_t pad_ = 0;                 // max-range cells before and after the tables
   std::vector<std::uint8_t> expected_;  // pad, [direction][cell], pad
-  std::vector<double> table_;           // [expected][z]
-  std::vector<double> average_;         // [z]
-  std::vector<float> ratio_;            // [expected][z]
-  std::vector<double> expected_log_;    // [expected]
+  std::vector<std::uint8_t> rays_;      // like expected_, one ray per direction (before the cone)
+  std::vector<std::uint8_t> first_;     // [direction][cell]: a ray's first leg's bin, or kNoEcho
+  std::size_t rays_cast_ = 0;
+  std::vector<double> table_;         // [expected][z]
+  std::vector<double> average_;       // [z]
+  std::vector<float> ratio_;          // [expected][z]
+  std::vector<double> expected_log_;  // [expected]
 };
 
 }  // namespace markov_localization

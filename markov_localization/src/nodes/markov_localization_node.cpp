@@ -251,8 +251,10 @@ class LocalizationNode {
     queued_map_.reset();
     const auto sensors = sensor_params_;
     const int nt = models_->num_headings;
-    rebuild_ = std::async(std::launch::async, [map, sensors, nt] {
-      return ml::LocalizationModels::Build(map, sensors, nt);
+    // From the current models: a door's change casts only the rays that can reach it.
+    std::shared_ptr<const ml::LocalizationModels> previous = models_;
+    rebuild_ = std::async(std::launch::async, [map, sensors, nt, previous] {
+      return ml::LocalizationModels::Build(map, sensors, nt, previous);
     });
   }
 
@@ -266,7 +268,12 @@ class LocalizationNode {
       models_ = models;
       map_ = models->map;
       active_ = std::make_unique<ml::ActiveLocalizer>(*map_, *models_->sensors[0], params_.active);
-      LogMap("map replaced (belief carried over)");
+      std::size_t cast = 0;
+      for (const auto& sensor : models_->sensors) cast += sensor->rays_cast();
+      const std::string what = "map replaced (belief carried over, " + std::to_string(cast) +
+                               " rays cast for " + std::to_string(models_->sensors.size()) +
+                               " sensors)";
+      LogMap(what.c_str());
     } catch (const std::exception& e) {
       ROS_ERROR("markov_localization: the new map's models failed: %s (keeping the old)", e.what());
     }
