@@ -43,44 +43,34 @@ Maps& CimOffice() {
   return *m;
 }
 
-void Report(benchmark::State& state, const ml::LocalizationModels& models, const Maps& m) {
-  state.counters["rays_cast"] = static_cast<double>(models.sensors[0]->rays_cast());
-  state.counters["rays_full"] = static_cast<double>(m.closed->NumStateCells() * 180);
-}
+enum class Build { kFullClosed, kClosedFromOpen, kOpenFromClosed };
 
-// The peer: what the node did on every map update before.
-void BM_DoorClosed_FullBuild(benchmark::State& state) {
+// kFullClosed is the peer: what the node did on every map update before.
+void BM_DoorChange(benchmark::State& state, Build build) {
   Maps& m = CimOffice();
+  const bool closing = build != Build::kOpenFromClosed;
+  const auto& map = closing ? m.closed : m.open;
+  const std::shared_ptr<const ml::LocalizationModels> previous = build == Build::kFullClosed
+                                                                     ? nullptr
+                                                                 : closing ? m.open_models
+                                                                           : m.closed_models;
   std::shared_ptr<const ml::LocalizationModels> built;
   for (auto _ : state) {
-    built = ml::LocalizationModels::Build(m.closed, {m.sonar}, 180);
+    built = ml::LocalizationModels::Build(map, {m.sonar}, 180, previous);
     benchmark::DoNotOptimize(built.get());
   }
-  Report(state, *built, m);
+  state.counters["rays_cast"] = static_cast<double>(built->sensors[0]->rays_cast());
+  state.counters["rays_full"] = static_cast<double>(map->NumStateCells() * 180);
 }
-BENCHMARK(BM_DoorClosed_FullBuild)->Unit(benchmark::kMillisecond)->Iterations(3);
-
-void BM_DoorClosed_FromTheOpenModels(benchmark::State& state) {
-  Maps& m = CimOffice();
-  std::shared_ptr<const ml::LocalizationModels> built;
-  for (auto _ : state) {
-    built = ml::LocalizationModels::Build(m.closed, {m.sonar}, 180, m.open_models);
-    benchmark::DoNotOptimize(built.get());
-  }
-  Report(state, *built, m);
-}
-BENCHMARK(BM_DoorClosed_FromTheOpenModels)->Unit(benchmark::kMillisecond)->Iterations(10);
-
-void BM_DoorOpened_FromTheClosedModels(benchmark::State& state) {
-  Maps& m = CimOffice();
-  std::shared_ptr<const ml::LocalizationModels> built;
-  for (auto _ : state) {
-    built = ml::LocalizationModels::Build(m.open, {m.sonar}, 180, m.closed_models);
-    benchmark::DoNotOptimize(built.get());
-  }
-  Report(state, *built, m);
-}
-BENCHMARK(BM_DoorOpened_FromTheClosedModels)->Unit(benchmark::kMillisecond)->Iterations(10);
+BENCHMARK_CAPTURE(BM_DoorChange, closed_full_build, Build::kFullClosed)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK_CAPTURE(BM_DoorChange, closed_from_the_open_models, Build::kClosedFromOpen)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
+BENCHMARK_CAPTURE(BM_DoorChange, opened_from_the_closed_models, Build::kOpenFromClosed)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
 
 }  // namespace
 
