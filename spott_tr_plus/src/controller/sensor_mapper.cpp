@@ -57,6 +57,15 @@ std::vector<std::string> ValidateParameters(const MappingParameters& p) {
   positive("cluster_gap_m", p.cluster_gap_m);
   if (!(p.mapless_extent_m >= 5 && p.mapless_extent_m <= 200))
     v.push_back(Violation("mapless_extent_m", "in [5, 200]", p.mapless_extent_m));
+  positive("echo_tolerance_m", p.echo_fit.tolerance_base_m);
+  non_negative("echo_tolerance_per_m", p.echo_fit.tolerance_per_m);
+  if (!(p.echo_fit.max_incidence_rad >= 0 && p.echo_fit.max_incidence_rad < M_PI / 2))
+    v.push_back(Violation("sonar_max_incidence_rad", "in [0, pi/2)", p.echo_fit.max_incidence_rad));
+  if (!(p.echo_fit.max_direction_error_rad > 0 && p.echo_fit.max_direction_error_rad < 1))
+    v.push_back(
+        Violation("echo_max_direction_error_rad", "in (0, 1)", p.echo_fit.max_direction_error_rad));
+  if (p.echoes_per_cell < 1 || p.echoes_per_cell > 64)
+    v.push_back(Violation("echoes_per_cell", "in [1, 64]", p.echoes_per_cell));
   return v;
 }
 
@@ -244,6 +253,15 @@ void SensorMapper::Beam(const Vec2& from, double angle, double range, bool echo,
   const std::size_t index = Index(ix, iy);
   if (flags_[index] & (kKnown | kBlocked | kDoor | kOutside)) return;
   score_[index] = static_cast<std::int8_t>(std::min(p_.max_score, score_[index] + hit));
+  if (half_cone > 0.0) {  // a sonar's: the fusion fits walls and corners to the latest echoes
+    std::vector<SonarEcho>& heard = heard_[index];
+    const SonarEcho e{from, angle, range, half_cone};
+    if (heard.size() < static_cast<std::size_t>(p_.echoes_per_cell)) {
+      heard.push_back(e);
+    } else {
+      heard[echoes_[index].n % heard.size()] = e;
+    }
+  }
   echoes_[index].Add(from + range * dir);
   if (score_[index] >= p_.confirm_score && !(flags_[index] & kConfirmed)) {
     flags_[index] |= kConfirmed;
@@ -372,6 +390,7 @@ void SensorMapper::AddPoints(const Vec2& origin, const std::vector<Vec2>& points
 void SensorMapper::Forget() {
   std::fill(score_.begin(), score_.end(), 0);
   std::fill(echoes_.begin(), echoes_.end(), EchoMean{});
+  heard_.clear();
   for (std::uint8_t& f : flags_) f &= static_cast<std::uint8_t>(~kConfirmed);
   pending_.clear();
   for (auto& [id, votes] : door_votes_) votes = 0;
@@ -459,12 +478,17 @@ SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
     }
     if (cluster.empty()) continue;
     std::vector<Vec2> cells;
+    std::vector<std::vector<SonarEcho>> heard;  // each cell's sonar echoes
+    bool any_heard = false;
     spott_map::Box box{centre(cluster[0]), centre(cluster[0])};
     std::unordered_set<std::size_t> members(cluster.begin(), cluster.end());
     for (const std::size_t k : cluster) {
       // Where its echoes fell, not the cell's centre: a wall's echoes straddle two rows of
       // cells, and a fit through the centres tilted short segments by up to 14 degrees.
       cells.push_back(echoes_[k].n > 0 ? echoes_[k].Mean() : centre(k));
+      const auto it = heard_.find(k);
+      heard.push_back(it != heard_.end() ? it->second : std::vector<SonarEcho>{});
+      any_heard = any_heard || !heard.back().empty();
       box.min = box.min.cwiseMin(cells.back());
       box.max = box.max.cwiseMax(cells.back());
     }
@@ -485,16 +509,33 @@ SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
       }
       return false;
     };
+    std::vector<spott_map::MapFeature> fused = FuseIntoSegments(
+        cells, p_.segment_residual_m, p_.cell_m, any_heard ? &heard : nullptr, p_.echo_fit);
+    // ... or the features fused now (the echoes' reflections lie off the cells: a wall's cells
+    // are its echoes' axis points).
+    const auto renewed = [&](const Vec2& q) {
+      for (const spott_map::MapFeature& f : fused)
+        if (f.DistanceTo(q) <= cover) return true;
+      return false;
+    };
+    for (const spott_map::MapFeature& f : fused) {
+      const spott_map::Box b = f.Bounds();
+      box.min = box.min.cwiseMin(b.min);
+      box.max = box.max.cwiseMax(b.max);
+    }
     for (const spott_map::MapFeature* f :
          db.FeaturesIn({box.min - Vec2::Constant(cover), box.max + Vec2::Constant(cover)})) {
       if (!IsOwn(*f) || f->points.empty()) continue;
       bool all = true;
       const Vec2 a = f->points.front(), b = f->points.back();
       const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * p_.cell_m))));
-      for (int i = 0; i <= n && all; ++i) all = covered(a + (b - a) * (double(i) / n));
+      for (int i = 0; i <= n && all; ++i) {
+        const Vec2 q = a + (b - a) * (double(i) / n);
+        all = covered(q) || renewed(q);
+      }
       if (all) replaced.push_back(f->id);
     }
-    for (spott_map::MapFeature& f : FuseIntoSegments(cells, p_.segment_residual_m, p_.cell_m)) {
+    for (spott_map::MapFeature& f : fused) {
       f.source = spott_map::FeatureSource::kSensed;
       f.attributes["sensor"] = sensor_;
       batch.features.push_back(std::move(f));
@@ -529,23 +570,25 @@ struct AxisFit {
   double tmin = 0, tmax = 0, worst = 0;
 };
 
-AxisFit FitAxis(const std::vector<Vec2>& cells) {
+using Group = std::vector<std::size_t>;  // indices into the cells
+
+AxisFit FitAxis(const std::vector<Vec2>& cells, const Group& g) {
   AxisFit f;
   f.mean = Vec2::Zero();
-  for (const Vec2& c : cells) f.mean += c;
-  f.mean /= static_cast<double>(cells.size());
+  for (const std::size_t i : g) f.mean += cells[i];
+  f.mean /= static_cast<double>(g.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Vec2& c : cells) cov += (c - f.mean) * (c - f.mean).transpose();
+  for (const std::size_t i : g) cov += (cells[i] - f.mean) * (cells[i] - f.mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
   f.axis = eig.eigenvectors().col(1).normalized();  // the largest eigenvalue's
   const Vec2 normal(-f.axis.y(), f.axis.x());
   f.tmin = 1e300;
   f.tmax = -1e300;
-  for (const Vec2& c : cells) {
-    const double t = (c - f.mean).dot(f.axis);
+  for (const std::size_t i : g) {
+    const double t = (cells[i] - f.mean).dot(f.axis);
     f.tmin = std::min(f.tmin, t);
     f.tmax = std::max(f.tmax, t);
-    f.worst = std::max(f.worst, std::abs((c - f.mean).dot(normal)));
+    f.worst = std::max(f.worst, std::abs((cells[i] - f.mean).dot(normal)));
   }
   return f;
 }
@@ -553,67 +596,272 @@ AxisFit FitAxis(const std::vector<Vec2>& cells) {
 // Split: recursively at the median along the principal axis until each group lies within
 // `residual` of its axis (`residual` counts from the cells' squares, not their centres: echoes
 // of one wall spread over two or three rows of cells).
-void Split(const std::vector<Vec2>& cells, double residual, int depth,
-           std::vector<std::vector<Vec2>>& out) {
-  if (cells.size() == 1) {
-    out.push_back(cells);
+void Split(const std::vector<Vec2>& cells, const Group& g, double residual, int depth,
+           std::vector<Group>& out) {
+  if (g.size() == 1) {
+    out.push_back(g);
     return;
   }
-  const AxisFit fit = FitAxis(cells);
+  const AxisFit fit = FitAxis(cells, g);
   if (fit.worst <= residual || depth >= 8) {
-    out.push_back(cells);
+    out.push_back(g);
     return;
   }
-  std::vector<double> t(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) t[i] = (cells[i] - fit.mean).dot(fit.axis);
+  std::vector<double> t(g.size());
+  for (std::size_t k = 0; k < g.size(); ++k) t[k] = (cells[g[k]] - fit.mean).dot(fit.axis);
   std::vector<double> sorted = t;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double median = sorted[sorted.size() / 2];
-  std::vector<Vec2> low, high;
-  for (std::size_t i = 0; i < cells.size(); ++i) (t[i] < median ? low : high).push_back(cells[i]);
+  Group low, high;
+  for (std::size_t k = 0; k < g.size(); ++k) (t[k] < median ? low : high).push_back(g[k]);
   if (low.empty() || high.empty()) {  // all on one side of the median: split in halves
-    low.assign(cells.begin(), cells.begin() + cells.size() / 2);
-    high.assign(cells.begin() + cells.size() / 2, cells.end());
+    low.assign(g.begin(), g.begin() + g.size() / 2);
+    high.assign(g.begin() + g.size() / 2, g.end());
   }
-  Split(low, residual, depth + 1, out);
-  Split(high, residual, depth + 1, out);
+  Split(cells, low, residual, depth + 1, out);
+  Split(cells, high, residual, depth + 1, out);
+}
+
+spott_map::MapFeature SegmentOrPoint(const Vec2& a, const Vec2& b, double cell_m) {
+  if ((b - a).norm() < 0.9 * cell_m) return spott_map::MakePoint("", 0.5 * (a + b), "");
+  return spott_map::MakeSegment("", spott_map::Segment{a, b}, "", 0.0);
+}
+
+// An echo placed on a wall's line: where it reflected (t along the line), the range the wall
+// predicts, the echo (null: a cell without echoes, an earlier feature's sample).
+struct Foot {
+  double t = 0.0, predicted = 0.0;
+  const SonarEcho* echo = nullptr;
+};
+
+// Where a wall ends, and how many of its echoes the end's edge explains better. Beyond a wall's
+// end (a doorway's jamb) a transducer still hears it, from the edge, while the edge is in its
+// cone: the range is then the edge's distance, up to range (1 / cos(half cone) - 1) longer than
+// the wall's foot, less than the noise each (the doorway "larger-than-life", SPOTT section V),
+// but many echoes together tell it. `side` +1: the end at the larger t, -1: the other. The end
+// is the t (among the echoes' feet near that end) with the least squared residuals, echoes on
+// the wall's side of it heard from the wall, those beyond it from the edge there (an echo whose
+// cone does not hold the edge cannot lie beyond). Cells without echoes stay on the wall.
+struct WallEnd {
+  double t = 0.0;
+  int edge_echoes = 0;
+};
+WallEnd FindWallEnd(const std::vector<Foot>& run, const Vec2& foot, const Vec2& u, double side,
+                    const EchoFitParameters& p) {
+  // The run's feet from this end inwards, as far as an edge at the end can be heard.
+  std::vector<const Foot*> near;
+  const Foot& last = side > 0 ? run.back() : run.front();
+  double reach = 0.0;
+  for (std::size_t n = 0; n < run.size(); ++n) {
+    const Foot& f = side > 0 ? run[run.size() - 1 - n] : run[n];
+    if (f.echo) reach = std::max(reach, f.echo->range * std::tan(f.echo->half_cone + 0.05));
+    if (side * (last.t - f.t) > reach) break;
+    near.push_back(&f);
+  }
+  WallEnd best{last.t, 0};
+  double best_cost = 1e300;
+  for (std::size_t c = 0; c < near.size(); ++c) {
+    const double te = near[c]->t;  // the end at this foot: near[0 .. c-1] lie beyond it
+    const Vec2 edge = foot + te * u;
+    double cost = 0.0;
+    int beyond = 0;
+    for (std::size_t k = 0; k < near.size() && cost < best_cost; ++k) {
+      const Foot& f = *near[k];
+      if (!f.echo) {
+        if (k < c) cost = 1e300;  // an earlier feature reached there: the wall does
+        continue;
+      }
+      if (k >= c) {
+        cost += std::pow(f.echo->range - f.predicted, 2);
+        continue;
+      }
+      const Vec2 d = edge - f.echo->from;
+      if (std::abs(std::remainder(std::atan2(d.y(), d.x()) - f.echo->axis, 2 * M_PI)) >
+          f.echo->half_cone + 0.05) {
+        cost = 1e300;
+        continue;
+      }
+      cost += std::pow(f.echo->range - d.norm(), 2);
+      ++beyond;
+    }
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = {te, beyond};
+    }
+  }
+  return best;
+}
+
+// A cluster fused from its sonar echoes (sonar_echo_fit.h), one reflector at a time (sequential
+// RANSAC): each group of cells proposes the wall and the corner that explain its echoes not
+// explained yet; the proposal that explains the cluster's remaining echoes best (MSAC cost; a
+// corner must cost under 0.7 of the wall: a wall's echoes over a short stretch fit a point too)
+// is kept and its echoes taken out, until none explains 3. A wall's segments span where its
+// echoes reflected (not their axis points, which run on past its end), cut where they leave a
+// gap; a wall whose direction its echoes do not fix is kept as points. Cells without echoes (an
+// earlier feature's samples, after Forget) extend a wall they lie on.
+void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& groups,
+                    const std::vector<std::vector<SonarEcho>>& echoes, double cell_m,
+                    const EchoFitParameters& p, std::vector<spott_map::MapFeature>& out) {
+  std::vector<SonarEcho> all;
+  std::vector<std::size_t> owner;  // each echo's group
+  std::vector<Vec2> bare;
+  std::vector<AxisFit> fits;
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    fits.push_back(FitAxis(cells, groups[gi]));
+    for (const std::size_t i : groups[gi]) {
+      if (echoes[i].empty()) bare.push_back(cells[i]);
+      for (const SonarEcho& e : echoes[i]) {
+        all.push_back(e);
+        owner.push_back(gi);
+      }
+    }
+  }
+  std::vector<bool> used(all.size(), false), bare_used(bare.size(), false);
+  const auto z2 = [](double residual, double tol) {
+    const double z = 2.0 * residual / tol;
+    return std::min(z * z, 4.0);
+  };
+  struct Proposal {
+    bool wall = false;
+    EchoLine line;
+    EchoPoint corner;
+    std::vector<std::size_t> inliers;  // into `all`
+    double cost = 1e300;
+  };
+  for (std::size_t round = 0; round < 2 * groups.size() + 2; ++round) {
+    Proposal best;
+    for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+      std::vector<SonarEcho> local;
+      Vec2 sensors = Vec2::Zero();
+      for (std::size_t k = 0; k < all.size(); ++k) {
+        if (used[k] || owner[k] != gi) continue;
+        local.push_back(all[k]);
+        sensors += all[k].from;
+      }
+      if (local.size() < 3) continue;
+      sensors /= static_cast<double>(local.size());
+      Vec2 n0(-fits[gi].axis.y(), fits[gi].axis.x());
+      if (n0.dot(sensors - fits[gi].mean) < 0) n0 = -n0;  // toward the transducers
+      Proposal wall, corner;
+      wall.wall = true;
+      wall.line = FitEchoLine(local, std::atan2(n0.y(), n0.x()), 0.4, p);
+      corner.corner = FitEchoPoint(local, fits[gi].mean, p);
+      wall.cost = corner.cost = 0.0;
+      for (std::size_t k = 0; k < all.size(); ++k) {
+        if (used[k]) continue;
+        const SonarEcho& e = all[k];
+        const double tol = EchoTolerance(e, p);
+        const auto predicted =
+            PredictEcho(e, wall.line.normal, wall.line.offset, p.max_incidence_rad);
+        const double rw = predicted ? std::abs(predicted->range - e.range) : 1e9;
+        wall.cost += z2(rw, tol);
+        if (rw <= tol) wall.inliers.push_back(k);
+        const Vec2 d = corner.corner.at - e.from;
+        double rc = 1e9;
+        if (d.norm() > 1e-6 && std::abs(std::remainder(std::atan2(d.y(), d.x()) - e.axis,
+                                                       2 * M_PI)) <= e.half_cone + 0.05)
+          rc = std::abs(d.norm() - e.range);
+        corner.cost += z2(rc, tol);
+        if (rc <= tol) corner.inliers.push_back(k);
+      }
+      if (wall.line.inliers.empty()) wall.cost = 1e300;
+      // Seen over a short stretch a wall's echoes fit a point too: a corner must then do
+      // clearly better, unless the wall's direction is not fixed either.
+      if (wall.line.direction_error_rad <= p.max_direction_error_rad) corner.cost /= 0.7;
+      for (Proposal* c : {&corner, &wall})  // a tie (one spot heard alone): the corner
+        if (c->inliers.size() >= 3 && c->cost < best.cost) best = std::move(*c);
+    }
+    if (best.inliers.size() < 3) break;
+    for (const std::size_t k : best.inliers) used[k] = true;
+    if (!best.wall) {
+      out.push_back(spott_map::MakePoint("", best.corner.at, ""));
+      continue;
+    }
+    const EchoLine& line = best.line;
+    const Vec2 u(-line.normal.y(), line.normal.x());
+    const Vec2 foot = line.offset * line.normal;  // a point on the line
+    std::vector<Foot> feet;
+    for (const std::size_t k : best.inliers) {
+      const auto predicted = PredictEcho(all[k], line.normal, line.offset, p.max_incidence_rad);
+      feet.push_back({(predicted->reflection - foot).dot(u), predicted->range, &all[k]});
+    }
+    for (std::size_t b = 0; b < bare.size(); ++b) {
+      if (bare_used[b] || std::abs(line.normal.dot(bare[b]) - line.offset) > 0.5 * cell_m) continue;
+      bare_used[b] = true;
+      feet.push_back({(bare[b] - foot).dot(u), 0.0, nullptr});
+    }
+    std::sort(feet.begin(), feet.end(), [](const Foot& a, const Foot& b) { return a.t < b.t; });
+    const bool certain = line.direction_error_rad <= p.max_direction_error_rad;
+    for (std::size_t i = 0; i < feet.size();) {
+      std::size_t j = i;
+      while (j + 1 < feet.size() && feet[j + 1].t - feet[j].t <= 3.0 * cell_m) ++j;
+      const std::vector<Foot> run(feet.begin() + i, feet.begin() + j + 1);
+      i = j + 1;
+      if (!certain) {  // where it reflected is known, its direction is not: points two cells apart
+        const double t0 = run.front().t, t1 = run.back().t;
+        const int n = static_cast<int>(std::ceil((t1 - t0) / (2.0 * cell_m)));
+        for (int k = 0; k <= n; ++k)
+          out.push_back(
+              spott_map::MakePoint("", foot + (t0 + (t1 - t0) * k / std::max(n, 1)) * u, ""));
+        continue;
+      }
+      const WallEnd end = FindWallEnd(run, foot, u, +1.0, p);
+      const WallEnd start = FindWallEnd(run, foot, u, -1.0, p);
+      out.push_back(SegmentOrPoint(foot + start.t * u, foot + end.t * u, cell_m));
+      for (const WallEnd& e : {start, end})
+        if (e.edge_echoes >= 3) out.push_back(spott_map::MakePoint("", foot + e.t * u, ""));
+    }
+  }
 }
 
 }  // namespace
 
-std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
-                                                    double residual_m, double cell_m) {
+std::vector<spott_map::MapFeature> FuseIntoSegments(
+    const std::vector<Vec2>& cells, double residual_m, double cell_m,
+    const std::vector<std::vector<SonarEcho>>* echoes, const EchoFitParameters& echo_fit) {
   std::vector<spott_map::MapFeature> out;
   if (cells.empty()) return out;
-  std::vector<std::vector<Vec2>> groups;
+  std::vector<Group> groups;
   const double residual = residual_m + 0.5 * cell_m;  // from a cell's centre
-  Split(cells, residual, 0, groups);
+  Group everything(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) everything[i] = i;
+  Split(cells, everything, residual, 0, groups);
   // Merge: groups whose union still lies within the residual of one axis are one line (a split
   // at the median cuts a straight run in two where another part of the cluster bent).
   for (bool merged = true; merged && groups.size() > 1;) {
     merged = false;
     for (std::size_t i = 0; i < groups.size() && !merged; ++i) {
       for (std::size_t j = i + 1; j < groups.size() && !merged; ++j) {
-        std::vector<Vec2> both = groups[i];
+        Group both = groups[i];
         both.insert(both.end(), groups[j].begin(), groups[j].end());
-        if (FitAxis(both).worst > residual) continue;
+        if (FitAxis(cells, both).worst > residual) continue;
         groups[i] = std::move(both);
         groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
         merged = true;
       }
     }
   }
-  for (const std::vector<Vec2>& g : groups) {
-    const AxisFit fit = FitAxis(g);
+  std::vector<Group> heard_groups;  // groups with sonar echoes: fused from them together
+  for (const Group& g : groups) {
+    bool heard = false;
+    if (echoes)
+      for (const std::size_t i : g) heard = heard || !(*echoes)[i].empty();
+    if (heard) {
+      heard_groups.push_back(g);
+      continue;
+    }
+    const AxisFit fit = FitAxis(cells, g);
+    // The cells' extent along the axis, to the outer edges of the end cells.
     if (g.size() == 1 || fit.tmax - fit.tmin < 0.9 * cell_m) {
       out.push_back(spott_map::MakePoint("", fit.mean, ""));
       continue;
     }
-    // The cells' extent along the axis, to the outer edges of the end cells.
     const spott_map::Segment s{fit.mean + (fit.tmin - 0.5 * cell_m) * fit.axis,
                                fit.mean + (fit.tmax + 0.5 * cell_m) * fit.axis};
     out.push_back(spott_map::MakeSegment("", s, "", 0.0));
   }
+  if (!heard_groups.empty()) FuseFromEchoes(cells, heard_groups, *echoes, cell_m, echo_fit, out);
   return out;
 }
 

@@ -79,6 +79,11 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("mapping/segment_residual_m", m.segment_residual_m, "m");
   r.Get("mapping/cluster_gap_m", m.cluster_gap_m, "m");
   r.Get("mapping/mapless_extent_m", m.mapless_extent_m, "m");
+  r.Get("mapping/echo_tolerance_m", m.echo_fit.tolerance_base_m, "m");
+  r.Get("mapping/echo_tolerance_per_m", m.echo_fit.tolerance_per_m);
+  r.Get("mapping/sonar_max_incidence_rad", m.echo_fit.max_incidence_rad, "rad");
+  r.Get("mapping/echo_max_direction_error_rad", m.echo_fit.max_direction_error_rad, "rad");
+  r.Get("mapping/echoes_per_cell", m.echoes_per_cell);
   auto& d = c.doors;
   r.Get("doors/range_m", d.range_m, "m");
   r.Get("doors/end_margin_m", d.end_margin_m, "m");

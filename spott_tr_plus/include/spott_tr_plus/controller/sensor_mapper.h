@@ -19,7 +19,9 @@
 // A newly confirmed cell's cluster (every confirmed cell within `cluster_gap_m` of another, old
 // ones included; each cell stands for the mean of the echoes it gained) is fused into line segments
 // by recursive splitting at the principal axis (a cluster whose cells all lie within
-// `segment_residual_m` of its axis is one segment; single cells are points), and the result
+// `segment_residual_m` of its axis is one segment; single cells are points); a sonar's groups are
+// then fitted to their echoes (sonar_echo_fit.h: a wall spans where its echoes reflected, a
+// group whose echoes a corner explains better is a point), and the result
 // replaces the mapper's features fused from that cluster before: a wall confirmed reading by
 // reading ends as one segment, not a row of points. ROS-free; the caller passes the robot's pose
 // with each reading.
@@ -29,11 +31,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "spott_map/map_database.h"
 #include "spott_map/occupancy_raster.h"
+#include "spott_tr_plus/controller/sonar_echo_fit.h"
 
 namespace spott_tr_plus::controller {
 
@@ -72,6 +76,10 @@ struct MappingParameters {
   /// Side of the square the grid covers, centred on the robot, when the map has no rooms (no a
   /// priori map: SPOTT's Experiment 1) (m), in [5, 200].
   double mapless_extent_m = 40.0;
+  /// Sonar fusion by the echoes' physics (sonar_echo_fit.h): tolerances and critical incidence.
+  EchoFitParameters echo_fit;
+  /// Sonar echoes kept per cell for the fusion (the latest), in [1, 64].
+  int echoes_per_cell = 8;
 };
 
 /// Door states from the beams that cross a door's opening.
@@ -142,8 +150,9 @@ class SensorMapper {
 
   /// The features confirmed since the last call that `db` does not hold yet (fused), and the
   /// door states sensed that differ from `db`'s. A newly confirmed cell's whole cluster (cells
-  /// confirmed before included) is fused anew; the mapper's features in `db` that the cluster
-  /// covers (its own: sensed, with this mapper's `sensor` attribute) are listed as replaced.
+  /// confirmed before included) is fused anew; the mapper's features in `db` that the cluster's
+  /// cells or the features fused from it cover (its own: sensed, with this mapper's `sensor`
+  /// attribute) are listed as replaced.
   SensedBatch Take(const spott_map::MapDatabase& db);
   /// Whether `f` is one of this mapper's features (a sensed segment or point of its sensor).
   bool IsOwn(const spott_map::MapFeature& f) const;
@@ -199,6 +208,8 @@ class SensorMapper {
     Vec2 Mean() const { return Vec2(sx / n, sy / n); }
   };
   std::vector<EchoMean> echoes_;
+  /// The latest sonar echoes of each cell (index), echoes_per_cell at most, for the fusion.
+  std::unordered_map<std::size_t, std::vector<SonarEcho>> heard_;
   std::vector<std::uint8_t> flags_;  ///< kKnown | kBlocked | kDoor | kOutside | kConfirmed.
   std::vector<std::pair<int, int>> pending_;
   std::vector<DoorZone> doors_;
@@ -208,8 +219,14 @@ class SensorMapper {
 
 /// Fuses cell centres into line segments (recursive split at the principal axis, then merge of
 /// groups that share one) and points; `residual_m`: largest distance of a cell's square from its
-/// segment (a centre may lie residual_m + cell_m / 2 off), `cell_m`: the cells' side.
-std::vector<spott_map::MapFeature> FuseIntoSegments(const std::vector<Vec2>& cells,
-                                                    double residual_m, double cell_m);
+/// segment (a centre may lie residual_m + cell_m / 2 off), `cell_m`: the cells' side. With
+/// `echoes` (one list per cell: the sonar echoes it gained), a group heard at least 3 times is
+/// fused from its echoes instead: the wall that explains most of them, spanning where they
+/// reflected, or a point where a corner explains them better (plus a corner the wall's leftover
+/// echoes show).
+std::vector<spott_map::MapFeature> FuseIntoSegments(
+    const std::vector<Vec2>& cells, double residual_m, double cell_m,
+    const std::vector<std::vector<SonarEcho>>* echoes = nullptr,
+    const EchoFitParameters& echo_fit = EchoFitParameters());
 
 }  // namespace spott_tr_plus::controller

@@ -1,0 +1,96 @@
+// Where a sonar echo came from, for MAP_OBJECTS_WITH_SONAR's fusion (Fig. 5; SPOTT section V on
+// the sonar's "larger-than-life" doorways). A Polaroid transducer reports the nearest reflector
+// in its cone that sends the pulse back: a wall returns the point of it nearest the transducer
+// within the cone (the foot of the perpendicular when the wall's normal lies in the cone, else
+// where the cone's edge meets it, if that edge meets it within the critical incidence); a
+// concave corner or an edge returns itself. So one wall's echoes are circles tangent to one line
+// and one corner's are circles through one point: Leonard and Durrant-Whyte's planes and corners
+// (regions of constant depth). Placed on their axes instead, a corner's echoes draw an arc (a
+// "wall" 10 degrees off cim_office's hallway end) and a wall's run on past its end by up to
+// range * tan(half cone), into a doorway.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "spott_map/geometry.h"
+
+namespace spott_tr_plus::controller {
+
+using spott_map::Vec2;
+
+/// One sonar echo: the transducer (map frame, m), its axis (rad), the range (m) and the half
+/// width of its cone (rad).
+struct SonarEcho {
+  Vec2 from{0.0, 0.0};
+  double axis = 0.0;
+  double range = 0.0;
+  double half_cone = 0.0;
+};
+
+struct EchoFitParameters {
+  /// An echo fits a hypothesis when its range lies within base_m + per_m * range of the
+  /// predicted one (the sensor's noise: the Nomad's is 0.01 m + 0.01 m per metre, 1 sigma).
+  double tolerance_base_m = 0.03;
+  double tolerance_per_m = 0.02;
+  /// Beyond this incidence on a wall the pulse reflects away: no echo (rad; robot_sim's
+  /// critical_angle for the Polaroid ring).
+  double max_incidence_rad = 0.35;
+  /// A wall whose direction the echoes fix no better than this is kept as points where they
+  /// reflected, not as a segment (rad; a wall seen head on, or over a few centimetres).
+  double max_direction_error_rad = 0.05;
+};
+
+/// The echo a transducer would hear from the line {x : normal . x = offset} (`normal` a unit
+/// vector pointing from the line to the transducer): its range and where it reflects; nullopt
+/// when the transducer is behind the line or the line's normal lies beyond its cone by more
+/// than max_incidence_rad.
+struct PredictedEcho {
+  double range = 0.0;
+  Vec2 reflection{0.0, 0.0};
+};
+std::optional<PredictedEcho> PredictEcho(const SonarEcho& e, const Vec2& normal, double offset,
+                                         double max_incidence_rad);
+
+/// A wall that explains echoes: `inliers` index the echoes it explains, `reflections` (one per
+/// inlier) are where they reflected on it.
+struct EchoLine {
+  Vec2 normal{0.0, 1.0};
+  double offset = 0.0;
+  std::vector<std::size_t> inliers;
+  std::vector<Vec2> reflections;
+  /// How far (rad) the direction may be off: the farthest direction whose cost is within two
+  /// sigma of the best (the search's width when nothing fits).
+  double direction_error_rad = 0.0;
+};
+/// The line that explains the echoes best (least truncated squared range residuals): a Hough
+/// search over its normal's direction within `search` rad of `normal_guess`, the offset voted
+/// by the echoes at each direction.
+EchoLine FitEchoLine(const std::vector<SonarEcho>& echoes, double normal_guess, double search,
+                     const EchoFitParameters& p);
+
+/// A corner (or edge) that explains echoes: each inlier's range is its distance to `at`, and
+/// `at` lies in its cone.
+struct EchoPoint {
+  Vec2 at{0.0, 0.0};
+  std::vector<std::size_t> inliers;
+};
+/// Gauss-Newton from `guess` on the echoes within a shrinking tolerance.
+EchoPoint FitEchoPoint(const std::vector<SonarEcho>& echoes, const Vec2& guess,
+                       const EchoFitParameters& p);
+
+/// Truncated squared residuals (MSAC: an echo a hypothesis does not explain costs its
+/// tolerance squared), to choose between a wall and a corner: seen over a few degrees a
+/// corner's circles have a common tangent too, but its echoes miss it by range * (1 - cos).
+double EchoLineCost(const std::vector<SonarEcho>& echoes, const EchoLine& line,
+                    const EchoFitParameters& p);
+double EchoPointCost(const std::vector<SonarEcho>& echoes, const EchoPoint& point,
+                     const EchoFitParameters& p);
+
+/// The echo's tolerance (m).
+inline double EchoTolerance(const SonarEcho& e, const EchoFitParameters& p) {
+  return p.tolerance_base_m + p.tolerance_per_m * e.range;
+}
+
+}  // namespace spott_tr_plus::controller
