@@ -62,8 +62,10 @@ void Controller(FuzzedDataProvider& in) {
          "an empty program_file or frame accepted");
   ExpectIn("tick_rate_hz", p.tick_rate_hz, "[0.01, 200]");
   spott_fuzz::ExpectRosDuration("the tick timer's 1 / tick_rate_hz", 1.0 / p.tick_rate_hz);
-  ExpectIn("ptu/sweep_period_s", p.ptu_sweep_period_s, "(0, inf)");
-  for (double d : {p.ptu_sweep_rad, p.ptu_hallway_pan_rad, p.ptu_min_height_m, p.ptu_max_height_m,
+  ExpectIn("ptu/sweep_period_s", p.ptu.sweep_period_s, "(0, inf)");
+  ExpectIn("ptu/door_watch_m", p.ptu.door_watch_m, "[0, inf)");
+  ExpectIn("ptu/max_pan_rad", p.ptu.max_pan_rad, "(0, 3.15)");
+  for (double d : {p.ptu.sweep_rad, p.ptu.hallway_pan_rad, p.ptu_min_height_m, p.ptu_max_height_m,
                    p.marker_height_m}) {
     spott_fuzz::ExpectFinite("ptu/* or marker_height_m", d);
   }
@@ -86,6 +88,11 @@ void Controller(FuzzedDataProvider& in) {
   ExpectIn("mapping/door_zone_m", m.door_zone_m, "(0, inf)");
   spott_fuzz::ExpectFinite("mapping/segment_residual_m", m.segment_residual_m);
   ExpectIn("mapping/cluster_gap_m", m.cluster_gap_m, "(0, inf)");
+  ExpectIn("mapping/echo_tolerance_m", m.echo_fit.tolerance_base_m, "(0, inf)");
+  ExpectIn("mapping/echo_tolerance_per_m", m.echo_fit.tolerance_per_m, "[0, inf)");
+  ExpectIn("mapping/sonar_max_incidence_rad", m.echo_fit.max_incidence_rad, "[0, 1.58)");
+  ExpectIn("mapping/echo_max_direction_error_rad", m.echo_fit.max_direction_error_rad, "(0, 1)");
+  ExpectIn("mapping/echoes_per_cell", m.echoes_per_cell, "[1, 64]");
   const auto& d = c.doors;
   spott_fuzz::ExpectFinite("doors/range_m", d.range_m);
   ExpectIn("doors/end_margin_m", d.end_margin_m, "[0, inf)");
@@ -93,6 +100,7 @@ void Controller(FuzzedDataProvider& in) {
   ExpectIn("doors/match_m", d.match_m, "(0, inf)");
   ExpectIn("doors/beyond_m", d.beyond_m, "(0, inf)");
   spott_fuzz::ExpectFinite("doors/normal_angle_rad", d.normal_angle_rad);
+  ExpectIn("doors/profile_normal_angle_rad", d.profile_normal_angle_rad, "[0, 1.58)");
   Expect(d.votes >= 1 && d.max_votes >= d.votes, "doors/votes or max_votes out of range");
   const auto& x = c.reflex;
   ExpectIn("reflex/speed_mps", x.speed_mps, "(0, inf)");

@@ -1160,6 +1160,35 @@ TEST(SensorMapper, AProfilesPointsOnADoorsLeafSenseItClosedAndPointsBeyondItOpen
   EXPECT_TRUE(m.door_votes().empty());
 }
 
+TEST(SensorMapper, AProfileFromAHeadTurnedToASideDoorAheadSensesItsLeaf) {
+  // Driving east along cim_office's hallway (y = 8.25), 2.5 m before d_lab_w (centre (12.5,
+  // 9.5), 1.8 m wide, in the north wall): the head turned to it (ptu_control.h) meets the leaf at
+  // 63 degrees from its normal. A diffuse ray answers at that angle: three profiles sense it
+  // closed, long before the robot turns into the doorway. A sonar's beam there votes nothing.
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  const Pose2 robot{10.0, 8.25, 0.0};
+  std::vector<Vec2> leaf;  // on the opening's line y = 9.5, base frame
+  for (double x = 2.2; x <= 2.8; x += 0.05) leaf.emplace_back(x, 1.25);
+  SensorMapper m("quadris", MappingParameters{}, DoorSensingParameters{}, true);
+  m.SetMap(db);
+  for (int k = 0; k < 3; ++k) m.AddPoints(Vec2(0, 0), leaf, robot);
+  const SensedBatch b = m.Take(db);
+  ASSERT_EQ(b.doors.size(), 1u);
+  EXPECT_EQ(b.doors[0].first, "d_lab_w");
+  EXPECT_EQ(b.doors[0].second, spott_map::DoorState::kClosed);
+  DoorSensingParameters square_only;  // as a sonar's beams: 0.3 rad
+  square_only.profile_normal_angle_rad = square_only.normal_angle_rad;
+  SensorMapper old("quadris", MappingParameters{}, square_only, true);
+  old.SetMap(db);
+  for (int k = 0; k < 3; ++k) old.AddPoints(Vec2(0, 0), leaf, robot);
+  EXPECT_TRUE(old.Take(db).doors.empty());
+  SensorMapper sonar("sonar", MappingParameters{}, DoorSensingParameters{}, true);
+  sonar.SetMap(db);
+  const double bearing = std::atan2(1.25, 2.5);
+  for (int k = 0; k < 6; ++k) sonar.AddRing(OneBeam(0, 0, bearing, std::hypot(2.5, 1.25)), robot);
+  EXPECT_TRUE(sonar.Take(db).doors.empty());
+}
+
 TEST(SensorMapper, AProfileTakenFromAWrongPoseMapsNothing) {
   spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
   SensorMapper m("quadris", MappingParameters{}, DoorSensingParameters{}, true);

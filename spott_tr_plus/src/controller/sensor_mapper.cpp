@@ -83,6 +83,8 @@ std::vector<std::string> ValidateParameters(const DoorSensingParameters& p) {
     v.push_back(Violation("beyond_m", "> 0", p.beyond_m));
   if (!(p.normal_angle_rad >= 0 && p.normal_angle_rad < M_PI / 2))
     v.push_back(Violation("normal_angle_rad", "in [0, pi/2)", p.normal_angle_rad));
+  if (!(p.profile_normal_angle_rad >= 0 && p.profile_normal_angle_rad < M_PI / 2))
+    v.push_back(Violation("profile_normal_angle_rad", "in [0, pi/2)", p.profile_normal_angle_rad));
   if (p.votes < 1) v.push_back(Violation("votes", ">= 1", p.votes));
   if (p.max_votes < p.votes) v.push_back(Violation("max_votes", ">= votes", p.max_votes));
   return v;
@@ -281,7 +283,8 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
     if (spott_map::DistancePointSegment(from, z.opening) > d_.range_m) continue;
     const Vec2 normal(-u.y(), u.x());
     const double incidence = std::acos(std::min(1.0, std::abs(normal.dot(dir))));
-    if (incidence > d_.normal_angle_rad) continue;  // oblique: a leaf would not echo
+    // Oblique: a leaf would not echo a sonar's pulse (specular); a profile's ray it would.
+    if (incidence > (half_cone > 0.0 ? d_.normal_angle_rad : d_.profile_normal_angle_rad)) continue;
     const spott_map::Segment ray{from, from + d_.range_m * dir};
     const auto x = spott_map::SegmentIntersection(ray, z.opening);
     if (!x) continue;

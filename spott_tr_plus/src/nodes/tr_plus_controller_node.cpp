@@ -559,14 +559,11 @@ class ControllerNode : public ControllerIo {
     last_heads_s_ = now;
     sensor_msgs::JointState js;
     js.header.stamp = ros::Time::now();
+    const std::vector<double> pan = PanHeads(ptu_pattern_, params_.pan_joints.size(), now,
+                                             core_->pose(), core_->map(), params_.ptu);
     for (std::size_t i = 0; i < params_.pan_joints.size(); ++i) {
-      const double side = i % 2 == 0 ? 1.0 : -1.0;
-      double pan = side * params_.ptu_hallway_pan_rad;  // hallway: ahead
-      if (ptu_pattern_ == "room") {                     // room: sweep across the room
-        pan = side * params_.ptu_sweep_rad * std::sin(2 * M_PI * now / params_.ptu_sweep_period_s);
-      }
       js.name.push_back(params_.pan_joints[i]);
-      js.position.push_back(pan);
+      js.position.push_back(pan[i]);
       js.name.push_back(params_.tilt_joints[i]);
       js.position.push_back(0.0);
     }

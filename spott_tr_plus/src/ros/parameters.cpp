@@ -47,9 +47,11 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("assume_localized", p.assume_localized);
   r.Get("ptu/pan_joints", p.pan_joints);
   r.Get("ptu/tilt_joints", p.tilt_joints);
-  r.Get("ptu/sweep_rad", p.ptu_sweep_rad, "rad");
-  r.Get("ptu/sweep_period_s", p.ptu_sweep_period_s, "s");
-  r.Get("ptu/hallway_pan_rad", p.ptu_hallway_pan_rad, "rad");
+  r.Get("ptu/sweep_rad", p.ptu.sweep_rad, "rad");
+  r.Get("ptu/sweep_period_s", p.ptu.sweep_period_s, "s");
+  r.Get("ptu/hallway_pan_rad", p.ptu.hallway_pan_rad, "rad");
+  r.Get("ptu/door_watch_m", p.ptu.door_watch_m, "m");
+  r.Get("ptu/max_pan_rad", p.ptu.max_pan_rad, "rad");
   r.Get("ptu/min_height_m", p.ptu_min_height_m, "m");
   r.Get("ptu/max_height_m", p.ptu_max_height_m, "m");
   r.Get("marker_height_m", p.marker_height_m, "m");
@@ -91,6 +93,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("doors/match_m", d.match_m, "m");
   r.Get("doors/beyond_m", d.beyond_m, "m");
   r.Get("doors/normal_angle_rad", d.normal_angle_rad, "rad");
+  r.Get("doors/profile_normal_angle_rad", d.profile_normal_angle_rad, "rad");
   r.Get("doors/votes", d.votes);
   r.Get("doors/max_votes", d.max_votes);
   r.Get("doors/sonar_with_profiles", d.sonar_with_profiles);
@@ -171,7 +174,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   // The tick timer's period 1 / tick_rate_hz must make a ros::Duration (at most 2^31 s).
   r.Require(p.tick_rate_hz >= 0.01 && p.tick_rate_hz <= 200, "tick_rate_hz", "in [0.01, 200]",
             p.tick_rate_hz);
-  r.Require(p.ptu_sweep_period_s > 0, "ptu/sweep_period_s", "> 0", p.ptu_sweep_period_s);
+  for (const std::string& v : ValidateParameters(p.ptu)) r.Fail("ptu/" + v);
   if (p.pan_joints.size() != p.tilt_joints.size())
     r.Fail("ptu/pan_joints and ptu/tilt_joints must have as many names");
 }

@@ -8,6 +8,7 @@
 
 #include "spott_ros/parameter_reader.h"
 #include "spott_tr_plus/controller/navigation_controller.h"
+#include "spott_tr_plus/controller/ptu_control.h"
 #include "spott_tr_plus/task_command.h"
 
 namespace spott_tr_plus {
@@ -44,12 +45,10 @@ struct NodeParameters {
   bool assume_localized = false;
   std::vector<std::string> pan_joints{"quadris_1_pan_joint", "quadris_2_pan_joint"};
   std::vector<std::string> tilt_joints{"quadris_1_tilt_joint", "quadris_2_tilt_joint"};
-  double ptu_sweep_rad = 0.8;        ///< "room": pan sweep amplitude (rad).
-  double ptu_sweep_period_s = 8.0;   ///< "room": sweep period (s), > 0.
-  double ptu_hallway_pan_rad = 0.3;  ///< "hallway": the heads look ahead, this far apart (rad).
-  double ptu_min_height_m = 0.05;    ///< QUADRIS points lower than this are the floor (m).
-  double ptu_max_height_m = 2.0;     ///< ... higher than this, above the robot (m).
-  double marker_height_m = 1.4;      ///< The firing rule's text over the robot (m).
+  PtuParameters ptu;               ///< CONTROL_THE_PTU's patterns (ptu_control.h).
+  double ptu_min_height_m = 0.05;  ///< QUADRIS points lower than this are the floor (m).
+  double ptu_max_height_m = 2.0;   ///< ... higher than this, above the robot (m).
+  double marker_height_m = 1.4;    ///< The firing rule's text over the robot (m).
   ControllerParameters controller;
 };
 
