@@ -721,10 +721,6 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
     }
   }
   std::vector<bool> used(all.size(), false), bare_used(bare.size(), false);
-  const auto z2 = [](double residual, double tol) {
-    const double z = 2.0 * residual / tol;
-    return std::min(z * z, 4.0);
-  };
   struct Proposal {
     bool wall = false;
     EchoLine line;
@@ -758,14 +754,14 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
         const auto predicted =
             PredictEcho(e, wall.line.normal, wall.line.offset, p.max_incidence_rad);
         const double rw = predicted ? std::abs(predicted->range - e.range) : 1e9;
-        wall.cost += z2(rw, tol);
+        wall.cost += EchoCost(rw, tol);
         if (rw <= tol) wall.inliers.push_back(k);
         const Vec2 d = corner.corner.at - e.from;
         double rc = 1e9;
         if (d.norm() > 1e-6 && std::abs(std::remainder(std::atan2(d.y(), d.x()) - e.axis,
                                                        2 * M_PI)) <= e.half_cone + 0.05)
           rc = std::abs(d.norm() - e.range);
-        corner.cost += z2(rc, tol);
+        corner.cost += EchoCost(rc, tol);
         if (rc <= tol) corner.inliers.push_back(k);
       }
       if (wall.line.inliers.empty()) wall.cost = 1e300;

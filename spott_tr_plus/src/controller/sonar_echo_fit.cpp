@@ -66,6 +66,11 @@ Vote VoteOffset(const std::vector<SonarEcho>& echoes, double phi, const EchoFitP
 
 }  // namespace
 
+double EchoCost(double residual, double tolerance) {
+  const double z = 2.0 * residual / tolerance;
+  return std::min(z * z, 4.0);
+}
+
 std::optional<PredictedEcho> PredictEcho(const SonarEcho& e, const Vec2& normal, double offset,
                                          double max_incidence_rad) {
   const double dist = normal.dot(e.from) - offset;
@@ -82,12 +87,6 @@ std::optional<PredictedEcho> PredictEcho(const SonarEcho& e, const Vec2& normal,
 
 namespace {
 
-// An echo's squared residual in units of its noise (tolerance = 2 sigma), truncated at 2 sigma.
-double Normalized(double residual, double tolerance) {
-  const double z = 2.0 * residual / tolerance;
-  return std::min(z * z, 4.0);
-}
-
 // Cost of the line with normal angle `phi` at the offset its echoes vote for.
 double LineCost(const std::vector<SonarEcho>& echoes, double phi, const EchoFitParameters& p,
                 std::vector<std::pair<double, double>>& offsets,
@@ -99,7 +98,7 @@ double LineCost(const std::vector<SonarEcho>& echoes, double phi, const EchoFitP
   double cost = 0.0;
   for (const SonarEcho& e : echoes) {
     const auto predicted = PredictEcho(e, n, v.offset, p.max_incidence_rad);
-    cost += predicted ? Normalized(predicted->range - e.range, EchoTolerance(e, p)) : 4.0;
+    cost += predicted ? EchoCost(predicted->range - e.range, EchoTolerance(e, p)) : 4.0;
   }
   return cost;
 }
@@ -188,32 +187,6 @@ EchoPoint FitEchoPoint(const std::vector<SonarEcho>& echoes, const Vec2& guess,
   for (std::size_t i = 0; i < echoes.size(); ++i)
     if (fits(echoes[i], point.at, 1.0)) point.inliers.push_back(i);
   return point;
-}
-
-double EchoLineCost(const std::vector<SonarEcho>& echoes, const EchoLine& line,
-                    const EchoFitParameters& p) {
-  double cost = 0.0;
-  for (const SonarEcho& e : echoes) {
-    const double tol = EchoTolerance(e, p);
-    const auto predicted = PredictEcho(e, line.normal, line.offset, p.max_incidence_rad);
-    const double r = predicted ? std::abs(predicted->range - e.range) : tol;
-    cost += std::min(r * r, tol * tol);
-  }
-  return cost;
-}
-
-double EchoPointCost(const std::vector<SonarEcho>& echoes, const EchoPoint& point,
-                     const EchoFitParameters& p) {
-  double cost = 0.0;
-  for (const SonarEcho& e : echoes) {
-    const double tol = EchoTolerance(e, p);
-    const Vec2 d = point.at - e.from;
-    double side, r = tol;
-    if (d.norm() > 1e-6 && ConeExcess(e, std::atan2(d.y(), d.x()), &side) <= 0.05)
-      r = std::abs(d.norm() - e.range);
-    cost += std::min(r * r, tol * tol);
-  }
-  return cost;
 }
 
 }  // namespace spott_tr_plus::controller

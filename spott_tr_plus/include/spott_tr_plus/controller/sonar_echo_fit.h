@@ -80,13 +80,10 @@ struct EchoPoint {
 EchoPoint FitEchoPoint(const std::vector<SonarEcho>& echoes, const Vec2& guess,
                        const EchoFitParameters& p);
 
-/// Truncated squared residuals (MSAC: an echo a hypothesis does not explain costs its
-/// tolerance squared), to choose between a wall and a corner: seen over a few degrees a
-/// corner's circles have a common tangent too, but its echoes miss it by range * (1 - cos).
-double EchoLineCost(const std::vector<SonarEcho>& echoes, const EchoLine& line,
-                    const EchoFitParameters& p);
-double EchoPointCost(const std::vector<SonarEcho>& echoes, const EchoPoint& point,
-                     const EchoFitParameters& p);
+/// An echo's cost under a hypothesis: its squared range residual in units of its noise (the
+/// tolerance is two sigma), truncated at 4 (MSAC: an echo the hypothesis does not explain costs
+/// as one two sigma off).
+double EchoCost(double residual, double tolerance);
 
 /// The echo's tolerance (m).
 inline double EchoTolerance(const SonarEcho& e, const EchoFitParameters& p) {
