@@ -649,8 +649,7 @@ struct WallEnd {
   double t = 0.0;
   int edge_echoes = 0;
 };
-WallEnd FindWallEnd(const std::vector<Foot>& run, const Vec2& foot, const Vec2& u, double side,
-                    const EchoFitParameters& p) {
+WallEnd FindWallEnd(const std::vector<Foot>& run, const Vec2& foot, const Vec2& u, double side) {
   // The run's feet from this end inwards, as far as an edge at the end can be heard.
   std::vector<const Foot*> near;
   const Foot& last = side > 0 ? run.back() : run.front();
@@ -805,8 +804,8 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
               spott_map::MakePoint("", foot + (t0 + (t1 - t0) * k / std::max(n, 1)) * u, ""));
         continue;
       }
-      const WallEnd end = FindWallEnd(run, foot, u, +1.0, p);
-      const WallEnd start = FindWallEnd(run, foot, u, -1.0, p);
+      const WallEnd end = FindWallEnd(run, foot, u, +1.0);
+      const WallEnd start = FindWallEnd(run, foot, u, -1.0);
       out.push_back(SegmentOrPoint(foot + start.t * u, foot + end.t * u, cell_m));
       for (const WallEnd& e : {start, end})
         if (e.edge_echoes >= 3) out.push_back(spott_map::MakePoint("", foot + e.t * u, ""));
