@@ -677,13 +677,12 @@ WallEnd FindWallEnd(const std::vector<Foot>& run, const Vec2& foot, const Vec2& 
         cost += std::pow(f.echo->range - f.predicted, 2);
         continue;
       }
-      const Vec2 d = edge - f.echo->from;
-      if (std::abs(std::remainder(std::atan2(d.y(), d.x()) - f.echo->axis, 2 * M_PI)) >
-          f.echo->half_cone + 0.05) {
+      const std::optional<double> r = CornerResidual(*f.echo, edge);
+      if (!r) {
         cost = 1e300;
         continue;
       }
-      cost += std::pow(f.echo->range - d.norm(), 2);
+      cost += *r * *r;
       ++beyond;
     }
     if (cost < best_cost) {
@@ -755,11 +754,8 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
         const double rw = predicted ? std::abs(predicted->range - e.range) : 1e9;
         wall.cost += EchoCost(rw, tol);
         if (rw <= tol) wall.inliers.push_back(k);
-        const Vec2 d = corner.corner.at - e.from;
-        double rc = 1e9;
-        if (d.norm() > 1e-6 && std::abs(std::remainder(std::atan2(d.y(), d.x()) - e.axis,
-                                                       2 * M_PI)) <= e.half_cone + 0.05)
-          rc = std::abs(d.norm() - e.range);
+        const std::optional<double> at_corner = CornerResidual(e, corner.corner.at);
+        const double rc = at_corner ? std::abs(*at_corner) : 1e9;
         corner.cost += EchoCost(rc, tol);
         if (rc <= tol) corner.inliers.push_back(k);
       }

@@ -148,16 +148,20 @@ EchoLine FitEchoLine(const std::vector<SonarEcho>& echoes, double normal_guess, 
   return line;
 }
 
+std::optional<double> CornerResidual(const SonarEcho& e, const Vec2& at) {
+  const Vec2 d = at - e.from;
+  const double r = d.norm();
+  double side;
+  if (r < 1e-6 || ConeExcess(e, std::atan2(d.y(), d.x()), &side) > 0.05) return std::nullopt;
+  return e.range - r;
+}
+
 EchoPoint FitEchoPoint(const std::vector<SonarEcho>& echoes, const Vec2& guess,
                        const EchoFitParameters& p) {
   EchoPoint point{guess, {}};
   const auto fits = [&](const SonarEcho& e, const Vec2& at, double scale) {
-    const Vec2 d = at - e.from;
-    const double r = d.norm();
-    if (r < 1e-6) return false;
-    double side;
-    if (ConeExcess(e, std::atan2(d.y(), d.x()), &side) > 0.05) return false;  // not in its cone
-    return std::abs(r - e.range) <= scale * EchoTolerance(e, p);
+    const std::optional<double> r = CornerResidual(e, at);
+    return r && std::abs(*r) <= scale * EchoTolerance(e, p);
   };
   // The tolerance shrinks from 8 to 1 times the echoes' own: the guess (the axis points' mean)
   // lies within range * tan(half cone) of the corner.

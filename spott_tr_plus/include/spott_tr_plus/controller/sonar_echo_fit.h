@@ -70,6 +70,10 @@ struct EchoLine {
 EchoLine FitEchoLine(const std::vector<SonarEcho>& echoes, double normal_guess, double search,
                      const EchoFitParameters& p);
 
+/// The echo's range less the distance to a corner (or edge) at `at`, when `at` lies in its cone
+/// (0.05 rad of slack for the cone's rim); nullopt when the transducer cannot hear it there.
+std::optional<double> CornerResidual(const SonarEcho& e, const Vec2& at);
+
 /// A corner (or edge) that explains echoes: each inlier's range is its distance to `at`, and
 /// `at` lies in its cone.
 struct EchoPoint {
