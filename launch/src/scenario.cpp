@@ -174,7 +174,7 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
                     {"description", "world", "robot", "start_pose", "seed", "real_time_factor",
                      "localization", "a_priori_map", "global_localization", "tasks", "goals",
                      "missions", "doors_to_close", "leg_timeout_s", "goal_tolerance_m",
-                     "time_limit_s", "faults", "subroutines_off"})) {
+                     "time_limit_s", "faults", "subroutines_off", "sonar_scan_period_s"})) {
     result.errors = in.errors();
     return result;
   }
@@ -233,6 +233,16 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
     in.Error(root["subroutines_off"],
              "subroutines_off: switches off subroutines of the TR+ controller, which runs only "
              "for `tasks:`");
+  if (auto period = in.Number(root, "sonar_scan_period_s", what, false, NumberRule::kNonNegative)) {
+    if (*period > 600.0)
+      in.Error(root["sonar_scan_period_s"], "sonar_scan_period_s: expected 0 to 600 s");
+    else if (!root["tasks"])
+      in.Error(root["sonar_scan_period_s"],
+               "sonar_scan_period_s: the dense sonar scan is the TR+ controller's, which runs "
+               "only for `tasks:`");
+    else
+      s.sonar_scan_period_s = *period;
+  }
   s.missions = Missions(in, root);
   const int kinds = (root["tasks"] ? 1 : 0) + (root["goals"] ? 1 : 0) + (root["missions"] ? 1 : 0);
   if (kinds > 1) {
@@ -326,6 +336,8 @@ std::vector<std::string> LaunchArguments(const Scenario& s) {
     for (const auto& name : s.subroutines_off) list += (list.empty() ? "" : ", ") + name.text;
     args.push_back("subroutines_off:=[" + list + "]");
   }
+  if (s.sonar_scan_period_s >= 0)
+    args.push_back("sonar_scan_period_s:=" + number(s.sonar_scan_period_s));
   args.push_back("executive:=" + s.Executive());
   return args;
 }

@@ -216,6 +216,28 @@ TEST(Scenario, AStackWithoutAPrioriMapRunsOnDeadReckoning) {
   EXPECT_EQ(std::find(plain.begin(), plain.end(), "a_priori_map:=false"), plain.end());
 }
 
+// MAP_OBJECTS_WITH_SONAR's dense scan for a run (issue 19's sonar map).
+TEST(Scenario, TheSonarScanPeriodReachesTheControllerAndIsCheckedWhereItIsWritten) {
+  const auto r = ParseScenario(
+      "world: cim_office\ntasks: [\"go in room(lab)\"]\nsonar_scan_period_s: 5\n", "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(), "sonar_scan_period_s:=5"), args.end());
+  const auto plain = LaunchArguments(
+      *ParseScenario("world: cim_office\ntasks: [\"go in room(lab)\"]\n", "s.yaml").scenario);
+  for (const auto& a : plain) EXPECT_EQ(a.find("sonar_scan"), std::string::npos) << a;
+  const auto negative = ParseScenario(
+      "world: cim_office\ntasks: [\"go in room(lab)\"]\nsonar_scan_period_s: -1\n", "s.yaml");
+  ASSERT_FALSE(negative.ok());
+  EXPECT_NE(Errors(negative).find("s.yaml:3:"), std::string::npos) << Errors(negative);
+  const auto goals =
+      ParseScenario("world: cim_office\ngoals: [lab_bench]\nsonar_scan_period_s: 5\n", "s.yaml");
+  ASSERT_FALSE(goals.ok());
+  EXPECT_NE(Errors(goals).find("s.yaml:3:22: sonar_scan_period_s: the dense sonar scan"),
+            std::string::npos)
+      << Errors(goals);
+}
+
 // A map from the sonar alone (issue 19): QUADRIS's mapping switched off for the run.
 TEST(Scenario, SubroutinesOffReachTheControllerAsAYamlList) {
   const auto r = ParseScenario(

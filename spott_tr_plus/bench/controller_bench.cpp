@@ -47,6 +47,7 @@ struct BenchIo : ControllerIo {
   }
   void SendMapUpdate(const MapChange&) override {}
   void SetPtuPattern(const std::string&) override {}
+  void PointTurret(double) override {}
   void PublishTaskFeedback(const TaskFeedback&) override {}
   bool StartActiveLocalize(double) override { return false; }
   void CancelActiveLocalize() override {}

@@ -88,6 +88,14 @@ void Controller(FuzzedDataProvider& in) {
   ExpectIn("mapping/door_zone_m", m.door_zone_m, "(0, inf)");
   spott_fuzz::ExpectFinite("mapping/segment_residual_m", m.segment_residual_m);
   ExpectIn("mapping/cluster_gap_m", m.cluster_gap_m, "(0, inf)");
+  ExpectIn("mapping/echo_cluster_gap_m", m.echo_cluster_gap_m, "(0, inf)");
+  const auto& ss = c.sonar_scan;
+  ExpectIn("sonar_scan/period_s", ss.period_s, "[0, inf)");
+  ExpectIn("sonar_scan/steps", ss.steps, "[2, 64]");
+  ExpectIn("sonar_scan/step_rad", ss.step_rad, "(0, 0.79]");
+  Expect(ss.settle_rad > 0 && ss.settle_rad < ss.step_rad / 2,
+         "sonar_scan/settle_rad out of (0, step_rad / 2) accepted");
+  ExpectIn("sonar_scan/step_timeout_s", ss.step_timeout_s, "(0, inf)");
   ExpectIn("mapping/echo_tolerance_m", m.echo_fit.tolerance_base_m, "(0, inf)");
   ExpectIn("mapping/echo_tolerance_per_m", m.echo_fit.tolerance_per_m, "[0, inf)");
   ExpectIn("mapping/sonar_max_incidence_rad", m.echo_fit.max_incidence_rad, "[0, 1.58)");

@@ -25,6 +25,7 @@ struct FakeIo : ControllerIo {
   std::vector<TaskFeedback> feedback;
   std::vector<TaskResult> results;
   std::string ptu;
+  std::vector<double> turret;  ///< The turret's targets, in order.
   void SendNavigate(const NavigateGoal& g) override { navigates.push_back(g); }
   void CancelNavigate() override { ++cancels; }
   void TakeWheels(const std::string& s) override { takes.push_back(s); }
@@ -32,6 +33,7 @@ struct FakeIo : ControllerIo {
   void Drive(const std::string& s, const Velocity& v) override { drives.emplace_back(s, v); }
   void SendMapUpdate(const MapChange& c) override { updates.push_back(c); }
   void SetPtuPattern(const std::string& p) override { ptu = p; }
+  void PointTurret(double yaw) override { turret.push_back(yaw); }
   void PublishTaskFeedback(const TaskFeedback& f) override { feedback.push_back(f); }
   void TaskFinished(const TaskResult& r) override { results.push_back(r); }
   bool StartActiveLocalize(double timeout_s) override {
@@ -882,6 +884,37 @@ TEST_F(Controller, LocalizationIsTakenAtTheRatesOfFootnote19) {
     c_->Tick(t);
   }
   EXPECT_EQ(c_->localization_fixes(), 4);
+}
+
+TEST_F(Controller, TheSonarsConditionStepsTheTurretForItsDenseScanOnlyWhileItRuns) {
+  // Fig. 5's condition collects the sonar data: with a period its dense scan turns the turret
+  // (the ring's mounts follow it); with MAP_OBJECTS_WITH_SONAR switched off there is none.
+  for (const bool off : {false, true}) {
+    params_.sonar_scan.period_s = 5.0;
+    params_.subroutines_off =
+        off ? std::vector<std::string>{"MAP_OBJECTS_WITH_SONAR"} : std::vector<std::string>{};
+    io_ = FakeIo{};
+    Create();
+    double turret = 0.0;
+    for (double t = 0.0; t < 13.0; t += 0.1) {
+      At(5.0, 8.25, 0.0, t);
+      RangeRing ring = OneBeam(kRadius, 0.0, 0.0, 2.0);
+      ring.mounts[0].yaw = turret;
+      c_->Sonar(ring, t);
+      if (!io_.turret.empty()) turret = io_.turret.back();
+      if (c_->NextWakeTime() <= t) c_->Advance(t);
+      c_->Tick(t);
+    }
+    if (off) {
+      EXPECT_LE(io_.turret.size(), 1u) << "homed at most; no scan";
+      EXPECT_EQ(c_->sonar_scans(), 0);
+    } else {
+      EXPECT_EQ(c_->sonar_scans(), 2) << "at about 5 s and 11 s (each takes a second)";
+      ASSERT_GE(io_.turret.size(), 10u);
+      EXPECT_NEAR(io_.turret[8], 8 * 2.5 * M_PI / 180, 1e-6);
+      EXPECT_EQ(c_->turret_target(), 0.0) << "home between scans";
+    }
+  }
 }
 
 // --- The sensed map -----------------------------------------------------------------------------

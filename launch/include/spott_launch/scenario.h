@@ -61,6 +61,9 @@ struct Scenario {
   /// TR+ subroutines switched off (tr_plus_controller ~subroutines_off): a sensor left out,
   /// e.g. MAP_OBJECTS_WITH_QUADRIS for a map from the sonar alone. Tasks only.
   std::vector<Located> subroutines_off;
+  /// MAP_OBJECTS_WITH_SONAR's dense turret scan every this many simulated s (tr_plus_controller
+  /// ~sonar_scan/period_s; 0 none); negative: the controller's own. Tasks only.
+  double sonar_scan_period_s = -1.0;
   double leg_timeout_s = 240.0;    ///< Simulated s per task or goal.
   double goal_tolerance_m = 0.25;  ///< Judged on the ground truth (m).
   double time_limit_s = 0.0;       ///< Simulated s for the whole run (0 = legs x timeout).

@@ -53,6 +53,7 @@ std::vector<std::string> ValidateParameters(const ControllerParameters& p) {
     v.push_back(Violation("drive/max_angular_rps", "> 0", p.max_angular_rps));
   if (p.max_call_depth < 1) v.push_back(Violation("max_call_depth", ">= 1", p.max_call_depth));
   prefixed("mapping", ValidateParameters(p.mapping));
+  prefixed("sonar_scan", ValidateParameters(p.sonar_scan));
   prefixed("doors", ValidateParameters(p.doors));
   prefixed("recognition", ValidateParameters(p.recognition));
   prefixed("reflex", ValidateParameters(p.reflex));
@@ -148,6 +149,7 @@ NavigationController::NavigationController(const ControllerParameters& params, C
       sonar_mapper_("sonar", params.mapping, params.doors, /*sense_doors=*/true),
       quadris_mapper_("quadris", params.mapping, params.doors, /*sense_doors=*/true),
       infrared_mapper_("infrared", params.mapping, params.doors, /*sense_doors=*/false),
+      sonar_scan_(params.sonar_scan),
       recognizer_(params.recognition),
       rng_(params.seed) {
   recognizer_.SetMap(&db_);
@@ -322,7 +324,12 @@ void NavigationController::Bind(Registry& r) {
       return true;
     };
   };
-  r.Condition("sonar_segments", segments(sonar_mapper_));
+  // Fig. 5's condition collects the sonar data: its dense scan turns the turret while it runs.
+  r.Condition("sonar_segments",
+              [this, take = segments(sonar_mapper_)](const ConditionCall& c, Outputs& out) {
+                sonar_wanted_at_ = c.now;
+                return take(c, out);
+              });
   r.Condition("quadris_segments", segments(quadris_mapper_, &recognizer_));
   // Fig. 8 extended: what the infrared ring keeps seeing below the sonar (the lab's 0.6 m crate
   // under the Nomad's 0.65 m transducers) is mapped like the sonar's echoes, from its own
@@ -937,6 +944,12 @@ void NavigationController::SetLocalization(bool certain, double now) {
 void NavigationController::Sonar(const RangeRing& ring, double now) {
   sonar_ = ring;
   sonar_time_ = now;
+  std::vector<double> axes;
+  axes.reserve(ring.mounts.size());
+  for (const Pose2& m : ring.mounts) axes.push_back(m.yaw);
+  // The condition runs at its frequency (5 Hz in the program): a second without it, it is off.
+  if (const auto turret = sonar_scan_.Ring(axes, now - sonar_wanted_at_ < 1.0, now))
+    io_->PointTurret(*turret);
   if (!pose_) return;
   sonar_pose_ = *pose_;
   // All incoming sensor information is taken as valid for the map (III-C.3), but only while

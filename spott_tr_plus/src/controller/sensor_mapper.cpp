@@ -55,6 +55,7 @@ std::vector<std::string> ValidateParameters(const MappingParameters& p) {
   positive("door_zone_m", p.door_zone_m);
   positive("segment_residual_m", p.segment_residual_m);
   positive("cluster_gap_m", p.cluster_gap_m);
+  positive("echo_cluster_gap_m", p.echo_cluster_gap_m);
   if (!(p.mapless_extent_m >= 5 && p.mapless_extent_m <= 200))
     v.push_back(Violation("mapless_extent_m", "in [5, 200]", p.mapless_extent_m));
   positive("echo_tolerance_m", p.echo_fit.tolerance_base_m);
@@ -327,6 +328,7 @@ void SensorMapper::VoteDoors(const Vec2& from, double angle, double range, bool 
 
 void SensorMapper::AddRing(const RangeRing& ring, const Pose2& robot) {
   if (!have_map_) return;
+  rings_ = true;
   const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
   for (std::size_t i = 0; i < ring.mounts.size() && i < ring.ranges.size(); ++i) {
     const double r = ring.ranges[i];
@@ -452,7 +454,8 @@ SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
   // Each newly confirmed cell's cluster: every confirmed cell within cluster_gap_m of another,
   // old ones included. The cluster is fused anew and replaces the mapper's features it covers,
   // so a wall confirmed over many readings ends as one segment, refined as evidence comes.
-  const int reach = static_cast<int>(std::ceil(p_.cluster_gap_m / p_.cell_m - 1e-9));
+  const double gap = rings_ ? p_.echo_cluster_gap_m : p_.cluster_gap_m;
+  const int reach = static_cast<int>(std::ceil(gap / p_.cell_m - 1e-9));
   std::unordered_set<std::size_t> visited;
   std::vector<std::string> replaced;
   for (const auto& [sx, sy] : pending_) {
@@ -471,7 +474,7 @@ SensedBatch SensorMapper::Take(const spott_map::MapDatabase& db) {
         for (int dx = -reach; dx <= reach; ++dx) {
           const int x = kx + dx, y = ky + dy;
           if (x < 0 || y < 0 || x >= width_ || y >= height_) continue;
-          if (p_.cell_m * std::hypot(dx, dy) > p_.cluster_gap_m + 1e-9) continue;
+          if (p_.cell_m * std::hypot(dx, dy) > gap + 1e-9) continue;
           const std::size_t j = Index(x, y);
           if (!(flags_[j] & kConfirmed) || visited.count(j)) continue;
           visited.insert(j);
@@ -767,6 +770,29 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
         if (c->inliers.size() >= 3 && c->cost < best.cost) best = std::move(*c);
     }
     if (best.inliers.size() < 3) break;
+    if (best.wall) {
+      // Refit on the whole consensus: the group proposed the wall from its own echoes, but
+      // the cluster's other groups heard it too (a scan's turned beams, a wall split by the
+      // cells' split/merge), and only all of them fix its direction.
+      std::vector<SonarEcho> consensus;
+      for (const std::size_t k : best.inliers) consensus.push_back(all[k]);
+      const double phi = std::atan2(best.line.normal.y(), best.line.normal.x());
+      EchoLine refit = FitEchoLine(consensus, phi, 0.1, p);
+      if (!refit.inliers.empty()) {
+        std::vector<std::size_t> inliers;
+        for (std::size_t k = 0; k < all.size(); ++k) {
+          if (used[k]) continue;
+          const auto predicted =
+              PredictEcho(all[k], refit.normal, refit.offset, p.max_incidence_rad);
+          if (predicted && std::abs(predicted->range - all[k].range) <= EchoTolerance(all[k], p))
+            inliers.push_back(k);
+        }
+        if (inliers.size() >= best.inliers.size()) {
+          best.line = std::move(refit);
+          best.inliers = std::move(inliers);
+        }
+      }
+    }
     for (const std::size_t k : best.inliers) used[k] = true;
     if (!best.wall) {
       out.push_back(spott_map::MakePoint("", best.corner.at, ""));

@@ -11,9 +11,10 @@
 // tf: map -> base_link (the localization's estimate), base_link -> the QUADRIS heads.
 // Publishes: map_updates (spott_msgs/MapUpdate: the sensed features, door states), cmd_vel/reflex,
 // cmd_vel/teleop, cmd_vel/executive (the arbiter's inputs), range_profile/point_head (the heads'
-// scanning pattern), ~state (spott_msgs/TRProgramState, latched, on change), ~tree_dot (the live
-// TR trees as DOT, latched, on change), ~firing_rule_marker (rviz text over the robot).
-// Calls: cmd_vel_arbiter/take_wheels, release_wheels; harmonic_planner/navigate (Navigate).
+// scanning pattern), turret/command (std_msgs/Float64: the dense sonar scan's turret angle), ~state
+// (spott_msgs/TRProgramState, latched, on change), ~tree_dot (the live TR trees as DOT, latched, on
+// change), ~firing_rule_marker (rviz text over the robot). Calls: cmd_vel_arbiter/take_wheels,
+// release_wheels; harmonic_planner/navigate (Navigate).
 #include <actionlib/client/simple_action_client.h>
 #include <actionlib/server/action_server.h>
 #include <geometry_msgs/Twist.h>
@@ -35,6 +36,7 @@
 #include <spott_msgs/TakeWheels.h>
 #include <spott_msgs/TaskAction.h>
 #include <spott_msgs/WorldPlaces.h>
+#include <std_msgs/Float64.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_listener.h>
@@ -89,6 +91,7 @@ class ControllerNode : public ControllerIo {
       cmd_pubs_[source] = nh.advertise<geometry_msgs::Twist>(std::string("cmd_vel/") + source, 5);
     }
     heads_pub_ = nh.advertise<sensor_msgs::JointState>("range_profile/point_head", 2);
+    turret_pub_ = nh.advertise<std_msgs::Float64>("turret/command", 2);
     state_pub_ = pnh.advertise<spott_msgs::TRProgramState>("state", 1, true);
     dot_pub_ = pnh.advertise<std_msgs::String>("tree_dot", 1, true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("firing_rule_marker", 1, true);
@@ -297,6 +300,14 @@ class ControllerNode : public ControllerIo {
   }
 
   void SetPtuPattern(const std::string& pattern) override { ptu_pattern_ = pattern; }
+
+  void PointTurret(double yaw) override {
+    std_msgs::Float64 m;
+    m.data = yaw;
+    turret_pub_.publish(m);
+    if (yaw == 0.0)
+      ROS_DEBUG("tr_plus_controller: turret home (%d dense sonar scans)", core_->sonar_scans());
+  }
 
   void PublishTaskFeedback(const TaskFeedback& f) override {
     auto it = goals_.find(f.id);
@@ -561,9 +572,11 @@ class ControllerNode : public ControllerIo {
     js.header.stamp = ros::Time::now();
     const std::vector<double> pan = PanHeads(ptu_pattern_, params_.pan_joints.size(), now,
                                              core_->pose(), core_->map(), params_.ptu);
+    // The heads ride on the turret; the pattern's angles are from the base's heading.
+    const double turret = core_->turret_target();
     for (std::size_t i = 0; i < params_.pan_joints.size(); ++i) {
       js.name.push_back(params_.pan_joints[i]);
-      js.position.push_back(pan[i]);
+      js.position.push_back(pan[i] - turret);
       js.name.push_back(params_.tilt_joints[i]);
       js.position.push_back(0.0);
     }
@@ -652,7 +665,7 @@ class ControllerNode : public ControllerIo {
   std::string last_signature_, marker_text_;
   double marker_s_ = -1e300;
   double scheduled_wake_ = -1;
-  ros::Publisher updates_pub_, heads_pub_, state_pub_, dot_pub_, marker_pub_;
+  ros::Publisher updates_pub_, heads_pub_, turret_pub_, state_pub_, dot_pub_, marker_pub_;
   std::map<std::string, ros::Publisher> cmd_pubs_;
   ros::Subscriber graph_sub_, features_sub_, places_sub_, sonar_sub_, infrared_sub_, bumper_sub_,
       odom_sub_, status_sub_;

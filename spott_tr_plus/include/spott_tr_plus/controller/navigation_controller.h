@@ -37,6 +37,7 @@
 #include "spott_tr_plus/controller/motions.h"
 #include "spott_tr_plus/controller/object_recognition.h"
 #include "spott_tr_plus/controller/sensor_mapper.h"
+#include "spott_tr_plus/controller/sonar_scan.h"
 #include "spott_tr_plus/diagnostic.h"
 #include "spott_tr_plus/interpreter.h"
 #include "spott_tr_plus/task_command.h"
@@ -107,6 +108,9 @@ class ControllerIo {
   virtual void SendMapUpdate(const MapChange& change) = 0;
   /// The pan-tilt heads' scanning pattern (Fig. 10): "room" or "hallway".
   virtual void SetPtuPattern(const std::string& pattern) = 0;
+  /// Turns the sensor turret to `yaw` (rad from the base's heading): MAP_OBJECTS_WITH_SONAR's
+  /// dense scan (sonar_scan.h).
+  virtual void PointTurret(double yaw) = 0;
   virtual void PublishTaskFeedback(const TaskFeedback& feedback) = 0;
   virtual void TaskFinished(const TaskResult& result) = 0;
   /// Starts the localization's active localization (Beetz et al. 2.2, markov_localization's
@@ -183,6 +187,7 @@ struct ControllerParameters {
   std::vector<std::string> subroutines_off;
   unsigned seed = 1;  ///< RANDOM_SEARCH's headings.
   MappingParameters mapping;
+  SonarScanParameters sonar_scan;
   DoorSensingParameters doors;
   RecognitionParameters recognition;
   ReflexParameters reflex;
@@ -268,6 +273,9 @@ class NavigationController {
   const std::string& firing_rule() const { return firing_rule_; }
   const spott_map::MapDatabase& map() const { return db_; }
   const std::optional<Pose2>& pose() const { return pose_; }
+  /// The sensor turret's target (rad from the base's heading): 0 but during a dense sonar scan.
+  double turret_target() const { return sonar_scan_.target(); }
+  int sonar_scans() const { return sonar_scan_.scans_done(); }
   /// Features the controller added to the map so far (ids: sonar_N, quadris_N, contact_N).
   const std::vector<std::string>& added_features() const { return added_ids_; }
   int localization_fixes() const { return fixes_; }
@@ -326,6 +334,8 @@ class NavigationController {
   bool mapless_ = false;  ///< The served map has no rooms: no a priori map (SPOTT's Experiment 1).
   std::vector<spott_map::Place> places_;
   SensorMapper sonar_mapper_, quadris_mapper_, infrared_mapper_;
+  SonarScan sonar_scan_;
+  double sonar_wanted_at_ = -1e300;  ///< MAP_OBJECTS_WITH_SONAR's condition last evaluated (s).
   ObjectRecognizer recognizer_;
   bool profiles_seen_ = false;  ///< QUADRIS profiles arrived: they sense the doors.
   KnownStructure known_;
