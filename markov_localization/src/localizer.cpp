@@ -150,13 +150,15 @@ bool Localizer::GateOpen(const Pose2& odom, double now_s) const {
 }
 
 LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges_m,
-                                   const Pose2& odom, double now_s) {
+                                   const Pose2& odom, double now_s, double turn_rad) {
   if (sensor < 0 || sensor >= static_cast<int>(pending_.size()))
     throw std::invalid_argument("Localizer::OnReading: no sensor " + std::to_string(sensor));
   if (static_cast<int>(ranges_m.size()) != models_->sensors[sensor]->num_beams())
     throw std::invalid_argument("Localizer::OnReading: " + std::to_string(ranges_m.size()) +
                                 " readings for sensor " + std::to_string(sensor) + " of " +
                                 std::to_string(models_->sensors[sensor]->num_beams()) + " beams");
+  if (!std::isfinite(turn_rad))
+    throw std::invalid_argument("Localizer::OnReading: a reading turned by a non-finite angle");
   // Standing: slower than 2 cm/s and 3 deg/s since the previous reading of any sensor (a
   // reading older than that one, a profile joining late, leaves the judgement as it was).
   if (has_last_reading_ && now_s > last_reading_s_) {
@@ -173,6 +175,7 @@ LocalizerStep Localizer::OnReading(int sensor, const std::vector<double>& ranges
   const bool twice = p.fresh && opener_ == sensor;
   p.ranges = ranges_m;
   p.odom = odom;
+  p.turn_rad = turn_rad;
   p.fresh = true;
   p.time_s = now_s;
   if (!GateOpen(odom, now_s)) return LocalizerStep{};
@@ -208,8 +211,8 @@ LocalizerStep Localizer::Update(const Pose2& odom, double now_s) {
   std::vector<SensorReading> readings;
   for (std::size_t s = 0; s < pending_.size(); ++s) {
     if (!Joins(s)) continue;
-    readings.push_back(
-        SensorReading{models_->sensors[s].get(), &pending_[s].ranges, judged_[s] != 0});
+    readings.push_back(SensorReading{models_->sensors[s].get(), &pending_[s].ranges,
+                                     judged_[s] != 0, pending_[s].turn_rad});
   }
   step.sensors_used = static_cast<int>(readings.size());
   const bool motion_reset = grid_->forced_resets() != resets_before;

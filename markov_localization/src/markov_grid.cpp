@@ -461,6 +461,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   struct Beam {
     const SensorModel* model;
     int b;
+    int offset;  // heading bins from the state's heading to the beam's direction
     int z;
     bool dropped;  // NaN: the sensor dropped out; the beam says nothing
     bool judged;   // counted in the lost detector's surprise
@@ -477,9 +478,13 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       throw std::invalid_argument("SensorUpdate: " + std::to_string(r.ranges_m->size()) +
                                   " readings for a sensor model of " + std::to_string(nb) +
                                   " beams");
+    if (!std::isfinite(r.turn_rad))
+      throw std::invalid_argument("SensorUpdate: a reading turned by a non-finite angle");
+    const long turn = std::lround(std::remainder(r.turn_rad, 2.0 * M_PI) / angular_resolution());
     for (int b = 0; b < nb; ++b) {
       const double range = (*r.ranges_m)[b];
-      beams.push_back(Beam{&s, b, s.BeamBin(b, range), std::isnan(range), r.judged});
+      const int offset = static_cast<int>(((s.beam_offset(b) + turn) % nt_ + nt_) % nt_);
+      beams.push_back(Beam{&s, b, offset, s.BeamBin(b, range), std::isnan(range), r.judged});
     }
   }
   SensorUpdateStats stats;
@@ -527,7 +532,7 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
             const Beam& b = beams[i];
             if (!use[i] || b.dropped || !b.judged) continue;
             const SensorModel& s = *b.model;
-            const int e = s.BeamRow(b.b, (k + s.beam_offset(b.b)) % nt_)[c];
+            const int e = s.BeamRow(b.b, (k + b.offset) % nt_)[c];
             sum += std::log(s.Likelihood(e, b.z)) - s.ExpectedLogLikelihood(e);
             ++judged;
           }
@@ -540,9 +545,11 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   std::vector<std::uint8_t> unexpected(beams.size(), 0);
   {
     const std::size_t left_out = DistanceFilter(
-        beams.size(), [&](std::size_t i) { return beams[i].model; },
-        [&](std::size_t i) { return beams[i].b; }, [&](std::size_t i) { return beams[i].z; },
-        &unexpected);
+        beams.size(),
+        [&](std::size_t i) {
+          return BeamTables{beams[i].model, beams[i].b, beams[i].offset};
+        },
+        [&](std::size_t i) { return beams[i].z; }, &unexpected);
     bool leave_out = left_out <= params_.distance_filter_max_fraction * beams.size();
     if (!leave_out && left_out > 0 && params_.distance_filter_confirm_ratio > 0.0 &&
         detector_.slow() > 0.0) {
@@ -643,8 +650,9 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
     while (end < beams.size() && sum + log_min[end] >= budget) sum += log_min[end++];
     double log_unlikely_factor = 0.0;
     for (std::size_t i = begin; i < end; ++i) log_unlikely_factor -= log_max[i];
-    std::vector<std::pair<const SensorModel*, int>> group;
-    for (std::size_t i = begin; i < end; ++i) group.emplace_back(beams[i].model, beams[i].b);
+    std::vector<BeamTables> group;
+    for (std::size_t i = begin; i < end; ++i)
+      group.push_back(BeamTables{beams[i].model, beams[i].b, beams[i].offset});
     double alpha = 0.0;
     if (!SensorGroup(columns.data() + begin * stride, stride, group, log_unlikely_factor, &stats,
                      &alpha)) {
@@ -692,9 +700,9 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   return stats;
 }
 
-template <typename ModelOf, typename BeamOf, typename BinOf>
-std::size_t MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of,
-                                       BinOf bin_of, std::vector<std::uint8_t>* unexpected) const {
+template <typename TablesOf, typename BinOf>
+std::size_t MarkovGrid::DistanceFilter(std::size_t n, TablesOf tables_of, BinOf bin_of,
+                                       std::vector<std::uint8_t>* unexpected) const {
   if (!params_.distance_filter || ActiveParts() > params_.distance_filter_max_parts) return 0;
   // P(the reading is more than margin shorter than expected) under the belief, over the
   // states above theta (the rest hold less than 1% of the mass).
@@ -702,7 +710,7 @@ std::size_t MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf b
   std::vector<double> shorter(n, 0.0);
   std::vector<int> margin_bins(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const SensorModel& s = *model_of(i);
+    const SensorModel& s = *tables_of(i).model;
     margin_bins[i] = static_cast<int>(std::ceil(
         params_.distance_filter_sigmas * s.parameters().sigma_hit_m / s.parameters().range_bin_m -
         1e-9));
@@ -714,8 +722,8 @@ std::size_t MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf b
     const float* data = LayerData(j);
     std::vector<const std::uint8_t*> rows(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const SensorModel& s = *model_of(i);
-      rows[i] = s.BeamRow(beam_of(i), (k + s.beam_offset(beam_of(i))) % nt_);
+      const BeamTables t = tables_of(i);
+      rows[i] = t.model->BeamRow(t.beam, (k + t.offset) % nt_);
     }
     for (std::size_t sp = 0; sp + 1 < spans_.size(); sp += 2) {
       for (std::uint32_t c = spans_[sp]; c < spans_[sp + 1]; ++c) {
@@ -734,8 +742,7 @@ std::size_t MarkovGrid::DistanceFilter(std::size_t n, ModelOf model_of, BeamOf b
   return count;
 }
 
-bool MarkovGrid::SensorGroup(const float* columns, int stride,
-                             const std::vector<std::pair<const SensorModel*, int>>& beams,
+bool MarkovGrid::SensorGroup(const float* columns, int stride, const std::vector<BeamTables>& beams,
                              double log_unlikely_factor, SensorUpdateStats* stats,
                              double* alpha_out) {
   const int nb = static_cast<int>(beams.size());
@@ -755,9 +762,7 @@ bool MarkovGrid::SensorGroup(const float* columns, int stride,
       const int j = active_layers[i];
       const int k = HeadingOfLayer(j);
       for (int b = 0; b < nb; ++b) {
-        const SensorModel& s = *beams[b].first;
-        const int beam = beams[b].second;
-        rows[b] = s.BeamRow(beam, (k + s.beam_offset(beam)) % nt_);
+        rows[b] = beams[b].model->BeamRow(beams[b].beam, (k + beams[b].offset) % nt_);
       }
       kernels::SensorLayerIn in;
       in.data = LayerData(j);

@@ -23,10 +23,11 @@ double ScanLogLikelihood(const MapModel& map, const std::vector<SensorReading>& 
   for (const SensorReading& r : readings) {
     const SensorModel& s = *r.sensor;
     const double sigma = sigma_scale * s.parameters().sigma_hit_m;
+    const Pose2 turned{pose.x, pose.y, pose.yaw + r.turn_rad};  // SensorReading::turn_rad
     for (int b = 0; b < s.num_beams(); ++b, ++i) {
       if (used && i < used->size() && !(*used)[i]) continue;
       if (std::isnan((*r.ranges_m)[b])) continue;  // dropped out
-      total += s.LogLikelihood(s.ExpectedRange(map, pose, b), (*r.ranges_m)[b], sigma);
+      total += s.LogLikelihood(s.ExpectedRange(map, turned, b), (*r.ranges_m)[b], sigma);
     }
   }
   return total;

@@ -148,6 +148,34 @@ TEST(MarkovGrid, ADroppedOutBeamIsLeftOutNotReadAsNoEcho) {
   EXPECT_GT(grid.Probability(3, 1, 0), 5 * grid.Probability(1, 1, 0));
 }
 
+TEST(MarkovGrid, AReadingTurnedByTheTurretIsTheModelsFromTheTurnedHeading) {
+  // SPOTT's dense scan turns the sonars on the turret: a ring of radial transducers turned by
+  // a quarter turn reads what the unturned ring reads from the heading a quarter turn on.
+  const MapModel map = Corridor();
+  const SensorModel sensor(map, 4, OneBeam());
+  for (const double reading : {1.5, 2.5, 0.5}) {
+    MarkovGrid turned(map, sensor, FourHeadings(false));
+    MarkovGrid plain(map, sensor, FourHeadings(false));
+    const std::vector<double> ranges{reading};
+    turned.SensorUpdateWith({SensorReading{&sensor, &ranges, true, M_PI / 2}});
+    plain.SensorUpdateWith({SensorReading{&sensor, &ranges, true, 0.0}});
+    double apart = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      for (int ix = 1; ix <= 5; ++ix) {
+        EXPECT_NEAR(turned.Probability(ix, 1, k), plain.Probability(ix, 1, (k + 1) % 4), 1e-7)
+            << reading << " m at " << ix << "," << k;
+        apart =
+            std::max(apart, std::abs(turned.Probability(ix, 1, k) - plain.Probability(ix, 1, k)));
+      }
+    }
+    EXPECT_GT(apart, 0.01) << "the turn changes the belief";
+  }
+  MarkovGrid grid(map, sensor, FourHeadings(false));
+  const std::vector<double> ranges{1.5};
+  EXPECT_THROW(grid.SensorUpdateWith({SensorReading{&sensor, &ranges, true, std::nan("")}}),
+               std::invalid_argument);
+}
+
 TEST(MarkovGrid, MotionShiftsEachHeadingAlongItself) {
   const MapModel map = Corridor();
   const SensorModel sensor(map, 4, OneBeam());

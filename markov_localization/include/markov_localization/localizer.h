@@ -123,9 +123,10 @@ class Localizer {
   /// set), the update runs once every sensor has a reading newer than the last update (or this
   /// sensor delivered twice meanwhile): one motion update with the odometry since the last
   /// update, one sensor update with the newest reading of each sensor. Throws
-  /// std::invalid_argument for a bad sensor index or a reading of the wrong size.
+  /// std::invalid_argument for a bad sensor index or a reading of the wrong size. `turn_rad`:
+  /// the transducers turned about the robot's centre (SensorReading::turn_rad).
   LocalizerStep OnReading(int sensor, const std::vector<double>& ranges_m, const Pose2& odom,
-                          double now_s);
+                          double now_s, double turn_rad = 0.0);
 
   /// Whether an update has happened since the belief was set (map_to_odom is valid).
   bool has_estimate() const { return has_estimate_; }
@@ -150,6 +151,7 @@ class Localizer {
   struct Pending {
     std::vector<double> ranges;
     Pose2 odom;
+    double turn_rad = 0.0;
     bool fresh = false;  // received after the last update
     double time_s = 0.0;
   };

@@ -124,6 +124,11 @@ struct SensorReading {
   /// Whether the lost detector's surprise counts this reading's beams (a narrow view, a
   /// profile of 40 degrees across an unmapped desk, says little about a kidnap).
   bool judged = true;
+  /// The transducers turned this far (rad) about the robot's centre from the model's beams (a
+  /// turret: SPOTT's dense sonar scan). A ring of radial transducers turned by it reads what the
+  /// model's ring reads from the heading + turn_rad: the update takes each beam's tables that
+  /// many heading bins on (rounded: within half a bin, as the heading itself is).
+  double turn_rad = 0.0;
 };
 
 class MarkovGrid {
@@ -215,14 +220,20 @@ class MarkovGrid {
   void Normalize();
   void Normalize(const double* active_sums);  // sums of the active parts when known
   // One group of beams of SensorUpdate: eq. (4) and the normalization; false after a reset.
-  bool SensorGroup(const float* columns, int stride,
-                   const std::vector<std::pair<const SensorModel*, int>>& beams,
+  // A beam as the update reads its tables: its model, index, and the heading-bin offset of its
+  // direction (the model's beam_offset, plus the reading's turn).
+  struct BeamTables {
+    const SensorModel* model;
+    int beam;
+    int offset;
+  };
+  bool SensorGroup(const float* columns, int stride, const std::vector<BeamTables>& beams,
                    double log_unlikely_factor, SensorUpdateStats* stats, double* alpha);
   void ResetUniform(const std::string& reason);  // SetUniform, lost, the reason kept
   // Marks in `unexpected` the beams the belief expects to be shorter than the map says (the
   // distance filter's candidates, see MarkovGridParameters) and returns how many.
-  template <typename ModelOf, typename BeamOf, typename BinOf>
-  std::size_t DistanceFilter(std::size_t n, ModelOf model_of, BeamOf beam_of, BinOf bin_of,
+  template <typename TablesOf, typename BinOf>
+  std::size_t DistanceFilter(std::size_t n, TablesOf tables_of, BinOf bin_of,
                              std::vector<std::uint8_t>* unexpected) const;
 
   const MapModel& map_;

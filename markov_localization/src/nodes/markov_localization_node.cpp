@@ -62,8 +62,8 @@ std::optional<spott_map::Pose2> PoseOf(const geometry_msgs::Pose& pose) {
   return spott_map::Pose2{p->x, p->y, p->theta};
 }
 
-// A ring's transducers this far off the model's beams are elsewhere (rad): the turret's step in
-// SPOTT's dense scan is 2.5 degrees (0.044 rad).
+// A ring's transducers turned together when their axes are off the model's beams by the same
+// angle within this (rad); the turret's step in SPOTT's dense scan is 2.5 degrees (0.044 rad).
 constexpr double kMountToleranceRad = 0.01;
 
 // Why a ring is refused (its limit is not a usable number), or "".
@@ -463,7 +463,7 @@ class LocalizationNode {
       sonar_on_ = true;
     }
     // No update, the estimate on odometry: switched off (enable_sonar), or read with the
-    // transducers elsewhere than the model's beams (the turret turned: SPOTT's dense scan).
+    // transducers elsewhere than the model's beams and not turned together.
     const auto on_odometry = [&] {
       const auto at = ReadingOdometry(ring.header.stamp);
       if (!at) return;
@@ -472,20 +472,28 @@ class LocalizationNode {
               ring.max_range);
     };
     if (!sonar_on_) return on_odometry();
+    double turn = 0.0;
     if (params_.ring_geometry) {
-      const std::string turned = ml::ros_conversions::RingGeometryChange(
-          ring, sonar_model_->beam_angles_rad, kMountToleranceRad);
-      if (!turned.empty()) {
+      // The turret turned (SPOTT's dense sonar scan): the ring reads as the model's from the
+      // heading + turn (SensorReading::turn_rad).
+      std::string why;
+      const std::optional<double> turned = ml::ros_conversions::RingTurn(
+          ring, sonar_model_->beam_angles_rad, kMountToleranceRad, &why);
+      if (!turned) {
         ROS_WARN_THROTTLE(10,
-                          "markov_localization: rings on '%s' read with other mounts than the "
-                          "first ring's are skipped, the estimate follows odometry: %s",
-                          params_.ring_topic.c_str(), turned.c_str());
+                          "markov_localization: rings on '%s' whose transducers did not turn "
+                          "together from the first ring's are skipped, the estimate follows "
+                          "odometry: %s",
+                          params_.ring_topic.c_str(), why.c_str());
         return on_odometry();
       }
+      turn = *turned;
     }
     last_ring_max_range_ = ring.max_range;
-    OnReading(sonar_index_, ranges_, ring.header.stamp, sonar_model_->beam_angles_rad,
-              ring.max_range);
+    turned_angles_ = sonar_model_->beam_angles_rad;
+    for (double& a : turned_angles_) a += turn;
+    OnReading(sonar_index_, ranges_, ring.header.stamp, turned_angles_, ring.max_range,
+              /*reactive_is_ring=*/false, turn);
   }
 
   void OnScan(const sensor_msgs::LaserScan& scan) {
@@ -537,18 +545,21 @@ class LocalizationNode {
       refusals_.Refuse(params_.profile.topic, "ranges", why);
       return;
     }
-    const auto& reactive = sonar_model_ ? sonar_model_->beam_angles_rad : no_beams_;
+    const auto& reactive = !sonar_model_            ? no_beams_
+                           : turned_angles_.empty() ? sonar_model_->beam_angles_rad
+                                                    : turned_angles_;
     OnReading(profile_index_, profile_ranges_, msg.header.stamp, reactive,
               sonar_model_ ? last_ring_max_range_ : 0.0, /*reactive_is_ring=*/true);
   }
 
   void OnReading(int sensor, const std::vector<double>& ranges, const ros::Time& stamp,
                  const std::vector<double>& beam_angles, double max_range,
-                 bool reactive_is_ring = false) {
+                 bool reactive_is_ring = false, double turn_rad = 0.0) {
     PollRebuild();
     const auto at = ReadingOdometry(stamp);
     if (!at) {  // its odometry is still queued: processed when it comes (ReleaseHeld)
-      held_.push_back(HeldReading{sensor, ranges, stamp, beam_angles, max_range, reactive_is_ring});
+      held_.push_back(
+          HeldReading{sensor, ranges, stamp, beam_angles, max_range, reactive_is_ring, turn_rad});
       if (held_.size() > kMaxHeld) held_.pop_front();
       return;
     }
@@ -556,7 +567,7 @@ class LocalizationNode {
     reading_odom_ = *at;
     const auto start = std::chrono::steady_clock::now();
     const ml::LocalizerStep step =
-        localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec());
+        localizer_->OnReading(sensor, ranges, reading_odom_, stamp.toSec(), turn_rad);
     if (step.lost)
       ROS_WARN("markov_localization: lost: %s; relocalizing", step.lost_reason.c_str());
     if (step.switched) {
@@ -617,7 +628,8 @@ class LocalizationNode {
            odometry_.At(held_.front().stamp.toSec(), params_.odometry_max_lag_s)) {
       const HeldReading r = std::move(held_.front());
       held_.pop_front();
-      OnReading(r.sensor, r.ranges, r.stamp, r.beam_angles, r.max_range, r.reactive_is_ring);
+      OnReading(r.sensor, r.ranges, r.stamp, r.beam_angles, r.max_range, r.reactive_is_ring,
+                r.turn_rad);
     }
   }
 
@@ -727,6 +739,7 @@ class LocalizationNode {
   double odom_distance_m_ = 0.0;
   double entropy_ = 0.0;  // H_P at the last belief grid (nats)
   std::vector<double> ranges_, laser_ranges_;
+  std::vector<double> turned_angles_;  ///< The last ring's beams' angles (the turret's turn in).
   ros::Publisher pose_pub_, status_pub_, modes_pub_, belief_modes_pub_, belief_pub_;
   ros::Subscriber odom_sub_, ring_sub_, scan_sub_, profile_sub_, initial_sub_, map_sub_,
       updates_sub_;
@@ -748,6 +761,7 @@ class LocalizationNode {
     std::vector<double> beam_angles;
     double max_range;
     bool reactive_is_ring;
+    double turn_rad;
   };
   static constexpr std::size_t kMaxHeld = 10;  ///< The oldest beyond are left out.
   std::deque<HeldReading> held_;

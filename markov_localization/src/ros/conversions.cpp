@@ -206,22 +206,31 @@ std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
   return z;
 }
 
-std::string RingGeometryChange(const spott_msgs::RangeRing& ring,
-                               const std::vector<double>& beam_angles_rad, double tolerance_rad) {
-  if (ring.mounts.empty()) return "";
-  if (ring.mounts.size() != beam_angles_rad.size())
-    return std::to_string(ring.mounts.size()) + " mounts, the model has " +
+std::optional<double> RingTurn(const spott_msgs::RangeRing& ring,
+                               const std::vector<double>& beam_angles_rad, double tolerance_rad,
+                               std::string* why) {
+  if (ring.mounts.empty()) return 0.0;
+  if (ring.mounts.size() != beam_angles_rad.size()) {
+    *why = std::to_string(ring.mounts.size()) + " mounts, the model has " +
            std::to_string(beam_angles_rad.size()) + " beams";
+    return std::nullopt;
+  }
+  const auto off = [&](std::size_t i) {
+    return spott_map::NormalizeAngle(ring.mounts[i].theta - beam_angles_rad[i]);
+  };
+  const double turn = off(0);
   for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
-    const double off = spott_map::NormalizeAngle(ring.mounts[i].theta - beam_angles_rad[i]);
-    if (!(std::abs(off) <= tolerance_rad)) {
+    const double apart = spott_map::NormalizeAngle(off(i) - turn);
+    if (!(std::abs(apart) <= tolerance_rad)) {
       std::ostringstream out;
       out.precision(3);
-      out << "mount " << i << " points " << off << " rad off the model's beam (the turret turned?)";
-      return out.str();
+      out << "mount " << i << " points " << off(i) << " rad off the model's beam, mount 0 " << turn
+          << " rad: the transducers did not turn together";
+      *why = out.str();
+      return std::nullopt;
     }
   }
-  return "";
+  return turn;
 }
 
 }  // namespace markov_localization::ros_conversions

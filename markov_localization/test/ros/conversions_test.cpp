@@ -34,7 +34,7 @@ BeliefSnapshot SmallBelief() {
 
 // SPOTT's dense scan turns the Nomad's turret (and its sonar ring) in 2.5-degree steps: such a
 // ring must not be read as the model's beams.
-TEST(Conversions, ARingReadWithTheTurretTurnedIsNotTheModelsGeometry) {
+TEST(Conversions, ARingReadWithTheTurretTurnedIsTheModelsRingTurned) {
   spott_msgs::RangeRing ring;
   std::vector<double> beams;
   for (int i = 0; i < 16; ++i) {
@@ -45,16 +45,22 @@ TEST(Conversions, ARingReadWithTheTurretTurnedIsNotTheModelsGeometry) {
     ring.mounts.push_back(m);
     beams.push_back(m.theta);
   }
-  EXPECT_EQ(conv::RingGeometryChange(ring, beams, 0.01), "");
+  std::string why;
+  EXPECT_EQ(conv::RingTurn(ring, beams, 0.01, &why), 0.0);
   for (auto& m : ring.mounts) m.theta = spott_map::NormalizeAngle(m.theta + 2.5 * M_PI / 180);
-  EXPECT_NE(conv::RingGeometryChange(ring, beams, 0.01).find("mount 0 points 0.0436 rad off"),
-            std::string::npos)
-      << conv::RingGeometryChange(ring, beams, 0.01);
+  const auto turned = conv::RingTurn(ring, beams, 0.01, &why);
+  ASSERT_TRUE(turned) << why;
+  EXPECT_NEAR(*turned, 2.5 * M_PI / 180, 1e-9);
+  ring.mounts[3].theta += 0.05;  // one transducer elsewhere: not a turn of the ring
+  EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
+  EXPECT_NE(why.find("mount 3 points"), std::string::npos) << why;
+  ring.mounts[3].theta = std::nan("");
+  EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
   ring.mounts.pop_back();
-  EXPECT_NE(conv::RingGeometryChange(ring, beams, 0.01).find("15 mounts, the model has 16 beams"),
-            std::string::npos);
+  EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
+  EXPECT_NE(why.find("15 mounts, the model has 16 beams"), std::string::npos) << why;
   ring.mounts.clear();  // a ring without mounts: the configured geometry holds
-  EXPECT_EQ(conv::RingGeometryChange(ring, beams, 0.01), "");
+  EXPECT_EQ(conv::RingTurn(ring, beams, 0.01, &why), 0.0);
 }
 
 TEST(Conversions, BeliefGridIsTheMarginalOverThetaScaledToAMaximumOf100) {

@@ -3,6 +3,7 @@
 // map -> odom transform and the Navigate goal of an active-localization target.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,12 +78,15 @@ std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
                                     const geometry_msgs::Transform& to_base, int bins,
                                     double min_height_m, double max_height_m, std::string* why);
 
-/// Why a ring's transducers do not point where the sonar model's beams do ("" when they do, every
-/// mount's axis within `tolerance_rad` of `beam_angles_rad`; a ring without mounts: ""). The
-/// model's tables are cast for the beams' angles once: a ring read with the turret turned (the
-/// Nomad's sonars ride on it; robot_sim's /turret/command) would be read as the wrong beams.
-std::string RingGeometryChange(const spott_msgs::RangeRing& ring,
-                               const std::vector<double>& beam_angles_rad, double tolerance_rad);
+/// How far a ring's transducers turned together from the sonar model's beams (rad, in
+/// (-pi, pi]): every mount's axis off its beam by the same angle within `tolerance_rad` (the
+/// Nomad's sonars ride on its turret: robot_sim's /turret/command, SPOTT's dense scan); 0 for a
+/// ring without mounts (the configured geometry holds). nullopt when they did not turn together
+/// or the ring has another number of mounts, with the reason in `why`: the model's tables, cast
+/// for the beams' angles, cannot read it.
+std::optional<double> RingTurn(const spott_msgs::RangeRing& ring,
+                               const std::vector<double>& beam_angles_rad, double tolerance_rad,
+                               std::string* why);
 
 geometry_msgs::TransformStamped ToTransform(const Pose2& map_to_odom, const std::string& map_frame,
                                             const std::string& odom_frame, const ros::Time& stamp);
