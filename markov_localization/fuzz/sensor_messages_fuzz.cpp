@@ -1,10 +1,11 @@
 // markov_localization's inbound message conversions on messages built field by field from the
 // fuzzer's bytes (any sizes, NaN, infinities, huge and negative numbers), as the node takes
 // them: a LaserScan through spott_ros::LaserScanProblem, then LaserBeams / LaserBeamAngles /
-// LaserRanges; a RangeProfile through ProfileReadings; an OccupancyGrid through FromOccupancyGrid
-// and MapModel::FromOccupancy. Whatever is accepted must be usable by the sensor model: beam
-// indices inside the scan, finite beam angles, readings that are NaN (left out), +infinity (no
-// echo) or a finite distance in range. A refusal must say why.
+// LaserRanges; a RangeProfile through ProfileReadings; a RangeRing's mounts through RingTurn (a
+// turned ring's turn must be finite, the model's beams turned by it within the tolerance); an
+// OccupancyGrid through FromOccupancyGrid and MapModel::FromOccupancy. Whatever is accepted must be
+// usable by the sensor model: beam indices inside the scan, finite beam angles, readings that are
+// NaN (left out), +infinity (no echo) or a finite distance in range. A refusal must say why.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
@@ -94,6 +95,34 @@ void Profile(FuzzedDataProvider& in) {
           "a profile reading negative or -infinity");
 }
 
+void Ring(FuzzedDataProvider& in) {
+  spott_msgs::RangeRing ring;
+  std::vector<double> beams;
+  const int n = in.ConsumeIntegralInRange<int>(0, 32);
+  const double turn = AnyNumber<double>(in, -7.0, 7.0);
+  for (int i = 0; i < n; ++i) {
+    beams.push_back(AnyNumber<double>(in, -4.0, 4.0));
+    geometry_msgs::Pose2D m;
+    m.theta = in.ConsumeBool() ? beams.back() + turn : AnyNumber<double>(in, -7.0, 7.0);
+    m.x = AnyNumber<double>(in, -1.0, 1.0);
+    m.y = AnyNumber<double>(in, -1.0, 1.0);
+    ring.mounts.push_back(m);
+  }
+  if (in.ConsumeBool() && !beams.empty()) beams.pop_back();
+  const double tolerance = in.ConsumeFloatingPointInRange<double>(0.0, 0.1);
+  std::string why;
+  const auto turned = conv::RingTurn(ring, beams, tolerance, &why);
+  if (!turned) {
+    Check(!why.empty(), "a ring refused without a reason");
+    return;
+  }
+  Check(std::isfinite(*turned) && std::abs(*turned) <= M_PI + 1e-9, "a turn not in [-pi, pi]");
+  for (std::size_t i = 0; i < ring.mounts.size(); ++i)
+    Check(std::abs(std::remainder(ring.mounts[i].theta - beams[i] - *turned, 2 * M_PI)) <=
+              tolerance + 1e-9,
+          "a mount off the turned beam beyond the tolerance");
+}
+
 void Grid(FuzzedDataProvider& in) {
   nav_msgs::OccupancyGrid grid;
   grid.info.resolution = AnyNumber<float>(in, 0.0f, 1.0f);
@@ -121,12 +150,15 @@ void Grid(FuzzedDataProvider& in) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FuzzedDataProvider in(data, size);
-  switch (in.ConsumeIntegralInRange<int>(0, 2)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
     case 0:
       Scan(in);
       break;
     case 1:
       Profile(in);
+      break;
+    case 2:
+      Ring(in);
       break;
     default:
       Grid(in);
