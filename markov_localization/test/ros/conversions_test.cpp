@@ -56,6 +56,16 @@ TEST(Conversions, ARingReadWithTheTurretTurnedIsTheModelsRingTurned) {
   EXPECT_NE(why.find("mount 3 points"), std::string::npos) << why;
   ring.mounts[3].theta = std::nan("");
   EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
+  ring.mounts[3].theta = 1e17;  // finite, but no angle: refused by name
+  EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
+  EXPECT_NE(why.find("mounts[].theta 3 is"), std::string::npos) << why;
+  ring.mounts[3].theta = beams[3];
+  // sensor_messages_fuzz's crash: a beam of -1.5e308 rad "turned" every mount within the
+  // tolerance once its difference had lost the angle to rounding.
+  std::vector<double> absurd = beams;
+  absurd[0] = -1.52302e308;
+  EXPECT_FALSE(conv::RingTurn(ring, absurd, 0.01, &why));
+  EXPECT_NE(why.find("the model's beam 0 is"), std::string::npos) << why;
   ring.mounts.pop_back();
   EXPECT_FALSE(conv::RingTurn(ring, beams, 0.01, &why));
   EXPECT_NE(why.find("15 mounts, the model has 16 beams"), std::string::npos) << why;
