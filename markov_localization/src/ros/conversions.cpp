@@ -217,18 +217,17 @@ std::optional<double> RingTurn(const spott_msgs::RangeRing& ring,
   }
   // Angles beyond a turn either way are no transducer's (and their difference would lose the
   // angle to rounding: a beam of -1.5e308 rad, found by sensor_messages_fuzz).
-  for (std::size_t i = 0; i < ring.mounts.size(); ++i) {
-    for (const auto& [what, a] :
-         {std::pair<const char*, double>{"mounts[].theta", ring.mounts[i].theta},
-          std::pair<const char*, double>{"the model's beam", beam_angles_rad[i]}}) {
-      if (!(std::abs(a) <= 2.0 * M_PI)) {
-        std::ostringstream out;
-        out << what << " " << i << " is " << a << " rad, not an angle in [-2 pi, 2 pi]";
-        *why = out.str();
-        return std::nullopt;
-      }
-    }
-  }
+  const auto no_angle = [why](const char* what, std::size_t i, double a) {
+    if (std::abs(a) <= 2.0 * M_PI) return false;
+    std::ostringstream out;
+    out << what << " " << i << " is " << a << " rad, not an angle in [-2 pi, 2 pi]";
+    *why = out.str();
+    return true;
+  };
+  for (std::size_t i = 0; i < ring.mounts.size(); ++i)
+    if (no_angle("mounts[].theta", i, ring.mounts[i].theta) ||
+        no_angle("the model's beam", i, beam_angles_rad[i]))
+      return std::nullopt;
   const auto off = [&](std::size_t i) {
     return spott_map::NormalizeAngle(ring.mounts[i].theta - beam_angles_rad[i]);
   };

@@ -729,6 +729,11 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
     std::vector<std::size_t> inliers;  // into `all`
     double cost = 1e300;
   };
+  // An echo's range residual against a wall (1e9: the wall gives that transducer no echo).
+  const auto wall_residual = [&p](const SonarEcho& e, const EchoLine& line) {
+    const auto predicted = PredictEcho(e, line.normal, line.offset, p.max_incidence_rad);
+    return predicted ? std::abs(predicted->range - e.range) : 1e9;
+  };
   for (std::size_t round = 0; round < 2 * groups.size() + 2; ++round) {
     Proposal best;
     for (std::size_t gi = 0; gi < groups.size(); ++gi) {
@@ -752,9 +757,7 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
         if (used[k]) continue;
         const SonarEcho& e = all[k];
         const double tol = EchoTolerance(e, p);
-        const auto predicted =
-            PredictEcho(e, wall.line.normal, wall.line.offset, p.max_incidence_rad);
-        const double rw = predicted ? std::abs(predicted->range - e.range) : 1e9;
+        const double rw = wall_residual(e, wall.line);
         wall.cost += EchoCost(rw, tol);
         if (rw <= tol) wall.inliers.push_back(k);
         const std::optional<double> at_corner = CornerResidual(e, corner.corner.at);
@@ -780,13 +783,9 @@ void FuseFromEchoes(const std::vector<Vec2>& cells, const std::vector<Group>& gr
       EchoLine refit = FitEchoLine(consensus, phi, 0.1, p);
       if (!refit.inliers.empty()) {
         std::vector<std::size_t> inliers;
-        for (std::size_t k = 0; k < all.size(); ++k) {
-          if (used[k]) continue;
-          const auto predicted =
-              PredictEcho(all[k], refit.normal, refit.offset, p.max_incidence_rad);
-          if (predicted && std::abs(predicted->range - all[k].range) <= EchoTolerance(all[k], p))
+        for (std::size_t k = 0; k < all.size(); ++k)
+          if (!used[k] && wall_residual(all[k], refit) <= EchoTolerance(all[k], p))
             inliers.push_back(k);
-        }
         if (inliers.size() >= best.inliers.size()) {
           best.line = std::move(refit);
           best.inliers = std::move(inliers);

@@ -19,7 +19,7 @@ struct SonarScanParameters {
   /// A dense scan this often while the condition runs (s), >= 0; 0 never. 5 s: Experiment 1's
   /// "updated its map of the environment from sonar data every 5 seconds".
   double period_s = 5.0;
-  int steps = 9;          ///< Ring readings per scan (turret angles), in [2, 64].
+  int steps = 9;                   ///< Ring readings per scan (turret angles), in [2, 64].
   double step_rad = 0.0436332313;  ///< Between them (rad), in (0, pi/4]: 2.5 degrees.
   double settle_rad = 0.005;       ///< A ring this close to the step's angle is its reading (rad).
   /// A step whose angle is not reached this long after it was asked ends the scans: the robot
