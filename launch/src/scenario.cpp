@@ -205,9 +205,11 @@ ScenarioResult ParseScenario(const std::string& text, const std::string& file) {
       s.real_time_factor = *rtf;
   }
   s.localization = in.String(root, "localization", what, false).value_or("markov");
-  if (s.localization != "markov" && s.localization != "truth" && s.localization != "odometry")
-    in.Error(root["localization"],
-             "localization: expected markov, truth or odometry, got '" + s.localization + "'");
+  if (s.localization != "markov" && s.localization != "truth" && s.localization != "odometry" &&
+      s.localization != "sensed")
+    in.Error(
+        root["localization"],
+        "localization: expected markov, truth, odometry or sensed, got '" + s.localization + "'");
   s.a_priori_map = in.Bool(root, "a_priori_map", what, false).value_or(true);
   s.global_localization = in.Bool(root, "global_localization", what, false).value_or(false);
   if (s.global_localization && s.localization != "markov")

@@ -198,6 +198,21 @@ TEST(Scenario, LaunchArgumentsAndDemoParametersSayWhatTheFileSays) {
   EXPECT_DOUBLE_EQ(r.scenario->EffectiveTimeLimit(), 60.0 + 2 * 100.0);
 }
 
+TEST(Scenario, AStackWithoutAPrioriMapCanLocalizeOnTheSensedMap) {
+  const auto r = ParseScenario(
+      "world: cim_office\nlocalization: sensed\na_priori_map: false\n"
+      "tasks: [\"go to point(27, 15.5)\"]\n",
+      "s.yaml");
+  ASSERT_TRUE(r.ok()) << Errors(r);
+  const auto args = LaunchArguments(*r.scenario);
+  EXPECT_NE(std::find(args.begin(), args.end(), "localization:=sensed"), args.end());
+  const auto bad = ParseScenario("world: cim_office\nlocalization: slam\ngoals: [x]\n", "s.yaml");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(Errors(bad).find("expected markov, truth, odometry or sensed, got 'slam'"),
+            std::string::npos)
+      << Errors(bad);
+}
+
 TEST(Scenario, AStackWithoutAPrioriMapRunsOnDeadReckoning) {
   const auto r = ParseScenario(
       "world: cim_office\nlocalization: odometry\na_priori_map: false\n"

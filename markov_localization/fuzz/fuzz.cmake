@@ -19,3 +19,8 @@ if(TARGET markov_localization_ros_fuzzcore)
   spott_add_fuzzer(sensor_messages_fuzz "${CMAKE_CURRENT_LIST_DIR}/sensor_messages_fuzz.cpp"
                    CORES markov_localization_ros)
 endif()
+spott_add_parameter_fuzzer(sensed_map_localization_parameters_fuzz
+  "${CMAKE_CURRENT_LIST_DIR}/sensed_map_localization_parameters_fuzz.cpp"
+  CONFIG "${SPOTT_ROOT}/markov_localization/config/sensed_map_localization.yaml"
+  SOURCES "${SPOTT_ROOT}/markov_localization/src/ros/sensed_map_parameters.cpp"
+  CORES markov_localization)

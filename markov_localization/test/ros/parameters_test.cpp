@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "markov_localization/ros/parameters.h"
+#include "markov_localization/ros/sensed_map_parameters.h"
 
 namespace markov_localization {
 namespace {
@@ -34,6 +35,48 @@ TEST(Parameters, AMapCellTooFineForAnyBuildingIsRefused) {
   NodeParameters p;
   EXPECT_TRUE(Read(v, &p).empty());
   EXPECT_EQ(p.map.resolution_m, 0.01);
+}
+
+std::vector<std::string> ReadSensed(const XmlRpc::XmlRpcValue& values, SensedMapNodeParameters* p) {
+  spott_ros::ParameterReader r(values);
+  ReadParameters(r, *p);
+  return r.Finish();
+}
+
+TEST(SensedMapParameters, DefaultsAreAcceptedAndBadValuesRefusedByName) {
+  SensedMapNodeParameters p;
+  EXPECT_TRUE(ReadSensed(XmlRpc::XmlRpcValue(), &p).empty());
+  XmlRpc::XmlRpcValue v;
+  v["period_s"] = 0.0;
+  v["max_correction_deg"] = 1e308;  // infinite in radians
+  v["initial_pose"] = std::string("1 nan 0");
+  v["odom_frame"] = std::string("map");
+  v["gate"] = 0.3;  // misspelt gate_m
+  const auto errors = ReadSensed(v, &p);
+  ASSERT_EQ(errors.size(), 5u);
+  const auto has = [&](const std::string& text) {
+    for (const auto& e : errors)
+      if (e.find(text) != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(has("~period_s must be > 0"));
+  EXPECT_TRUE(has("~max_correction_deg must be finite"));
+  EXPECT_TRUE(has("~initial_pose"));
+  EXPECT_TRUE(has("~odom_frame must differ from ~map_frame"));
+  EXPECT_TRUE(has("~gate"));
+}
+
+TEST(SensedMapParameters, TheStartAndTheTrackersValuesArrive) {
+  XmlRpc::XmlRpcValue v;
+  v["initial_pose"] = std::string("12 11 0.5");
+  v["period_s"] = 5;
+  v["cone_margin_deg"] = 6.0;
+  SensedMapNodeParameters p;
+  ASSERT_TRUE(ReadSensed(v, &p).empty());
+  ASSERT_TRUE(p.initial_pose.has_value());
+  EXPECT_DOUBLE_EQ(p.initial_pose->yaw, 0.5);
+  EXPECT_DOUBLE_EQ(p.tracker.period_s, 5.0);
+  EXPECT_NEAR(p.tracker.cone_margin_rad, 6.0 * M_PI / 180.0, 1e-12);
 }
 
 }  // namespace

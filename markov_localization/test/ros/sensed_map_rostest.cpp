@@ -1,0 +1,120 @@
+// sensed_map_localization_node on the simulator (see sensed_map.test): kidnaps across and along
+// cim_office's west hallway, judged on the ground truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <spott_msgs/Kidnap.h>
+#include <spott_msgs/LocalizationStatus.h>
+#include <spott_msgs/MapFeatureArray.h>
+
+namespace {
+
+struct Listener {
+  std::mutex mutex;
+  spott_msgs::LocalizationStatus status;
+  nav_msgs::Odometry truth;
+  bool have_status = false, have_truth = false;
+  void OnStatus(const spott_msgs::LocalizationStatus& s) {
+    std::lock_guard<std::mutex> lock(mutex);
+    status = s;
+    have_status = true;
+  }
+  void OnTruth(const nav_msgs::Odometry& t) {
+    std::lock_guard<std::mutex> lock(mutex);
+    truth = t;
+    have_truth = true;
+  }
+  // The estimate's error along (x) and across (y) the hallway; false before both came.
+  bool Error(double* along, double* across) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!have_status || !have_truth) return false;
+    *along = status.estimate.x - truth.pose.pose.position.x;
+    *across = status.estimate.y - truth.pose.pose.position.y;
+    return true;
+  }
+};
+
+spott_msgs::MapFeature Wall(const std::string& id, double y) {
+  spott_msgs::MapFeature f;
+  f.id = id;
+  f.type = spott_msgs::MapFeature::LINE_SEGMENT;
+  f.source = spott_msgs::MapFeature::SOURCE_SENSED;
+  f.points.resize(2);
+  f.points[0].x = 4.45;  // between the doors at x = 4 and 9
+  f.points[1].x = 8.55;
+  f.points[0].y = f.points[1].y = y;
+  spott_msgs::Attribute a;
+  a.key = "sensor";
+  a.value = "sonar";
+  f.attributes.push_back(a);
+  return f;
+}
+
+// Waits until the error across the hallway is within `tolerance`; the last errors.
+bool WaitAcross(Listener& l, double tolerance, double seconds, double* along, double* across) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::ok() && ros::WallTime::now() < end) {
+    if (l.Error(along, across) && std::abs(*across) < tolerance) return true;
+    ros::WallDuration(0.1).sleep();
+  }
+  return false;
+}
+
+bool Kidnap(double ahead, double left) {
+  spott_msgs::Kidnap k;
+  k.request.relative = true;
+  k.request.pose.x = ahead;
+  k.request.pose.y = left;
+  return ros::service::waitForService("sim/kidnap", ros::Duration(10)) &&
+         ros::service::call("sim/kidnap", k) && k.response.success;
+}
+
+TEST(SensedMapLocalizationNode, FindsAKidnapAcrossTheHallwayNotOneAlongIt) {
+  ros::NodeHandle nh;
+  Listener l;
+  auto s1 = nh.subscribe("localization_status", 5, &Listener::OnStatus, &l);
+  auto s2 = nh.subscribe("sim/ground_truth", 5, &Listener::OnTruth, &l);
+  // The hallway's wall faces (walls 0.15 m thick on y = 7 and 9.5), as the sonar mapped them.
+  auto pub = nh.advertise<spott_msgs::MapFeatureArray>("map_features", 1, true);
+  spott_msgs::MapFeatureArray features;
+  features.features = {Wall("sonar_1", 7.075), Wall("sonar_2", 9.425)};
+  pub.publish(features);
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+
+  double along = 0.0, across = 0.0;
+  ASSERT_TRUE(WaitAcross(l, 0.03, 30.0, &along, &across)) << "across " << across;
+  EXPECT_LT(std::abs(along), 0.03);
+
+  // 0.15 m to the left (north) without the odometry seeing it: the next fixes find it.
+  ASSERT_TRUE(Kidnap(0.0, 0.15));
+  ros::WallDuration(0.5).sleep();
+  ASSERT_TRUE(l.Error(&along, &across));
+  EXPECT_NEAR(across, -0.15, 0.03);  // the estimate stayed where the odometry says
+  const ros::WallTime kidnapped = ros::WallTime::now();
+  ASSERT_TRUE(WaitAcross(l, 0.03, 10.0, &along, &across)) << "not found across: " << across;
+  EXPECT_LT(std::abs(along), 0.03) << "moved along the hallway without cause";
+  std::printf("kidnap 0.15 m across the hallway found after %.1f s (wall)\n",
+              (ros::WallTime::now() - kidnapped).toSec());
+
+  // 0.4 m ahead: the side walls cannot tell; the estimate keeps odometry's place along the
+  // hallway (no jump to a wrong wall) and stays right across it.
+  ASSERT_TRUE(Kidnap(0.4, 0.0));
+  ros::WallDuration(6.0).sleep();  // three fixes
+  ASSERT_TRUE(l.Error(&along, &across));
+  EXPECT_NEAR(along, -0.4, 0.03);
+  EXPECT_LT(std::abs(across), 0.03);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "sensed_map_rostest");
+  return RUN_ALL_TESTS();
+}
