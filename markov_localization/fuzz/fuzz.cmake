@@ -23,4 +23,5 @@ spott_add_parameter_fuzzer(sensed_map_localization_parameters_fuzz
   "${CMAKE_CURRENT_LIST_DIR}/sensed_map_localization_parameters_fuzz.cpp"
   CONFIG "${SPOTT_ROOT}/markov_localization/config/sensed_map_localization.yaml"
   SOURCES "${SPOTT_ROOT}/markov_localization/src/ros/sensed_map_parameters.cpp"
+          "${SPOTT_ROOT}/markov_localization/src/ros/parameters.cpp"
   CORES markov_localization)

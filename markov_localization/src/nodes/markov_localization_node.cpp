@@ -44,23 +44,16 @@
 #include "markov_localization/resume_spread.h"
 #include "markov_localization/ros/conversions.h"
 #include "markov_localization/ros/parameters.h"
+#include "markov_localization/ros/pose_messages.h"
 #include "spott_map/ros/map_update.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/input_refusals.h"
-#include "spott_ros/pose_conversions.h"
 #include "spott_ros/range_readings.h"
 
 namespace ml = markov_localization;
 namespace conv = markov_localization::ros_conversions;
 
 namespace {
-
-// The planar pose, or nothing when a number is not finite or the quaternion has no yaw.
-std::optional<spott_map::Pose2> PoseOf(const geometry_msgs::Pose& pose) {
-  const auto p = spott_ros::ToPose2D(pose);
-  if (!p) return std::nullopt;
-  return spott_map::Pose2{p->x, p->y, p->theta};
-}
 
 // A ring's transducers turned together when their axes are off the model's beams by the same
 // angle within this (rad); the turret's step in SPOTT's dense scan is 2.5 degrees (0.044 rad).
@@ -134,7 +127,7 @@ class LocalizationNode {
   }
 
   void OnOdom(const nav_msgs::Odometry& msg) {
-    const auto pose = PoseOf(msg.pose.pose);
+    const auto pose = conv::PoseOf(msg.pose.pose);
     if (!pose) {
       refusals_.Refuse("odom", "pose.pose", "not finite or no yaw in the quaternion");
       return;
@@ -145,14 +138,10 @@ class LocalizationNode {
   }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped& msg) {
-    const auto pose = PoseOf(msg.pose.pose);
+    std::string field, why;
+    const auto pose = conv::InitialPoseOf(msg, params_.map_frame, &field, &why);
     if (!pose) {
-      refusals_.Refuse("initialpose", "pose.pose", "not finite or no yaw in the quaternion");
-      return;
-    }
-    if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.map_frame) {
-      refusals_.Refuse("initialpose", "header.frame_id",
-                       "'" + msg.header.frame_id + "' is not '" + params_.map_frame + "'");
+      refusals_.Refuse("initialpose", field, why);
       return;
     }
     if (!localizer_) {

@@ -21,24 +21,19 @@
 
 #include "markov_localization/odometry_buffer.h"
 #include "markov_localization/ros/conversions.h"
+#include "markov_localization/ros/pose_messages.h"
 #include "markov_localization/ros/sensed_map_parameters.h"
 #include "markov_localization/sensed_map_tracker.h"
 #include "spott_map/pose_algebra.h"
 #include "spott_map/ros/conversions.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/input_refusals.h"
-#include "spott_ros/pose_conversions.h"
 #include "spott_ros/range_readings.h"
 
 namespace ml = markov_localization;
+namespace conv = markov_localization::ros_conversions;
 
 namespace {
-
-std::optional<spott_map::Pose2> PoseOf(const geometry_msgs::Pose& pose) {
-  const auto p = spott_ros::ToPose2D(pose);
-  if (!p) return std::nullopt;
-  return spott_map::Pose2{p->x, p->y, p->theta};
-}
 
 class SensedMapLocalizationNode {
  public:
@@ -63,7 +58,7 @@ class SensedMapLocalizationNode {
 
  private:
   void OnOdom(const nav_msgs::Odometry& msg) {
-    const auto pose = PoseOf(msg.pose.pose);
+    const auto pose = conv::PoseOf(msg.pose.pose);
     if (!pose) {
       refusals_.Refuse("odom", "pose.pose", "not finite or no yaw in the quaternion");
       return;
@@ -101,8 +96,8 @@ class SensedMapLocalizationNode {
     const ros::Time stamp = msg.header.stamp + ros::Duration(params_.transform_tolerance_s);
     if (last_tf_stamp_.toSec() > stamp.toSec() + 1.0) last_tf_stamp_ = ros::Time();
     if (stamp > last_tf_stamp_) {
-      tf_.sendTransform(ml::ros_conversions::ToTransform(tracker_.map_to_odom(), params_.map_frame,
-                                                         params_.odom_frame, stamp));
+      tf_.sendTransform(
+          conv::ToTransform(tracker_.map_to_odom(), params_.map_frame, params_.odom_frame, stamp));
       last_tf_stamp_ = stamp;
     }
   }
@@ -154,14 +149,10 @@ class SensedMapLocalizationNode {
   }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped& msg) {
-    const auto pose = PoseOf(msg.pose.pose);
+    std::string field, why;
+    const auto pose = conv::InitialPoseOf(msg, params_.map_frame, &field, &why);
     if (!pose) {
-      refusals_.Refuse("initialpose", "pose.pose", "not finite or no yaw in the quaternion");
-      return;
-    }
-    if (!msg.header.frame_id.empty() && msg.header.frame_id != params_.map_frame) {
-      refusals_.Refuse("initialpose", "header.frame_id",
-                       "'" + msg.header.frame_id + "' is not '" + params_.map_frame + "'");
+      refusals_.Refuse("initialpose", field, why);
       return;
     }
     const auto odom = odometry_.Newest();

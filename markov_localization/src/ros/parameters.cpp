@@ -34,6 +34,16 @@ void AddCore(std::vector<std::string>& errors, const std::vector<std::string>& c
 
 }  // namespace
 
+void GetPoseText(spott_ros::ParameterReader& r, const std::string& key,
+                 std::optional<spott_map::Pose2>& pose) {
+  std::string text;
+  r.Get(key, text);
+  if (text.empty()) return;
+  std::string why;
+  pose = spott_map::ParsePoseText(text, &why);
+  if (!pose) r.Fail("~" + key + ": " + why);
+}
+
 void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   std::vector<std::string> v;  // this node's own checks, handed to the reader at the end
   r.Get("world_file", p.world_file);
@@ -87,18 +97,9 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("odometry_max_lag_s", p.odometry_max_lag_s);
   r.Get("start_uniform", p.start_uniform);
   r.Get("initial_pose_from_world", p.initial_pose_from_world);
-  // "x y yaw", "" = none.
-  const auto get_pose = [&](const std::string& key, std::optional<spott_map::Pose2>& pose) {
-    std::string text;
-    r.Get(key, text);
-    if (text.empty()) return;
-    std::string why;
-    pose = spott_map::ParsePoseText(text, &why);
-    if (!pose) v.push_back("~" + key + ": " + why);
-  };
-  get_pose("initial_pose", p.initial_pose);
-  get_pose("last_map_to_odom", p.last_map_to_odom);
-  get_pose("last_odom", p.last_odom);
+  GetPoseText(r, "initial_pose", p.initial_pose);
+  GetPoseText(r, "last_map_to_odom", p.last_map_to_odom);
+  GetPoseText(r, "last_odom", p.last_odom);
   r.Get("last_sigma_xy_m", p.last_sigma_xy_m, "m");
   r.GetDegrees("last_sigma_theta_deg", p.last_sigma_theta_rad);
   r.Get("save_pose_period_s", p.save_pose_period_s, "s");

@@ -2,23 +2,15 @@
 
 #include <utility>
 
-#include "spott_map/pose_text.h"
+#include "markov_localization/ros/parameters.h"
 #include "spott_ros/parameter_reader.h"
 
 namespace markov_localization {
 
 void ReadParameters(spott_ros::ParameterReader& r, SensedMapNodeParameters& p) {
   r.Get("world_file", p.world_file);
-  const auto get_pose = [&](const std::string& key, std::optional<spott_map::Pose2>& pose) {
-    std::string text;
-    r.Get(key, text);
-    if (text.empty()) return;
-    std::string why;
-    pose = spott_map::ParsePoseText(text, &why);
-    if (!pose) r.Fail("~" + key + ": " + why);
-  };
-  get_pose("initial_pose", p.initial_pose);
-  get_pose("last_map_to_odom", p.last_map_to_odom);
+  GetPoseText(r, "initial_pose", p.initial_pose);
+  GetPoseText(r, "last_map_to_odom", p.last_map_to_odom);
   r.Get("map_frame", p.map_frame);
   r.Get("odom_frame", p.odom_frame);
   r.Get("ring_topic", p.ring_topic);

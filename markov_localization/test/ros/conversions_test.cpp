@@ -7,6 +7,7 @@
 #include <tf2/utils.h>
 
 #include "markov_localization/ros/conversions.h"
+#include "markov_localization/ros/pose_messages.h"
 #include "spott_map/pose_algebra.h"
 
 namespace markov_localization {
@@ -261,6 +262,24 @@ TEST(Conversions, LaserBeamsAreSubsampledAsAmclDoes) {
   EXPECT_TRUE(std::isnan(r[1])) << "REP 117: NaN is erroneous, left out (not no echo)";
   for (int i : {2, 3, 4}) EXPECT_TRUE(std::isinf(r[i])) << i;  // < min, >= max, inf
   EXPECT_NEAR(r[6], 9.99, 1e-5);
+}
+
+TEST(PoseMessages, AnInitialPoseIsRefusedByFieldWhenNotFiniteOrInAnotherFrame) {
+  geometry_msgs::PoseWithCovarianceStamped msg;
+  msg.pose.pose.orientation.w = 1.0;
+  msg.pose.pose.position.x = 2.0;
+  std::string field, why;
+  auto pose = conv::InitialPoseOf(msg, "map", &field, &why);  // empty frame_id: the map's
+  ASSERT_TRUE(pose.has_value());
+  EXPECT_EQ(pose->x, 2.0);
+  msg.header.frame_id = "odom";
+  EXPECT_FALSE(conv::InitialPoseOf(msg, "map", &field, &why).has_value());
+  EXPECT_EQ(field, "header.frame_id");
+  EXPECT_EQ(why, "'odom' is not 'map'");
+  msg.header.frame_id = "map";
+  msg.pose.pose.position.y = std::nan("");
+  EXPECT_FALSE(conv::InitialPoseOf(msg, "map", &field, &why).has_value());
+  EXPECT_EQ(field, "pose.pose");
 }
 
 }  // namespace

@@ -128,6 +128,11 @@ struct NodeParameters {
   int seed = 1;                                  ///< Seeds the random motion, >= 0.
 };
 
+/// A pose given as text "x y yaw" under `key` ("" = none); a bad text is a violation naming it.
+/// The localization nodes' start and saved poses.
+void GetPoseText(spott_ros::ParameterReader& r, const std::string& key,
+                 std::optional<spott_map::Pose2>& pose);
+
 /// Reads every parameter of the reader (the node's private namespace) into `p` and records each
 /// violation in `r`, naming its parameter ("~grid/threshold_fraction must be in (0, 1)");
 /// r.Finish() then adds the unknown keys.
