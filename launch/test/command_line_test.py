@@ -75,7 +75,7 @@ class CommandLine(unittest.TestCase):
 
     def test_stack_launch_refuses_an_unsupported_value_naming_the_accepted_ones(self):
         for arg, accepted in (('localization:=amcl',
-                               'localization_must_be_markov_truth_or_odometry'),
+                               'localization_must_be_markov_truth_odometry_or_sensed'),
                               ('controller:=bt', 'controller_must_be_tr_plus_or_none'),
                               ('executive:=smach', 'executive_must_be_rpl_or_none')):
             out = subprocess.run(['roslaunch', '--nodes', 'spott_launch', 'stack.launch',
