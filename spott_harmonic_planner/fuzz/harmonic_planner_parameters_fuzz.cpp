@@ -65,6 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("steering/quickly_fraction", s.quickly_fraction, "(0, 1]");
   ExpectIn("steering/heading_gain_per_s", s.heading_gain, "(0, inf)");
   ExpectIn("steering/max_bias_deviation_rad", s.max_bias_deviation_rad, "[0, pi/2)");
+  ExpectIn("steering/bias_reverse_fade_rad", s.bias_reverse_fade_rad, "[0, pi/2]");
   ExpectIn("steering/bias_clearance_m", s.bias_clearance_m, "(0, 10]");
   ExpectIn("steering/slow_clearance_m", s.slow_clearance_m, "(0, inf)");
   ExpectIn("steering/goal_slowdown_m", s.goal_slowdown_m, "(0, inf)");

@@ -32,6 +32,8 @@ std::vector<std::string> ValidateSteeringParameters(const SteeringParameters& p)
         "in (0, 100] 1/s", v);
   Check(p.max_bias_deviation_rad >= 0.0 && p.max_bias_deviation_rad < M_PI / 2,
         "max_bias_deviation_rad", p.max_bias_deviation_rad, "in [0, pi/2) rad", v);
+  Check(p.bias_reverse_fade_rad >= 0.0 && p.bias_reverse_fade_rad <= M_PI / 2,
+        "bias_reverse_fade_rad", p.bias_reverse_fade_rad, "in [0, pi/2] rad", v);
   Check(p.bias_clearance_m > 0.0 && p.bias_clearance_m <= 10.0, "bias_clearance_m",
         p.bias_clearance_m, "in (0, 10] m", v);
   Check(p.slow_clearance_m > 0.0, "slow_clearance_m", p.slow_clearance_m, "> 0 m", v);
@@ -75,10 +77,15 @@ std::optional<Vec2> BestEscape(const PotentialField& field, const Vec2& at, doub
 
 }  // namespace
 
-double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation) {
+double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation,
+                     double reverse_fade) {
   const double g = std::atan2(descent.y(), descent.x());
   if (!bias || !std::isfinite(*bias)) return g;
   const double off = WrapAngle(*bias - g);
+  const double from_behind = M_PI - std::abs(off);
+  if (reverse_fade > 0.0 && from_behind < reverse_fade) {
+    max_deviation *= from_behind / reverse_fade;
+  }
   return WrapAngle(g + std::clamp(off, -max_deviation, max_deviation));
 }
 
@@ -128,7 +135,8 @@ SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Po
   // The bias yields to descent near obstacles: the robot's heading lags the command while it
   // turns, and at a padded corner only descent keeps it out of the padding.
   const double room = std::clamp(cmd.clearance / params.bias_clearance_m, 0.0, 1.0);
-  cmd.heading = BiasedHeading(*descent, direction_bias, params.max_bias_deviation_rad * room);
+  cmd.heading = BiasedHeading(*descent, direction_bias, params.max_bias_deviation_rad * room,
+                              params.bias_reverse_fade_rad);
   const double error = WrapAngle(cmd.heading - pose.yaw);
   cmd.angular =
       std::clamp(params.heading_gain * error, -params.max_angular_rps, params.max_angular_rps);

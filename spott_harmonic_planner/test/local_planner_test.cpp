@@ -35,6 +35,27 @@ TEST(Steering, DirectionBiasIsFollowedWithinDescentAndClampedBeyond) {
   EXPECT_NEAR(BiasedHeading(descent, std::nan(""), 1.2), 0.0, 1e-12);
 }
 
+// Experiment 1 without a map: the goal straight behind the way round the partition, the bias's
+// side flipping with the field every second or two, the command flipping by 2 x 69 degrees: 30 s
+// of turning on the spot. Near straight behind the bias now bends the heading less, to none.
+TEST(Steering, ABiasStraightBehindDescentBendsItLessAndFlipsNothing) {
+  const Vec2 descent(1.0, 0.0);
+  const double fade = 1.05;
+  // Outside the fade (more than 60 degrees from straight behind): clamped as before.
+  EXPECT_NEAR(BiasedHeading(descent, -1.9, 1.2, fade), -1.2, 1e-12);
+  // Inside it, in proportion to the angle from straight behind.
+  EXPECT_NEAR(BiasedHeading(descent, M_PI - 0.5, 1.2, fade), 1.2 * 0.5 / fade, 1e-12);
+  // Either side of straight behind the heading stays within a few degrees of descent.
+  const double left = BiasedHeading(descent, M_PI - 0.05, 1.2, fade);
+  const double right = BiasedHeading(descent, -M_PI + 0.05, 1.2, fade);
+  EXPECT_LT(std::abs(left - right), 0.12);
+  EXPECT_NEAR(BiasedHeading(descent, M_PI, 1.2, fade), 0.0, 1e-12);
+  // Without the fade (0) the old clamp: the flip is the full 2 x 1.2 rad.
+  EXPECT_NEAR(BiasedHeading(descent, M_PI - 0.05, 1.2, 0.0) -
+                  BiasedHeading(descent, -M_PI + 0.05, 1.2, 0.0),
+              2.4, 1e-12);
+}
+
 TEST(Steering, TurnInPlaceTurnsTheShortWayWithinLimitsAndStopsAtTolerance) {
   SteeringParameters p;  // gain 2 /s, max 1 rad/s
   bool done = true;

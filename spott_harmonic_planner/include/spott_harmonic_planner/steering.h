@@ -25,6 +25,13 @@ struct SteeringParameters {
   /// Largest angle (rad) between the command and steepest descent that a direction bias may
   /// ask for, in [0, pi/2): below pi/2 the robot still descends.
   double max_bias_deviation_rad = 1.2;
+  /// A bias within this angle (rad) of straight behind descent bends the heading less, to none
+  /// at straight behind, in [0, pi/2]: there the bias's side flips with the field's smallest
+  /// change, and the full deviation flipped the command by 2 x 69 degrees every second or two
+  /// (SPOTT's Experiment 1 without a map: the robot turned on the spot beside the lab's
+  /// partition for 30 s, its goal behind the way round, and the odometry's heading drifted 5
+  /// degrees). 0: the full deviation up to straight behind.
+  double bias_reverse_fade_rad = 1.05;
   /// Below this clearance (m) the allowed deviation shrinks in proportion, to none at the
   /// padding's edge, > 0: beside a door's jamb a heading pulled off descent cuts the padded
   /// corner while the robot turns (Fig. 18 seed 20: a `to` bias through the wall, 24 contacts).
@@ -57,8 +64,12 @@ struct SteeringCommand {
 /// The command that heads toward `heading` from `pose`: turn in place when facing away.
 double WrapAngle(double a);
 
-/// Heading closest to `bias` (rad) whose angle to `descent` is at most `max_deviation`.
-double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation);
+/// Heading closest to `bias` (rad) whose angle to `descent` is at most `max_deviation`; a bias
+/// within `reverse_fade` of straight behind descent may turn it less, in proportion to its angle
+/// from straight behind (none at straight behind: the heading is continuous as the bias's side
+/// flips).
+double BiasedHeading(const Vec2& descent, std::optional<double> bias, double max_deviation,
+                     double reverse_fade = 0.0);
 
 /// (e): steering at `pose` (map frame). `distance_to_goal_m` scales the speed down near the goal.
 SteeringCommand ComputeSteering(const PotentialField& field, const spott_map::Pose2& pose,

@@ -78,6 +78,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("steering/quickly_fraction", s.quickly_fraction);
   r.Get("steering/heading_gain_per_s", s.heading_gain, "1/s");
   r.Get("steering/max_bias_deviation_rad", s.max_bias_deviation_rad, "rad");
+  r.Get("steering/bias_reverse_fade_rad", s.bias_reverse_fade_rad, "rad");
   r.Get("steering/bias_clearance_m", s.bias_clearance_m, "m");
   r.Get("steering/slow_clearance_m", s.slow_clearance_m, "m");
   r.Get("steering/escape_radius_m", s.escape_radius_m, "m");
