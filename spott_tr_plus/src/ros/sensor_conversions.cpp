@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/range_profiles.h"
 #include "spott_ros/range_readings.h"
 
 namespace spott_tr_plus {
@@ -67,15 +68,8 @@ std::optional<std::vector<Vec2>> ProfilePoints(const spott_msgs::RangeProfile& m
                                                double min_height_m, double max_height_m,
                                                Vec2* origin) {
   controller::Vec3 from;
-  const auto samples = ProfileSamples(msg, head, &from);
-  if (!samples) return std::nullopt;
-  *origin = Vec2(from.x(), from.y());
-  // In 3-D: a head tilted down sees the floor, which is no obstacle.
-  std::vector<Vec2> points;
-  for (const controller::ProfileSample& s : *samples) {
-    if (s.echo && s.point.allFinite() && s.point.z() >= min_height_m && s.point.z() <= max_height_m)
-      points.emplace_back(s.point.x(), s.point.y());
-  }
+  auto points = spott_ros::ProfileEchoes(msg, head, min_height_m, max_height_m, &from);
+  if (points) *origin = Vec2(from.x(), from.y());
   return points;
 }
 
