@@ -15,35 +15,10 @@ namespace {
 
 using spott_tr_plus::controller::EchoFitParameters;
 using spott_tr_plus::controller::FuseIntoSegments;
-using spott_tr_plus::controller::PredictEcho;
 using spott_tr_plus::controller::SonarEcho;
 using spott_tr_plus::controller::Vec2;
 using test_scene::kHalfCone;
 using test_scene::Scene;
-
-TEST(PredictEcho, AWallInTheConeEchoesFromItsFootAndBeyondTheConeFromTheEdgeRay) {
-  // The wall x = 2 (normal -x toward a transducer at the origin).
-  const Vec2 n(-1.0, 0.0);
-  const double offset = -2.0;
-  SonarEcho e{Vec2(0, 0), 0.1, 0.0, kHalfCone};  // the normal 0.1 rad off the axis: in the cone
-  auto p = PredictEcho(e, n, offset, 0.35);
-  ASSERT_TRUE(p);
-  EXPECT_NEAR(p->range, 2.0, 1e-12);
-  EXPECT_NEAR(p->reflection.x(), 2.0, 1e-12);
-  EXPECT_NEAR(p->reflection.y(), 0.0, 1e-12);
-  e.axis = 0.4;  // 0.14 rad beyond the cone: the edge ray at 0.14 rad meets the wall
-  p = PredictEcho(e, n, offset, 0.35);
-  ASSERT_TRUE(p);
-  EXPECT_NEAR(p->range, 2.0 / std::cos(0.14), 1e-12);
-  EXPECT_NEAR(p->reflection.y(), 2.0 * std::tan(0.14), 1e-12);
-  e.axis = -0.4;  // the other side
-  EXPECT_NEAR(PredictEcho(e, n, offset, 0.35)->reflection.y(), -2.0 * std::tan(0.14), 1e-12);
-  e.axis = 0.7;  // 0.44 beyond: past the critical incidence, the pulse glances off
-  EXPECT_FALSE(PredictEcho(e, n, offset, 0.35));
-  e.from = Vec2(3.0, 0.0);  // behind the wall
-  e.axis = 0.0;
-  EXPECT_FALSE(PredictEcho(e, n, offset, 0.35));
-}
 
 // Each echo stands for its own cell, at its axis point, as the evidence grid places it.
 struct Heard {

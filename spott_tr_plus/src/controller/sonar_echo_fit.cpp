@@ -7,15 +7,7 @@ namespace spott_tr_plus::controller {
 
 namespace {
 
-double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
-
-// How far (rad) the direction `toward` lies outside the echo's cone (0: inside), signed by the
-// side it lies on.
-double ConeExcess(const SonarEcho& e, double toward, double* side) {
-  const double alpha = Wrap(toward - e.axis);
-  *side = alpha < 0 ? -1.0 : 1.0;
-  return std::max(0.0, std::abs(alpha) - e.half_cone);
-}
+using spott_map::ConeExcess;
 
 // One direction of the normal: the offsets the echoes vote for, and the offset most of them
 // agree on within their tolerances.
@@ -69,20 +61,6 @@ Vote VoteOffset(const std::vector<SonarEcho>& echoes, double phi, const EchoFitP
 double EchoCost(double residual, double tolerance) {
   const double z = 2.0 * residual / tolerance;
   return std::min(z * z, 4.0);
-}
-
-std::optional<PredictedEcho> PredictEcho(const SonarEcho& e, const Vec2& normal, double offset,
-                                         double max_incidence_rad) {
-  const double dist = normal.dot(e.from) - offset;
-  if (!(dist > 1e-6)) return std::nullopt;
-  double side;
-  const double excess = ConeExcess(e, std::atan2(-normal.y(), -normal.x()), &side);
-  if (excess <= 0.0) return PredictedEcho{dist, e.from - dist * normal};
-  if (excess > max_incidence_rad) return std::nullopt;
-  // The cone's edge nearest the normal meets the wall first.
-  const double ray = e.axis + side * e.half_cone;
-  const double range = dist / std::cos(excess);
-  return PredictedEcho{range, e.from + range * Vec2(std::cos(ray), std::sin(ray))};
 }
 
 namespace {

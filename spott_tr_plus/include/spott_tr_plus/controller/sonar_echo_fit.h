@@ -15,19 +15,16 @@
 #include <vector>
 
 #include "spott_map/geometry.h"
+#include "spott_map/sonar_echo.h"
 
 namespace spott_tr_plus::controller {
 
 using spott_map::Vec2;
 
-/// One sonar echo: the transducer (map frame, m), its axis (rad), the range (m) and the half
-/// width of its cone (rad).
-struct SonarEcho {
-  Vec2 from{0.0, 0.0};
-  double axis = 0.0;
-  double range = 0.0;
-  double half_cone = 0.0;
-};
+// The echo model is spott_map's (sonar_echo.h), shared with the sensed-map localization.
+using spott_map::PredictEcho;
+using spott_map::PredictedEcho;
+using spott_map::SonarEcho;
 
 struct EchoFitParameters {
   /// An echo fits a hypothesis when its range lies within base_m + per_m * range of the
@@ -41,17 +38,6 @@ struct EchoFitParameters {
   /// reflected, not as a segment (rad; a wall seen head on, or over a few centimetres).
   double max_direction_error_rad = 0.05;
 };
-
-/// The echo a transducer would hear from the line {x : normal . x = offset} (`normal` a unit
-/// vector pointing from the line to the transducer): its range and where it reflects; nullopt
-/// when the transducer is behind the line or the line's normal lies beyond its cone by more
-/// than max_incidence_rad.
-struct PredictedEcho {
-  double range = 0.0;
-  Vec2 reflection{0.0, 0.0};
-};
-std::optional<PredictedEcho> PredictEcho(const SonarEcho& e, const Vec2& normal, double offset,
-                                         double max_incidence_rad);
 
 /// A wall that explains echoes: `inliers` index the echoes it explains, `reflections` (one per
 /// inlier) are where they reflected on it.
