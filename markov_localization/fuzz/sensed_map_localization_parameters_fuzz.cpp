@@ -26,7 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("odometry_max_lag_s", p.odometry_max_lag_s, "(0, 5]");
   Expect(!p.map_frame.empty() && !p.odom_frame.empty() && p.map_frame != p.odom_frame,
          "map_frame and odom_frame not two names");
-  Expect(!p.ring_topic.empty() && !p.features_topic.empty(), "an empty topic name accepted");
+  Expect(!p.ring_topic.empty() && !p.features_topic.empty() && !p.profile_topic.empty(),
+         "an empty topic name accepted");
+  Expect(p.profile_min_height_m < p.profile_max_height_m, "an empty profile height band accepted");
   for (const auto* pose : {&p.initial_pose, &p.last_map_to_odom}) {
     if (*pose) {
       spott_fuzz::ExpectFinite("a pose's x", (*pose)->x);
@@ -43,6 +45,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ExpectIn("max_correction_deg (rad)", t.max_correction_rad, "(0, inf)");
   Expect(t.iterations >= 1 && t.iterations <= 100, "iterations outside [1, 100]");
   Expect(t.min_echoes >= 3, "min_echoes < 3");
+  const WallLatticeParameters& w = t.wall_lattice;
+  spott_fuzz::ExpectFinite("wall_lattice/axis_deg (rad)", w.axis_rad);
+  Expect(w.gate_rad > 0.0 && w.gate_rad < M_PI / 4.0, "wall_lattice/gate_deg outside (0, 45)");
+  ExpectIn("wall_lattice/agree_deg (rad)", w.agree_rad, "(0, inf)");
+  ExpectIn("wall_lattice/min_length_m", w.min_length_m, "(0, inf)");
+  ExpectIn("wall_lattice/max_rms_m", w.max_rms_m, "(0, inf)");
+  ExpectIn("wall_lattice/break_m", w.break_m, "(0, inf)");
+  Expect(w.min_points >= 3, "wall_lattice/min_points < 3");
   SensedMapTracker tracker(t, spott_map::Pose2{});  // throws (and the fuzzer stops) if refused
   return 0;
 }

@@ -1,7 +1,8 @@
 // markov_localization's inbound message conversions on messages built field by field from the
 // fuzzer's bytes (any sizes, NaN, infinities, huge and negative numbers), as the node takes
 // them: a LaserScan through spott_ros::LaserScanProblem, then LaserBeams / LaserBeamAngles /
-// LaserRanges; a RangeProfile through ProfileReadings; a RangeRing's mounts through RingTurn (a
+// LaserRanges; a RangeProfile through ProfileReadings and through spott_ros::ProfileEchoes into
+// the wall lattice's lines (WallLatticeHeading); a RangeRing's mounts through RingTurn (a
 // turned ring's turn must be finite, the model's beams turned by it within the tolerance); an
 // OccupancyGrid through FromOccupancyGrid and MapModel::FromOccupancy. Whatever is accepted must be
 // usable by the sensor model: beam indices inside the scan, finite beam angles, readings that are
@@ -19,6 +20,8 @@
 #include "fuzz_values.h"
 #include "markov_localization/map_model.h"
 #include "markov_localization/ros/conversions.h"
+#include "markov_localization/wall_lattice_heading.h"
+#include "spott_ros/range_profiles.h"
 #include "spott_ros/range_readings.h"
 
 namespace conv = markov_localization::ros_conversions;
@@ -83,6 +86,17 @@ void Profile(FuzzedDataProvider& in) {
   t.rotation.w = AnyNumber<double>(in, -1.0, 1.0);
   const int bins = in.ConsumeIntegralInRange<int>(-1, 720);
   const double lo = AnyNumber<double>(in, -1.0, 1.0), hi = AnyNumber<double>(in, 0.0, 3.0);
+  // sensed_map_localization's path: the echoes placed by the head, the wall lattice's lines.
+  Eigen::Vector3d origin;
+  if (const auto echoes = spott_ros::ProfileEchoes(msg, t, lo, hi, &origin)) {
+    Check(origin.allFinite(), "an accepted head pose whose origin is not finite");
+    for (const Eigen::Vector2d& p : *echoes) Check(p.allFinite(), "a profile echo not finite");
+    markov_localization::WallLatticeHeading lattice{markov_localization::WallLatticeParameters{}};
+    lattice.AddProfile(1.0, *echoes);
+    const auto c = lattice.Estimate(1.0, AnyNumber<double>(in, -4.0, 4.0));
+    Check(!c.ok || (std::isfinite(c.dyaw) && std::abs(c.dyaw) <= lattice.parameters().gate_rad),
+          "a wall lattice correction not finite or beyond the gate");
+  }
   std::string why;
   const std::vector<double> z = conv::ProfileReadings(msg, t, bins, lo, hi, &why);
   if (z.empty()) {

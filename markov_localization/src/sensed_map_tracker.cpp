@@ -11,6 +11,17 @@ namespace markov_localization {
 using spott_map::Pose2;
 using spott_map::Vec2;
 
+namespace {
+
+// The rigid motion that turns the map by `yaw` about `pivot`, then shifts it by `shift`.
+Pose2 TurnAbout(const Vec2& pivot, double yaw, const Vec2& shift) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return {pivot.x() + shift.x() - (c * pivot.x() - s * pivot.y()),
+          pivot.y() + shift.y() - (s * pivot.x() + c * pivot.y()), yaw};
+}
+
+}  // namespace
+
 std::vector<std::string> ValidateParameters(const SensedMapTrackerParameters& p) {
   std::vector<std::string> e;
   const auto positive = [&](double v, const char* name) {
@@ -24,7 +35,8 @@ std::vector<std::string> ValidateParameters(const SensedMapTrackerParameters& p)
   positive(p.max_range_m, "max_range_m");
   non_negative(p.min_segment_length_m, "min_segment_length_m");
   non_negative(p.extend_m, "extend_m");
-  non_negative(p.cone_margin_rad, "cone_margin_rad");
+  if (!(p.max_incidence_rad >= 0.0 && p.max_incidence_rad < M_PI / 2))
+    e.push_back("max_incidence_rad must be in [0, pi/2)");
   positive(p.gate_m, "gate_m");
   positive(p.huber_m, "huber_m");
   if (!(p.iterations >= 1 && p.iterations <= 100)) e.push_back("iterations must be in [1, 100]");
@@ -32,13 +44,14 @@ std::vector<std::string> ValidateParameters(const SensedMapTrackerParameters& p)
   positive(p.min_information, "min_information");
   positive(p.max_correction_m, "max_correction_m");
   positive(p.max_correction_rad, "max_correction_rad");
+  for (const std::string& w : ValidateParameters(p.wall_lattice)) e.push_back("wall_lattice/" + w);
   return e;
 }
 
 SensedMapTracker::SensedMapTracker(const SensedMapTrackerParameters& p, const Pose2& map_to_odom)
-    : p_(p), map_to_odom_(map_to_odom) {
-  ThrowIfInvalid(ValidateParameters(p));
-}
+    : p_((ThrowIfInvalid(ValidateParameters(p)), p)),
+      map_to_odom_(map_to_odom),
+      lattice_(p.wall_lattice) {}
 
 void SensedMapTracker::SetSegments(const std::vector<spott_map::Segment>& segments) {
   walls_.clear();
@@ -58,8 +71,8 @@ void SensedMapTracker::AddRing(double time_s, const Pose2& odom_base,
     const double r = ranges[i];
     if (!std::isfinite(r) || r <= min_range_m + 1e-3 || r >= max_range_m - 1e-3) continue;
     if (r > p_.max_range_m) continue;
-    echoes_.push_back(
-        {time_s, spott_map::Compose(odom_base, mounts[i]), r, 0.5 * field_of_view_rad});
+    const Pose2 t = spott_map::Compose(odom_base, mounts[i]);
+    echoes_.push_back({time_s, {t.Position(), t.yaw, r, 0.5 * field_of_view_rad}});
   }
   // Keep the window's echoes only (a clock that went back starts over).
   while (!echoes_.empty() &&
@@ -71,7 +84,23 @@ void SensedMapTracker::AddRing(double time_s, const Pose2& odom_base,
 void SensedMapTracker::Reset(const Pose2& map_to_odom, double now_s) {
   map_to_odom_ = map_to_odom;
   echoes_.clear();
+  lattice_.Clear();
   last_fix_s_ = now_s;
+  last_lattice_s_ = now_s;
+}
+
+WallLatticeCorrection SensedMapTracker::TurnToLattice(double now_s, const Pose2& odom_base_now) {
+  last_lattice_s_ = now_s;
+  WallLatticeCorrection c = lattice_.Estimate(now_s, map_to_odom_.yaw);
+  if (!c.ok) return c;
+  if (std::abs(c.dyaw) > p_.max_correction_rad) {
+    c.why = "the correction is larger than max_correction_rad";
+    return c;
+  }
+  const Vec2 robot = spott_map::Compose(map_to_odom_, odom_base_now).Position();
+  map_to_odom_ = spott_map::Compose(TurnAbout(robot, c.dyaw, Vec2::Zero()), map_to_odom_);
+  c.applied = true;
+  return c;
 }
 
 SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now) {
@@ -79,15 +108,12 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
   SensedMapFix fix;
 
   // Each echo's transducer in the map before the correction.
-  struct Placed {
-    Vec2 at;
-    double axis, range, half_cone;
-  };
-  std::vector<Placed> placed;
+  std::vector<spott_map::SonarEcho> placed;
   for (const Echo& e : echoes_) {
     if (e.time_s < now_s - p_.window_s || e.time_s > now_s) continue;
-    const Pose2 t = spott_map::Compose(map_to_odom_, e.transducer);
-    placed.push_back({t.Position(), t.yaw, e.range_m, e.half_cone_rad});
+    const Pose2 t =
+        spott_map::Compose(map_to_odom_, Pose2{e.echo.from.x(), e.echo.from.y(), e.echo.axis});
+    placed.push_back({t.Position(), t.yaw, e.echo.range, e.echo.half_cone});
   }
   fix.echoes = static_cast<int>(placed.size());
   // The heading turns about the echoes' centroid: there it is independent of the shift across a
@@ -95,7 +121,7 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
   Vec2 pivot = spott_map::Compose(map_to_odom_, odom_base_now).Position();
   if (!placed.empty()) {
     Vec2 sum(0.0, 0.0);
-    for (const Placed& e : placed) sum += e.at;
+    for (const spott_map::SonarEcho& e : placed) sum += e.from;
     pivot = sum / static_cast<double>(placed.size());
   }
   if (walls_.empty()) {
@@ -105,35 +131,35 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
 
   // The correction: x, y, heading (rad) about the pivot.
   Eigen::Vector3d delta = Eigen::Vector3d::Zero();
-  const auto moved = [&](const Placed& e, Vec2* at, double* axis) {
+  const auto moved = [&](const spott_map::SonarEcho& e) {
     const double c = std::cos(delta.z()), s = std::sin(delta.z());
-    const Vec2 v = e.at - pivot;
-    *at = pivot + Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + delta.head<2>();
-    *axis = e.axis + delta.z();
+    const Vec2 v = e.from - pivot;
+    spott_map::SonarEcho m = e;
+    m.from = pivot + Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + delta.head<2>();
+    m.axis = e.axis + delta.z();
+    return m;
   };
-  // The wall that explains an echo best: the foot of the perpendicular in the cone and on the
-  // (extended) segment, the range nearest the perpendicular distance, within the gate.
+  // The wall that explains an echo best: its predicted echo (the foot of the perpendicular in
+  // the cone, else the cone's edge) reflects on the (extended) segment, with the range nearest
+  // the echo's, within the gate. `n` points from the wall to the transducer; the predicted range
+  // is n . (from - a) * stretch (stretch = 1 / cos of the cone's excess).
   struct Match {
-    double residual, sign;
+    double residual, stretch;
     Vec2 n;
   };
-  const auto associate = [&](const Vec2& at, double axis, double range, double half_cone,
-                             Match* m) {
+  const auto associate = [&](const spott_map::SonarEcho& e, Match* m) {
     double best = p_.gate_m;
     bool found = false;
-    const Vec2 beam(std::cos(axis), std::sin(axis));
     for (const Wall& w : walls_) {
-      const double d = w.n.dot(at - w.a);
-      const double along = w.u.dot(at - w.a);
+      const Vec2 n = w.n.dot(e.from - w.a) >= 0.0 ? w.n : Vec2(-w.n);
+      const auto predicted = spott_map::PredictEcho(e, n, n.dot(w.a), p_.max_incidence_rad);
+      if (!predicted) continue;
+      const double along = w.u.dot(predicted->reflection - w.a);
       if (along < -p_.extend_m || along > w.length + p_.extend_m) continue;
-      const double sign = d >= 0.0 ? 1.0 : -1.0;
-      const Vec2 toward = -sign * w.n;  // from the transducer to the foot
-      const double cosine = std::max(-1.0, std::min(1.0, beam.dot(toward)));
-      if (std::acos(cosine) > half_cone + p_.cone_margin_rad) continue;
-      const double residual = range - std::abs(d);
+      const double residual = e.range - predicted->range;
       if (std::abs(residual) < best) {
         best = std::abs(residual);
-        *m = {residual, sign, w.n};
+        *m = {residual, 1.0 / std::cos(predicted->excess), n};
         found = true;
       }
     }
@@ -150,22 +176,22 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     double squares = 0.0;
     matched = 0;
-    for (const Placed& e : placed) {
-      Vec2 at;
-      double axis;
-      moved(e, &at, &axis);
+    for (const spott_map::SonarEcho& e : placed) {
+      const spott_map::SonarEcho now = moved(e);
+      const Vec2& at = now.from;
       Match m;
-      if (!associate(at, axis, e.range, e.half_cone, &m)) continue;
+      if (!associate(now, &m)) continue;
       ++matched;
       squares += m.residual * m.residual;
       const double a = std::abs(m.residual);
       const double w = a <= p_.huber_m ? 1.0 : p_.huber_m / a;
-      // residual = range - sign * n.(at - wall): d residual / d(x, y, heading).
+      // residual = range - stretch * n.(at - wall): d residual / d(x, y, heading), the cone's
+      // excess held (its change with the heading is second order for a fix's few degrees).
       const Vec2 lever_arm = at - pivot - delta.head<2>();
-      const Eigen::Vector3d j(-m.sign * m.n.x(), -m.sign * m.n.y(),
-                              p_.correct_heading
-                                  ? -m.sign * m.n.dot(Vec2(-lever_arm.y(), lever_arm.x())) / lever
-                                  : 0.0);
+      const Vec2 g_at = -m.stretch * m.n;
+      const Eigen::Vector3d j(
+          g_at.x(), g_at.y(),
+          p_.correct_heading ? g_at.dot(Vec2(-lever_arm.y(), lever_arm.x())) / lever : 0.0);
       h += w * j * j.transpose();
       geometry += j * j.transpose();
       g -= w * j * m.residual;
@@ -212,10 +238,7 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
     return fix;
   }
   // map -> odom moves by the correction: (R(dyaw) about the pivot, then the shift) * map -> odom.
-  const double c = std::cos(delta.z()), s = std::sin(delta.z());
-  const Pose2 shift{pivot.x() + delta.x() - (c * pivot.x() - s * pivot.y()),
-                    pivot.y() + delta.y() - (s * pivot.x() + c * pivot.y()), delta.z()};
-  map_to_odom_ = spott_map::Compose(shift, map_to_odom_);
+  map_to_odom_ = spott_map::Compose(TurnAbout(pivot, delta.z(), delta.head<2>()), map_to_odom_);
   fix.applied = true;
   return fix;
 }

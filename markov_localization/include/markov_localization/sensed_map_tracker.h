@@ -5,20 +5,24 @@
 //
 // How: the sonar echoes of the last `window_s` (their transducers placed by odometry, consistent
 // over seconds) are matched to the segments by the echo's physics (Leonard and Durrant-Whyte, the
-// paper's reference [30]): a specular wall answers from the foot of the perpendicular from the
-// transducer when that foot lies in the beam's cone, at the perpendicular distance. The correction
-// of map -> odom (x, y and heading about the echoes' centroid) minimises the range residuals by
-// Gauss-Newton with re-association and Huber weights. Directions the echoes do not constrain (along
-// a corridor) are left alone: only eigen-directions of the information above `min_information`
-// move. A fix beyond `max_correction_m` / `max_correction_rad` is refused: a wrong association is
-// likelier than that much drift within a period. ROS-free; the caller owns time.
+// paper's reference [30]; spott_map/sonar_echo.h, the model the controller's sonar mapping fits
+// walls with): a specular wall answers from the foot of the perpendicular when it lies in the
+// beam's cone, else from where the cone's edge meets it up to the critical incidence. The
+// correction of map -> odom (x, y and heading about the echoes' centroid) minimises the range
+// residuals by Gauss-Newton with re-association and Huber weights. Directions the echoes do not
+// constrain (along a corridor) are left alone: only eigen-directions of the information above
+// `min_information` move. A fix beyond `max_correction_m` / `max_correction_rad` is refused: a
+// wrong association is likelier than that much drift within a period. ROS-free; the caller owns
+// time.
 #pragma once
 
 #include <deque>
 #include <string>
 #include <vector>
 
+#include "markov_localization/wall_lattice_heading.h"
 #include "spott_map/geometry.h"
+#include "spott_map/sonar_echo.h"
 #include "spott_map/world.h"
 
 namespace markov_localization {
@@ -29,11 +33,13 @@ struct SensedMapTrackerParameters {
   double max_range_m = 3.0;           ///< Echoes farther away are not used (m), > 0.
   double min_segment_length_m = 0.5;  ///< Shorter segments fix no direction (m), >= 0.
   double extend_m = 0.5;              ///< A segment's line is matched this far past its ends (m).
-  double cone_margin_rad = 0.05;      ///< Added to the beam's half cone for the foot's test (rad).
-  double gate_m = 0.25;               ///< An echo further than this from its prediction: none (m).
-  double huber_m = 0.05;              ///< Residuals beyond this weigh less (m), > 0.
-  int iterations = 8;                 ///< Gauss-Newton steps with re-association, >= 1.
-  int min_echoes = 10;                ///< Fewer matched echoes: no fix, >= 3.
+  /// Beyond this incidence outside the cone a wall sends no echo back (rad; robot_sim's sonar
+  /// critical_angle, and the controller's sonar mapping's), >= 0.
+  double max_incidence_rad = 20.0 * M_PI / 180.0;
+  double gate_m = 0.25;   ///< An echo further than this from its prediction: none (m).
+  double huber_m = 0.05;  ///< Residuals beyond this weigh less (m), > 0.
+  int iterations = 8;     ///< Gauss-Newton steps with re-association, >= 1.
+  int min_echoes = 10;    ///< Fewer matched echoes: no fix, >= 3.
   /// A direction of the correction (x, y, heading times 1 m) moves only with at least this much
   /// information: the weight of this many echoes whose wall faces that way, > 0.
   double min_information = 5.0;
@@ -44,6 +50,9 @@ struct SensedMapTrackerParameters {
   bool correct_heading = false;
   double max_correction_m = 0.5;     ///< A larger fix is refused (m), > 0.
   double max_correction_rad = 0.15;  ///< A larger fix is refused (rad), > 0.
+  /// The heading from rectilinear walls in the range profiles (wall_lattice_heading.h): every
+  /// wall_lattice.period_s map -> odom turns about the robot by its lines' correction.
+  WallLatticeParameters wall_lattice;
 };
 
 std::vector<std::string> ValidateParameters(const SensedMapTrackerParameters& p);
@@ -73,8 +82,20 @@ class SensedMapTracker {
   void AddRing(double time_s, const spott_map::Pose2& odom_base,
                const std::vector<spott_map::Pose2>& mounts, const std::vector<double>& ranges,
                double min_range_m, double max_range_m, double field_of_view_rad);
+  /// One horizontal range profile's echoes at `time_s`, in the odom frame and in scan order (for
+  /// wall_lattice; nothing when it is off).
+  void AddProfile(double time_s, const std::vector<spott_map::Vec2>& odom_points) {
+    lattice_.AddProfile(time_s, odom_points);
+  }
   /// A fix is due `period_s` after the last one (or the start).
   bool Due(double now_s) const { return now_s - last_fix_s_ >= p_.period_s; }
+  /// A heading fix from the wall lattice is due (on, and wall_lattice.period_s after the last).
+  bool LatticeDue(double now_s) const {
+    return p_.wall_lattice.enabled && now_s - last_lattice_s_ >= p_.wall_lattice.period_s;
+  }
+  /// Turns map -> odom about the robot (`odom_base_now`) by the wall lattice's correction when
+  /// it has one within max_correction_rad. Restarts the lattice's period.
+  WallLatticeCorrection TurnToLattice(double now_s, const spott_map::Pose2& odom_base_now);
   /// Matches the echoes of the window ending at `now_s` to the segments; on success map_to_odom
   /// moves (the heading turns about the echoes' centroid; `odom_base_now`, the robot, when there
   /// are none). Restarts the period.
@@ -89,9 +110,7 @@ class SensedMapTracker {
  private:
   struct Echo {
     double time_s;
-    spott_map::Pose2 transducer;  ///< Odom frame: position and axis.
-    double range_m;
-    double half_cone_rad;
+    spott_map::SonarEcho echo;  ///< Odom frame.
   };
   struct Wall {
     spott_map::Vec2 a, u, n;  ///< Start, unit direction, unit normal.
@@ -102,7 +121,9 @@ class SensedMapTracker {
   spott_map::Pose2 map_to_odom_;
   std::vector<Wall> walls_;
   std::deque<Echo> echoes_;
+  WallLatticeHeading lattice_;
   double last_fix_s_ = 0.0;
+  double last_lattice_s_ = 0.0;
 };
 
 }  // namespace markov_localization

@@ -3,20 +3,27 @@
 // (~initial_pose or the world's robot_start); map -> odom follows odometry and every ~period_s
 // the sonar echoes of the last ~window_s are matched to the line segments of the map the robot
 // sensed (/map_features, which the TR+ controller's mapping fills) and map -> odom moves by the
-// correction. Publishes tf map -> odom (REP-105) with every odometry message and
+// correction. With ~wall_lattice/enabled the heading is first turned by the rectilinear walls'
+// lines in the horizontal range profiles (/range_profile, placed in odom by tf at their stamps).
+// Publishes tf map -> odom (REP-105) with every odometry message and
 // localization_status (TRACKING) with every ring; /initialpose restarts at a pose; a respawned
 // node resumes from ~last_map_to_odom, which it keeps up to date.
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <message_filters/subscriber.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
+#include <spott_msgs/RangeProfile.h>
 #include <spott_msgs/RangeRing.h>
+#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 
 #include "markov_localization/odometry_buffer.h"
@@ -28,6 +35,7 @@
 #include "spott_map/ros/conversions.h"
 #include "spott_map/world_loader.h"
 #include "spott_ros/input_refusals.h"
+#include "spott_ros/range_profiles.h"
 #include "spott_ros/range_readings.h"
 
 namespace ml = markov_localization;
@@ -42,13 +50,23 @@ class SensedMapLocalizationNode {
       : params_(params),
         start_(start),
         tracker_(params.tracker, spott_map::Pose2{}),
-        refusals_(nh, "sensed_map_localization") {
+        refusals_(nh, "sensed_map_localization"),
+        tf_listener_(tf_buffer_) {
     status_pub_ = nh.advertise<spott_msgs::LocalizationStatus>("localization_status", 1, true);
     odom_sub_ = nh.subscribe("odom", 50, &SensedMapLocalizationNode::OnOdom, this);
     ring_sub_ = nh.subscribe(params.ring_topic, 5, &SensedMapLocalizationNode::OnRing, this);
     features_sub_ =
         nh.subscribe(params.features_topic, 1, &SensedMapLocalizationNode::OnFeatures, this);
     initial_sub_ = nh.subscribe("initialpose", 1, &SensedMapLocalizationNode::OnInitialPose, this);
+    if (params.tracker.wall_lattice.enabled) {
+      // A profile waits until tf has its head at its stamp (the heads pan while it travels).
+      profile_sub_.subscribe(nh, params.profile_topic, 5);
+      profile_filter_ = std::make_unique<tf2_ros::MessageFilter<spott_msgs::RangeProfile>>(
+          profile_sub_, tf_buffer_, params.odom_frame, 5, nh);
+      profile_filter_->registerCallback(&SensedMapLocalizationNode::OnProfile, this);
+      ROS_INFO("sensed_map_localization: heading from rectilinear walls (axis %.1f deg) in '%s'",
+               params.tracker.wall_lattice.axis_rad * 180.0 / M_PI, params.profile_topic.c_str());
+    }
     ROS_INFO(
         "sensed_map_localization: starting at (%.2f, %.2f, %.0f deg); a fix every %.1f s on the "
         "sonar echoes of the last %.1f s against '%s'",
@@ -75,11 +93,18 @@ class SensedMapLocalizationNode {
       started_ = true;
       SaveMapToOdom();
     }
+    if (tracker_.LatticeDue(t)) {
+      const ml::WallLatticeCorrection turn = tracker_.TurnToLattice(t, *pose);
+      if (turn.applied) {
+        SaveMapToOdom();
+        ROS_DEBUG("sensed_map_localization: turned %.2f deg on %d of %d wall lines (%.1f m)",
+                  turn.dyaw * 180.0 / M_PI, turn.agreeing, turn.lines, turn.length_m);
+      }
+    }
     if (tracker_.Due(t)) {
       const ml::SensedMapFix fix = tracker_.Localize(t, *pose);
       ++fixes_;
       if (fix.applied) {
-        ++applied_;
         SaveMapToOdom();
         ROS_INFO(
             "sensed_map_localization: fix %d: moved (%.3f, %.3f) m, %.2f deg on %d of %d echoes "
@@ -120,6 +145,27 @@ class SensedMapLocalizationNode {
     tracker_.AddRing(ring.header.stamp.toSec(), *at, mounts_, ranges, ring.min_range,
                      ring.max_range, ring.field_of_view);
     PublishStatus(ring.header.stamp, *at);
+  }
+
+  void OnProfile(const spott_msgs::RangeProfileConstPtr& profile) {
+    const spott_msgs::RangeProfile& msg = *profile;
+    if (!started_ || msg.orientation != spott_msgs::RangeProfile::HORIZONTAL) return;
+    geometry_msgs::TransformStamped head;
+    try {
+      head = tf_buffer_.lookupTransform(params_.odom_frame, msg.header.frame_id, msg.header.stamp);
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "sensed_map_localization: range profile frame: %s", e.what());
+      return;
+    }
+    Eigen::Vector3d origin;
+    const auto points = spott_ros::ProfileEchoes(msg, head.transform, params_.profile_min_height_m,
+                                                 params_.profile_max_height_m, &origin);
+    if (!points) {
+      refusals_.Refuse(params_.profile_topic, "header.frame_id",
+                       "the head's pose in tf is not finite");
+      return;
+    }
+    tracker_.AddProfile(msg.header.stamp.toSec(), *points);
   }
 
   void OnFeatures(const spott_msgs::MapFeatureArray& msg) {
@@ -193,13 +239,17 @@ class SensedMapLocalizationNode {
   ml::OdometryBuffer odometry_{2.0};
   spott_ros::InputRefusals refusals_;
   tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  message_filters::Subscriber<spott_msgs::RangeProfile> profile_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<spott_msgs::RangeProfile>> profile_filter_;
   ros::Publisher status_pub_;
   ros::Subscriber odom_sub_, ring_sub_, features_sub_, initial_sub_;
   std::vector<spott_map::Pose2> mounts_;
   ros::Time last_tf_stamp_;
   bool started_ = false;
   bool have_features_ = false;
-  int fixes_ = 0, applied_ = 0;
+  int fixes_ = 0;
 };
 
 }  // namespace

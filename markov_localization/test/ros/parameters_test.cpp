@@ -70,13 +70,39 @@ TEST(SensedMapParameters, TheStartAndTheTrackersValuesArrive) {
   XmlRpc::XmlRpcValue v;
   v["initial_pose"] = std::string("12 11 0.5");
   v["period_s"] = 5;
-  v["cone_margin_deg"] = 6.0;
+  v["max_incidence_deg"] = 6.0;
   SensedMapNodeParameters p;
   ASSERT_TRUE(ReadSensed(v, &p).empty());
   ASSERT_TRUE(p.initial_pose.has_value());
   EXPECT_DOUBLE_EQ(p.initial_pose->yaw, 0.5);
   EXPECT_DOUBLE_EQ(p.tracker.period_s, 5.0);
-  EXPECT_NEAR(p.tracker.cone_margin_rad, 6.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR(p.tracker.max_incidence_rad, 6.0 * M_PI / 180.0, 1e-12);
+}
+
+TEST(SensedMapParameters, TheWallLatticesValuesArriveAndBadOnesAreNamed) {
+  XmlRpc::XmlRpcValue v;
+  v["wall_lattice"]["enabled"] = false;
+  v["wall_lattice"]["gate_deg"] = 3.0;
+  v["wall_lattice"]["min_points"] = 20;
+  SensedMapNodeParameters p;
+  ASSERT_TRUE(ReadSensed(v, &p).empty());
+  EXPECT_FALSE(p.tracker.wall_lattice.enabled);
+  EXPECT_NEAR(p.tracker.wall_lattice.gate_rad, 3.0 * M_PI / 180.0, 1e-12);
+  EXPECT_EQ(p.tracker.wall_lattice.min_points, 20);
+  XmlRpc::XmlRpcValue bad;
+  bad["wall_lattice"]["gate_deg"] = 45.0;  // every line would be a wall of the lattice
+  bad["wall_lattice"]["gate_m"] = 0.1;     // not a key of the lattice
+  bad["profile_min_height_m"] = 3.0;       // above profile_max_height_m
+  const auto errors = ReadSensed(bad, &p);
+  ASSERT_EQ(errors.size(), 3u);
+  const auto has = [&](const std::string& text) {
+    for (const auto& e : errors)
+      if (e.find(text) != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(has("~wall_lattice/gate_deg must be > 0 and below 45 degrees"));
+  EXPECT_TRUE(has("wall_lattice/gate_m"));
+  EXPECT_TRUE(has("profile_max_height_m"));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // sensed_map_localization_node on the simulator (see sensed_map.test): kidnaps across and along
-// cim_office's west hallway, judged on the ground truth.
+// cim_office's west hallway, and of the heading, judged on the ground truth.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
 #include <spott_msgs/Kidnap.h>
 #include <spott_msgs/LocalizationStatus.h>
 #include <spott_msgs/MapFeatureArray.h>
@@ -28,6 +29,16 @@ struct Listener {
     std::lock_guard<std::mutex> lock(mutex);
     truth = t;
     have_truth = true;
+  }
+  // The estimate's heading error (rad); false before both came.
+  bool HeadingError(double* error) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!have_status || !have_truth) return false;
+    const auto& q = truth.pose.pose.orientation;
+    const double yaw =
+        std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+    *error = std::remainder(status.estimate.theta - yaw, 2.0 * M_PI);
+    return true;
   }
   // The estimate's error along (x) and across (y) the hallway; false before both came.
   bool Error(double* along, double* across) {
@@ -65,11 +76,12 @@ bool WaitAcross(Listener& l, double tolerance, double seconds, double* along, do
   return false;
 }
 
-bool Kidnap(double ahead, double left) {
+bool Kidnap(double ahead, double left, double turn = 0.0) {
   spott_msgs::Kidnap k;
   k.request.relative = true;
   k.request.pose.x = ahead;
   k.request.pose.y = left;
+  k.request.pose.theta = turn;
   return ros::service::waitForService("sim/kidnap", ros::Duration(10)) &&
          ros::service::call("sim/kidnap", k) && k.response.success;
 }
@@ -109,6 +121,43 @@ TEST(SensedMapLocalizationNode, FindsAKidnapAcrossTheHallwayNotOneAlongIt) {
   ASSERT_TRUE(l.Error(&along, &across));
   EXPECT_NEAR(along, -0.4, 0.03);
   EXPECT_LT(std::abs(across), 0.03);
+}
+
+TEST(SensedMapLocalizationNode, TurnsBackAKidnapOfItsHeadingOnTheHallwaysWalls) {
+  ros::NodeHandle nh;
+  Listener l;
+  auto s1 = nh.subscribe("localization_status", 5, &Listener::OnStatus, &l);
+  auto s2 = nh.subscribe("sim/ground_truth", 5, &Listener::OnTruth, &l);
+  // The QUADRIS heads pointed left and right, level: each profile lies along a hallway wall.
+  auto heads = nh.advertise<sensor_msgs::JointState>("range_profile/point_head", 1, true);
+  sensor_msgs::JointState point;
+  point.name = {"quadris_1_pan_joint", "quadris_1_tilt_joint", "quadris_2_pan_joint",
+                "quadris_2_tilt_joint"};
+  point.position = {M_PI / 2, 0.0, -M_PI / 2, 0.0};
+  heads.publish(point);
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  ros::WallDuration(3.0).sleep();
+
+  double error = 1.0;
+  ASSERT_TRUE(l.HeadingError(&error));
+  EXPECT_LT(std::abs(error), 0.3 * M_PI / 180.0);
+  // Turned 3 degrees without the odometry seeing it: the estimate keeps the old heading, then
+  // the walls' lines turn it back.
+  ASSERT_TRUE(Kidnap(0.0, 0.0, 3.0 * M_PI / 180.0));
+  ros::WallDuration(0.5).sleep();
+  ASSERT_TRUE(l.HeadingError(&error));
+  EXPECT_NEAR(error, -3.0 * M_PI / 180.0, 0.3 * M_PI / 180.0);
+  const ros::WallTime kidnapped = ros::WallTime::now();
+  const ros::WallTime end = kidnapped + ros::WallDuration(12.0);
+  while (ros::ok() && ros::WallTime::now() < end &&
+         !(l.HeadingError(&error) && std::abs(error) < 0.3 * M_PI / 180.0)) {
+    ros::WallDuration(0.1).sleep();
+  }
+  EXPECT_LT(std::abs(error), 0.3 * M_PI / 180.0)
+      << "heading error " << error * 180.0 / M_PI << " deg";
+  std::printf("heading kidnap of 3 deg turned back after %.1f s (wall lattice)\n",
+              (ros::WallTime::now() - kidnapped).toSec());
 }
 
 }  // namespace

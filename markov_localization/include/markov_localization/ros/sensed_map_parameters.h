@@ -30,6 +30,11 @@ struct SensedMapNodeParameters {
   std::string odom_frame = "odom";
   std::string ring_topic = "sonar";             ///< spott_msgs/RangeRing.
   std::string features_topic = "map_features";  ///< spott_msgs/MapFeatureArray (latched).
+  /// spott_msgs/RangeProfile (QUADRIS): horizontal profiles feed tracker.wall_lattice when on.
+  std::string profile_topic = "range_profile";
+  /// Profile samples outside this height band above the base are left out (m): the floor.
+  double profile_min_height_m = 0.05;
+  double profile_max_height_m = 2.5;
   /// Only segments whose "sensor" attribute is one of these are matched (empty: every segment).
   /// The sonar's own: QUADRIS's are profiles at other heights (a desk's top, a partition's edge)
   /// that the sonar ring heard 0.06-0.15 m elsewhere on average (cim_office's lab).
