@@ -9,6 +9,7 @@
 
 #include "markov_localization/sticky_estimate.h"
 #include "spott_map/ros/conversions.h"
+#include "spott_ros/range_profiles.h"
 
 namespace markov_localization::ros_conversions {
 
@@ -170,13 +171,10 @@ std::vector<double> ProfileReadings(const spott_msgs::RangeProfile& msg,
     return refuse("angles, ranges and points differ in size");
   if (!(std::isfinite(msg.max_range) && msg.max_range > 0.0f && msg.max_range < 1000.0f))
     return refuse("max_range is not in (0, 1000) m");
-  const auto& q = to_base.rotation;
-  const auto& t = to_base.translation;
-  const Eigen::Quaterniond rq(q.w, q.x, q.y, q.z);
-  const Eigen::Vector3d origin(t.x, t.y, t.z);
-  if (!origin.allFinite() || !std::isfinite(rq.norm()) || rq.norm() < 1e-6)
-    return refuse("the head's transform is not finite");
-  const Eigen::Matrix3d r = rq.normalized().toRotationMatrix();
+  const auto head = spott_ros::HeadPose(to_base);
+  if (!head) return refuse("the head's transform is not finite");
+  const Eigen::Vector3d origin = head->translation();
+  const Eigen::Matrix3d r = head->linear();
   const double step = 2.0 * M_PI / bins;
   const auto bin_of = [&](double x, double y) {
     const int b = static_cast<int>(std::lround(std::atan2(y, x) / step));

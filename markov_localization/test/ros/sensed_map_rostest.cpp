@@ -16,10 +16,15 @@
 namespace {
 
 struct Listener {
+  // The estimate and the ground truth, from now on.
+  explicit Listener(ros::NodeHandle& nh)
+      : status_sub(nh.subscribe("localization_status", 5, &Listener::OnStatus, this)),
+        truth_sub(nh.subscribe("sim/ground_truth", 5, &Listener::OnTruth, this)) {}
   std::mutex mutex;
   spott_msgs::LocalizationStatus status;
   nav_msgs::Odometry truth;
   bool have_status = false, have_truth = false;
+  ros::Subscriber status_sub, truth_sub;  // last: their callbacks use the members above
   void OnStatus(const spott_msgs::LocalizationStatus& s) {
     std::lock_guard<std::mutex> lock(mutex);
     status = s;
@@ -88,9 +93,7 @@ bool Kidnap(double ahead, double left, double turn = 0.0) {
 
 TEST(SensedMapLocalizationNode, FindsAKidnapAcrossTheHallwayNotOneAlongIt) {
   ros::NodeHandle nh;
-  Listener l;
-  auto s1 = nh.subscribe("localization_status", 5, &Listener::OnStatus, &l);
-  auto s2 = nh.subscribe("sim/ground_truth", 5, &Listener::OnTruth, &l);
+  Listener l(nh);
   // The hallway's wall faces (walls 0.15 m thick on y = 7 and 9.5), as the sonar mapped them.
   auto pub = nh.advertise<spott_msgs::MapFeatureArray>("map_features", 1, true);
   spott_msgs::MapFeatureArray features;
@@ -125,9 +128,7 @@ TEST(SensedMapLocalizationNode, FindsAKidnapAcrossTheHallwayNotOneAlongIt) {
 
 TEST(SensedMapLocalizationNode, TurnsBackAKidnapOfItsHeadingOnTheHallwaysWalls) {
   ros::NodeHandle nh;
-  Listener l;
-  auto s1 = nh.subscribe("localization_status", 5, &Listener::OnStatus, &l);
-  auto s2 = nh.subscribe("sim/ground_truth", 5, &Listener::OnTruth, &l);
+  Listener l(nh);
   // The QUADRIS heads pointed left and right, level: each profile lies along a hallway wall.
   auto heads = nh.advertise<sensor_msgs::JointState>("range_profile/point_head", 1, true);
   sensor_msgs::JointState point;

@@ -7,9 +7,13 @@
 
 #include <geometry_msgs/Transform.h>
 #include <spott_msgs/RangeProfile.h>
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace spott_ros {
+
+/// The head's pose as a rigid transform (the quaternion normalized); nullopt when a translation
+/// or a quaternion's component is not finite or the quaternion is zero.
+std::optional<Eigen::Isometry3d> HeadPose(const geometry_msgs::Transform& head);
 
 /// The profile's echoes placed by `head` (the head's pose in the target frame), in scan order:
 /// samples below max_range with a finite point whose height lies in [min_height_m,

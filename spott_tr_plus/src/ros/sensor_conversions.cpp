@@ -41,19 +41,15 @@ std::vector<double> PressedAngles(const spott_msgs::BumperRing& msg) {
 std::optional<std::vector<controller::ProfileSample>> ProfileSamples(
     const spott_msgs::RangeProfile& msg, const geometry_msgs::Transform& head,
     controller::Vec3* origin) {
-  const auto& q = head.rotation;
-  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
-  const Eigen::Vector3d from(head.translation.x, head.translation.y, head.translation.z);
-  if (!from.allFinite() || !rotation.coeffs().allFinite() || rotation.norm() < 1e-6)
-    return std::nullopt;
-  *origin = from;
-  const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+  const auto pose = spott_ros::HeadPose(head);
+  if (!pose) return std::nullopt;
+  *origin = pose->translation();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<controller::ProfileSample> samples;
   samples.reserve(msg.points.size());
   for (std::size_t i = 0; i < msg.points.size(); ++i) {
     const Eigen::Vector3d p =
-        from + r * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
+        *pose * Eigen::Vector3d(msg.points[i].x, msg.points[i].y, msg.points[i].z);
     const bool echo = i < msg.ranges.size() && msg.ranges[i] < msg.max_range - 1e-3;
     if (p.allFinite())
       samples.push_back({p, echo});
