@@ -579,7 +579,7 @@ std::string FormatNavigation(const NavigationReport& report) {
         << (leg.wall_time_s > 0 ? leg.sim_time_s / leg.wall_time_s : 0.0) << "x real time), "
         << leg.path_length_m << " m driven, ended at (" << leg.final_position.x() << ", "
         << leg.final_position.y() << "), " << std::setprecision(2)
-        << ((report.by_mission || !leg.found_label.empty()) && !leg.has_target
+        << (!leg.has_target  // a mission, a find, a tele-operation: nothing to measure from
                 ? std::string("no goal to be at")
                 : FormatMetres(leg.final_error_m) + " m from the target")
         << "; closest approach to a wall or object " << leg.min_wall_distance_m

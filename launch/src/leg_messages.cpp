@@ -48,12 +48,18 @@ bool ApplyTaskResult(const spott_msgs::TaskResult& result,
                      std::vector<std::string>& features_before, NavigationLeg& leg) {
   leg.interpretation = result.interpretation;
   leg.trace = result.trace;
-  // A `find` ends "found" (the object's place is judged by OffTaskGoal).
-  const bool reached = result.outcome == "reached" || result.outcome == "found";
+  // A `find` ends "found", a tele-operation "stopped" (the object's place and the way driven are
+  // judged by OffTaskGoal).
+  const bool reached =
+      result.outcome == "reached" || result.outcome == "found" || result.outcome == "stopped";
   leg.found_label = result.found_label;
   leg.found_at = spott_map::Vec2(result.found_at.x, result.found_at.y);
-  leg.task_outcome =
-      result.outcome + (result.message.empty() || reached ? "" : ": " + result.message);
+  // The message says why a task failed, and why a tele-operation stopped (once: the
+  // controller's may already begin with the outcome).
+  const bool say = !reached || result.outcome == "stopped";
+  std::string why = result.message;
+  if (why.rfind(result.outcome + ": ", 0) == 0) why.erase(0, result.outcome.size() + 2);
+  leg.task_outcome = result.outcome + (why.empty() || !say ? "" : ": " + why);
   for (const std::string& id : result.features_added) {
     if (std::find(features_before.begin(), features_before.end(), id) == features_before.end())
       leg.features_added.push_back(id);

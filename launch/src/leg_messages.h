@@ -44,7 +44,8 @@ inline const char* const kActiveLocalizationNote =
 constexpr int kMaxActiveLocalizations = 2;  ///< Per leg.
 
 /// The TR+ controller's result into `leg`: interpretation, trace, task outcome, the features it
-/// added since `features_before` (updated), the goal point it sent. True when it says reached.
+/// added since `features_before` (updated), the goal point it sent. True when it says reached
+/// (a find: found; a tele-operation: stopped).
 bool ApplyTaskResult(const spott_msgs::TaskResult& result,
                      std::vector<std::string>& features_before, NavigationLeg& leg);
 

@@ -253,6 +253,17 @@ std::string OffFoundObject(const spott_map::World& world, const NavigationLeg& l
   return why.str();
 }
 
+std::string OffTeleoperation(const spott_map::Pose2& start, double direction,
+                             const NavigationLeg& leg) {
+  const spott_map::Vec2 way(std::cos(direction), std::sin(direction));
+  const double advance = (leg.final_position - start.Position()).dot(way);
+  if (advance >= kTeleopAdvanceM) return "";
+  std::ostringstream why;
+  why << std::fixed << std::setprecision(2) << "the controller says stopped, but the robot went "
+      << advance << " m the way it was sent (at least " << kTeleopAdvanceM << " m)";
+  return why.str();
+}
+
 std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
                         const spott_map::Pose2& start, const NavigationLeg& leg,
                         double tolerance_m) {
@@ -269,6 +280,15 @@ std::string OffTaskGoal(const spott_map::World& world, const std::string& comman
     const auto in =
         spott_tr_plus::InterpretTask(*parsed.command, start.x, start.y, start.yaw,
                                      spott_tr_plus::TaskInterpretationParameters{}, resolve);
+    using Mode = spott_tr_plus::TaskInterpretation::Mode;
+    using Bias = spott_tr_plus::DirectionBias::Kind;
+    if (in.ok() && in.interpretation->mode == Mode::kTeleoperate) {
+      const spott_tr_plus::DirectionBias& b = in.interpretation->bias;
+      if (b.kind == Bias::kRelativeHeading)
+        return OffTeleoperation(start, start.yaw + b.angle, leg);
+      if (b.kind == Bias::kAbsoluteHeading) return OffTeleoperation(start, b.angle, leg);
+      return "the tele-operation names no heading";
+    }
     if (in.ok() && in.interpretation->goal) {
       in_region = in.interpretation->goal->Contains(leg.final_position.x(), leg.final_position.y());
     } else {

@@ -188,6 +188,31 @@ robot_start: {pose: [1, 4, 0]}
             std::string::npos);
 }
 
+// A tele-operation is judged on the way the robot went: at least kTeleopAdvanceM along the
+// heading it was sent, from where it really started.
+TEST(LegMetrics, ATeleoperationIsJudgedOnTheWayTheRobotWent) {
+  const auto loaded = spott_map::LoadWorldFromString(R"(
+world: {name: hall}
+walls: {from_rooms: true, thickness: 0.1}
+rooms:
+  - {id: hall, kind: hallway, polygon: [[0, 0], [20, 0], [20, 2.5], [0, 2.5]]}
+robot_start: {pose: [2, 1.25, 0]}
+)",
+                                                     "hall.yaml");
+  ASSERT_TRUE(loaded.ok()) << spott_map::FormatErrors(loaded.errors);
+  const spott_map::World& world = *loaded.world;
+  NavigationLeg leg;
+  const spott_map::Pose2 start{2, 1.25, M_PI};  // facing west
+  leg.final_position = spott_map::Vec2(1.0, 1.3);
+  EXPECT_EQ(OffTaskGoal(world, "go forward", start, leg, 0.25), "");  // 1 m west
+  EXPECT_EQ(OffTaskGoal(world, "go west", start, leg, 0.25), "");
+  const std::string east = OffTaskGoal(world, "go east", start, leg, 0.25);
+  EXPECT_NE(east.find("went -1.00 m the way it was sent"), std::string::npos) << east;
+  EXPECT_NE(OffTaskGoal(world, "go backward", start, leg, 0.25), "");
+  leg.final_position = spott_map::Vec2(1.7, 1.25);  // 0.3 m: hardly moved
+  EXPECT_NE(OffTaskGoal(world, "go forward", start, leg, 0.25), "");
+}
+
 // A mission counts as the scenario says: the executive's outcome, the monitors in their order,
 // the message, then the goal on the ground truth.
 TEST(LegMetrics, AMissionIsJudgedOnItsOutcomeMonitorsMessageAndGoal) {

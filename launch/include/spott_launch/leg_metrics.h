@@ -189,9 +189,21 @@ double NearestObjectOfKind(const spott_map::World& world, const std::string& lab
 /// "" when `leg`'s found object matches a world object (kFoundToleranceM), else why not.
 std::string OffFoundObject(const spott_map::World& world, const NavigationLeg& leg);
 
+/// A tele-operation (`go forward`, `go east`, ...; SPOTT's intelligent tele-operation, which
+/// has no goal) counts when the robot went at least this far the way it was sent (m) and
+/// stopped (the controller's "stopped": before a known structure or on the operator's word);
+/// contacts are judged as for every leg.
+constexpr double kTeleopAdvanceM = 0.5;
+
+/// "" when `leg` ended at least kTeleopAdvanceM from `start` along `direction` (map frame, rad),
+/// else why not.
+std::string OffTeleoperation(const spott_map::Pose2& start, double direction,
+                             const NavigationLeg& leg);
+
 /// Why a task leg is off its goal ("" = in the command's goal region, interpreted on `world`'s
 /// CAD map from where the robot really started, or within `tolerance_m` of the goal point the
-/// controller sent; leg measured, target set from the controller's result).
+/// controller sent; a find by OffFoundObject, a tele-operation by OffTeleoperation; leg
+/// measured, target set from the controller's result).
 std::string OffTaskGoal(const spott_map::World& world, const std::string& command,
                         const spott_map::Pose2& start, const NavigationLeg& leg,
                         double tolerance_m);
