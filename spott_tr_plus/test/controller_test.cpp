@@ -1402,6 +1402,34 @@ TEST(Teleop, ANewObstacleAheadIsAvoidedAndTheCommandedDirectionKeptOtherwise) {
   EXPECT_NEAR(s.structure_m, 0.2465, 0.026);  // sampled every 2.5 cm on 5 cm cells
 }
 
+// A commanded direction a few degrees off the hallway (the estimate's heading when the command
+// came): the body keeps clearance_m from the side wall instead of running onto it, and a robot
+// already nearer than that goes on along the wall.
+TEST(Teleop, KnownStructureBesideTheWayKeepsItsClearance) {
+  const spott_map::MapDatabase db = spott_map::MapDatabase::FromWorld(CimOffice());
+  KnownStructure known;
+  known.Build(db);
+  TeleopParameters p;
+  const double south_face = 7.075;  // hall_e's south wall, 0.15 m thick on y = 7
+  const double off = -0.1;          // 5.7 degrees toward it
+  Teleop t(off, false, 0.3, 0.79, kRadius, p, 0.0);
+  // 0.15 m of gap, the wall 1.5 m ahead along the commanded heading: the heading turns off it.
+  const Pose2 near_wall{23.0, south_face + kRadius + 0.15, off};
+  auto s = t.Update(near_wall, known, {}, 0.0);
+  EXPECT_FALSE(s.stopped);
+  EXPECT_GT(s.heading, off + 0.05);
+  EXPECT_LE(s.heading - off, p.max_deviation_rad + 1e-9);
+  // The way chosen keeps the clearance for the look-ahead.
+  EXPECT_GE(known.FreeRun(near_wall.Position(), s.heading, kRadius + p.clearance_m, p.lookahead_m),
+            p.lookahead_m - 1e-3);
+  // Already 0.03 m from the wall, along it: it goes on, parallel or away.
+  Teleop along(0.0, false, 0.3, 0.79, kRadius, p, 0.0);
+  s = along.Update(Pose2{12.0, south_face + kRadius + 0.03, 0.0}, known, {}, 0.0);
+  EXPECT_FALSE(s.stopped);
+  EXPECT_GE(s.heading, -1e-9);
+  EXPECT_GT(s.command.linear_mps, 0.0);
+}
+
 TEST(ControllerParameters, EveryViolationIsNamedAsInTheYaml) {
   ControllerParameters p;
   EXPECT_TRUE(ValidateParameters(p).empty());

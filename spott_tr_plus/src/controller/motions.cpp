@@ -216,7 +216,14 @@ Teleop::Step Teleop::Update(const Pose2& pose, const KnownStructure& known,
     return step;
   }
   // The heading closest to the commanded direction whose way is clear of new obstacles (and of
-  // known structure within the look-ahead).
+  // known structure within the look-ahead). Known structure beside the way keeps clearance_m
+  // from the body as new obstacles do (a commanded direction a few degrees off a hallway ran the
+  // Nomad's bumper onto its wall); what lies ahead in the commanded direction is left to the
+  // stop. A body already nearer than clearance_m may go on as long as it gets no nearer.
+  const double margin = std::max(
+      0.0,
+      std::min(p_.clearance_m, known.Clearance(at, radius_ + p_.clearance_m) - radius_ - 1e-3));
+  const double beside = std::min(p_.lookahead_m, step.structure_m - p_.stop_distance_m);
   std::optional<double> chosen;
   const double step_rad = M_PI / 36;
   for (double off = 0.0; off <= p_.max_deviation_rad + 1e-9 && !chosen; off += step_rad) {
@@ -225,6 +232,7 @@ Teleop::Step Teleop::Update(const Pose2& pose, const KnownStructure& known,
       const double h = NormalizeAngle(direction_ + sign * off);
       if (!Clear(at, h, obstacles)) continue;
       if (off > 0.0 && known.FreeRun(at, h, radius_, p_.lookahead_m) < p_.lookahead_m) continue;
+      if (known.FreeRun(at, h, radius_ + margin, beside) < beside) continue;
       chosen = h;
       break;
     }
