@@ -231,8 +231,11 @@ double NearestObjectOfKind(const spott_map::World& world, const std::string& lab
                            const spott_map::Vec2& at) {
   double nearest = std::numeric_limits<double>::infinity();
   for (const spott_map::WorldObject& o : world.objects) {
-    if (spott_map::ToString(o.kind) == label)
-      nearest = std::min(nearest, (o.pose.Position() - at).norm());
+    if (spott_map::ToString(o.kind) != label) continue;
+    const spott_map::Polygon footprint = o.Footprint();
+    nearest = std::min(nearest, spott_map::PointInPolygon(at, footprint)
+                                    ? 0.0
+                                    : spott_map::DistanceToBoundary(at, footprint));
   }
   return nearest;
 }

@@ -182,7 +182,14 @@ robot_start: {pose: [1, 4, 0]}
   EXPECT_EQ(OffTaskGoal(world, "find chair", start, leg, 0.25), "");
   leg.found_at = spott_map::Vec2(4.0, 1.1);  // the desk's place
   const std::string off = OffTaskGoal(world, "find chair", start, leg, 0.25);
-  EXPECT_NE(off.find("nearest chair is 2.19 m away"), std::string::npos) << off;
+  EXPECT_NE(off.find("nearest chair is 1.84 m away"), std::string::npos) << off;  // its footprint
+  // A desk is found where it was seen: 0.73 m from d1's centre but on its top.
+  leg.found_label = "desk";
+  leg.found_at = spott_map::Vec2(4.7, 1.2);
+  EXPECT_EQ(OffTaskGoal(world, "find desk", start, leg, 0.25), "");
+  leg.found_at = spott_map::Vec2(4.7, 2.0);  // 0.6 m beyond its long side
+  EXPECT_NE(OffTaskGoal(world, "find desk", start, leg, 0.25).find("nearest desk is 0.60 m away"),
+            std::string::npos);
   leg.found_label = "cylinder";
   EXPECT_NE(OffTaskGoal(world, "find chair", start, leg, 0.25).find("has no cylinder"),
             std::string::npos);

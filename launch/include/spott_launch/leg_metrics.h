@@ -177,12 +177,13 @@ std::string MissionMismatch(const MissionSpec& spec, const std::string& outcome,
                             const std::string& message, const std::vector<std::string>& fired);
 
 /// A `find` is judged by the object the controller reports: a world object of the same kind
-/// (spott_map::ToString of its kind = the label) with its centre within this of the reported
-/// centre (issue 19: "a chair within 0.5 m of a real one").
+/// (spott_map::ToString of its kind = the label) whose footprint lies within this of the reported
+/// centre (issue 19: "a chair within 0.5 m of a real one"; a 3 m table found at one end is
+/// found, as recognition_score.py counts it).
 constexpr double kFoundToleranceM = 0.5;
 
-/// The distance from `at` to the centre of `world`'s nearest object whose kind is `label`
-/// (infinity when it has none).
+/// The distance from `at` to the footprint of `world`'s nearest object whose kind is `label` (0
+/// inside it; infinity when the world has none).
 double NearestObjectOfKind(const spott_map::World& world, const std::string& label,
                            const spott_map::Vec2& at);
 
