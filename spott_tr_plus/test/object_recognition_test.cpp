@@ -86,6 +86,71 @@ TEST(ObjectRecognition, ADeskBelowTheHeadsIsADeskFromTheVerticalProfiles) {
   EXPECT_GT(found[0].size_x, 1.2);
 }
 
+// The heads as the controller drives them past a room: CONTROL_THE_PTU's sweep (+-0.8 rad, 8 s)
+// sampled by QUADRIS's 1 Hz profiles, the two heads mirrored, the robot driving east at
+// `speed` m/s along y = `y` from x = `x0` for `seconds`.
+std::vector<spott_map::MapFeature> RecogniseInPassing(const std::vector<Solid>& scene, double x0,
+                                                      double y, double speed, int seconds,
+                                                      const RecognitionParameters& p) {
+  ObjectRecognizer r{p};
+  std::vector<spott_map::MapFeature> all;
+  for (int t = 0; t < seconds; ++t) {
+    const Vec3 o(x0 + speed * t, y, kHeadZ);
+    const double pan = 0.8 * std::sin(2 * M_PI * t / 8.0 + 0.3);
+    for (const double head : {pan, -pan}) {
+      r.AddProfile(o, Cast(scene, o, head - 0.6, false), false);  // the desk lies ahead right
+      r.AddProfile(o, Cast(scene, o, head - 0.6, true), true);
+    }
+    for (auto& f : r.Take()) all.push_back(std::move(f));
+  }
+  return all;
+}
+
+// A desk below the heads is seen only by vertical profiles, one line up its face and over its
+// top each, and at 1 Hz the sweep puts the next line 0.1-0.8 m along the face: no two profiles
+// hit the same cell. Confirmed cell by cell (vertical_block_m = cell_m: the rule before), the
+// meeting room's table was never named in a FIND run; by blocks it is.
+TEST(ObjectRecognition, ADeskSeenInPassingBySparseVerticalProfilesIsADesk) {
+  const Solid desk{{2.5, 1.0}, 0.0, 1.6, 0.8, 0.75, false};
+  RecognitionParameters p;
+  const auto found = RecogniseInPassing({desk}, -0.5, 3.0, 0.25, 16, p);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "desk");
+  EXPECT_NEAR(found[0].size_z, 0.75, 0.03);
+  EXPECT_LE(spott_map::DistancePointSegment(found[0].pose.Position(),
+                                            spott_map::Segment{Vec2(1.7, 1.0), Vec2(3.3, 1.0)}),
+            0.4);  // on the desk
+  p.vertical_block_m = p.cell_m;
+  EXPECT_TRUE(RecogniseInPassing({desk}, -0.5, 3.0, 0.25, 16, p).empty());
+}
+
+// FIND seed 2 (2026-12-07): the room sweep's vertical profiles passed office 101's chair 20-40
+// degrees apart and none met it, so its top was never seen and it was named nothing. Met only
+// by horizontal profiles, it is where a head must look; a vertical profile there names it.
+TEST(ObjectRecognition, AChairNoVerticalProfileMetIsLookedAtAndThenNamed) {
+  const Solid chair{{2.5, 2.0}, 0.0, 0.5, 0.5, 0.9, false};
+  ObjectRecognizer r{RecognitionParameters{}};
+  const Vec3 o(2.64, 4.07, kHeadZ);
+  const double centre = std::atan2(2.0 - 4.07, 2.5 - 2.64);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k <= 32; ++k) {
+      const double pan = centre + (pass == 0 ? -0.8 + 0.05 * k : 0.8 - 0.05 * k);
+      r.AddProfile(o, Cast({chair}, o, pan, false), false);
+    }
+  }
+  EXPECT_TRUE(r.Take().empty());
+  const auto look = r.ToLookAt(o.head<2>());
+  ASSERT_TRUE(look.has_value());
+  EXPECT_LT((*look - Vec2(2.5, 2.25)).norm(), 0.15);      // the face it showed
+  EXPECT_FALSE(r.ToLookAt(Vec2(2.64, 9.0)).has_value());  // beyond max_range_m
+  const double at = std::atan2(look->y() - o.y(), look->x() - o.x());
+  for (int i = 0; i < 3; ++i) r.AddProfile(o, Cast({chair}, o, at, true), true);
+  const auto found = r.Take();
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "chair");
+  EXPECT_FALSE(r.ToLookAt(o.head<2>()).has_value());  // named: nothing to look at
+}
+
 // Office 101's desk behind its chair, seen from the side: the chair hides part of the desk's
 // face; both are named, each where it is.
 TEST(ObjectRecognition, ADeskBehindAChairIsADeskAndTheChairAChair) {
@@ -142,6 +207,32 @@ TEST(ObjectRecognition, AShelfTallerThanTheHeadsSeeIsAShelfNotAChairOrADesk) {
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].label, "shelf");
   EXPECT_GT(found[0].size_z, 1.3);
+}
+
+// office_201's shelf seen face-on from the room (FIND runs, 2026-12-07: named a partition, its
+// 0.4 m depth unseen): with the CAD wall behind it in the map it stands against the wall, so it
+// is as deep as the gap and a shelf; a partition standing free in the room stays a partition.
+TEST(ObjectRecognition, ATallThingFaceOnWithItsBackToAWallIsAShelf) {
+  const Solid shelf{{0.3, 12.0}, 0.0, 0.4, 2.0, 2.0, false};
+  spott_map::MapDatabase db;
+  spott_map::MapFeature wall =
+      spott_map::MakeSegment("w", spott_map::Segment{Vec2(0, 9.5), Vec2(0, 15)}, "wall", 0.15);
+  wall.source = spott_map::FeatureSource::kCad;
+  ASSERT_TRUE(db.AddFeature(wall));
+  const auto alone = Recognise({shelf}, {{2.3, 12.0}});
+  ASSERT_EQ(alone.size(), 1u);
+  EXPECT_EQ(alone[0].label, "partition");
+  const auto found = Recognise({shelf}, {{2.3, 12.0}}, &db);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].label, "shelf");
+  EXPECT_NEAR(found[0].size_y, 0.4, 0.08);
+  EXPECT_NEAR(found[0].pose.x, 0.3, 0.06);
+  EXPECT_GT(found[0].size_x, 1.5);
+  // The same thing 1.5 m out in the room: nothing behind it within wall_depth_m.
+  const Solid partition{{1.8, 12.0}, 0.0, 0.08, 2.0, 1.6, false};
+  const auto free = Recognise({partition}, {{3.8, 12.0}}, &db);
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_EQ(free[0].label, "partition");
 }
 
 // cim_office's office_201 seen from its door (FIND, 2026-12-06): the shelf's face 3.96 m away,
@@ -207,8 +298,8 @@ TEST(ObjectRecognition, ACandidateSeenTooLittleOrStillGrowingIsNotNamed) {
   RecognitionParameters p;
   spott_tr_plus::controller::ObjectCandidate c;
   for (int i = 0; i < 20; ++i) {  // a 0.5 m face, each cell hit by two profiles
-    c.Hit(Vec2(6.0, 8.0 + 0.025 * i), 1, p.cell_m);
-    c.Hit(Vec2(6.0, 8.0 + 0.025 * i), 2, p.cell_m);
+    c.Hit(Vec2(6.0, 8.0 + 0.025 * i), 1, false, p);
+    c.Hit(Vec2(6.0, 8.0 + 0.025 * i), 2, false, p);
   }
   c.top_m = 0.9;
   c.height_seen_m = 0.9;
@@ -229,7 +320,7 @@ TEST(ObjectRecognition, ACandidateSeenTooLittleOrStillGrowingIsNotNamed) {
   c.views = 5;
   // A profile from a wrong pose adds a line of cells 0.1 m beyond the face's end: alone, it
   // does not make the chair a desk.
-  for (int i = 0; i < 16; ++i) c.Hit(Vec2(6.0, 8.6 + 0.025 * i), 7, p.cell_m);
+  for (int i = 0; i < 16; ++i) c.Hit(Vec2(6.0, 8.6 + 0.025 * i), 7, false, p);
   ASSERT_NE(Classify(c, p, &fp), nullptr);
   EXPECT_EQ(Classify(c, p, &fp)->label, "chair");
   p.min_cell_hits = 1;
@@ -243,8 +334,8 @@ TEST(ObjectRecognition, APartOfADeskIsADeskOnlyBelowAChairsHeight) {
   RecognitionParameters p;
   spott_tr_plus::controller::ObjectCandidate c;
   for (int i = 0; i < 20; ++i) {
-    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 1, p.cell_m);
-    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 2, p.cell_m);
+    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 1, false, p);
+    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 2, false, p);
   }
   c.views = 5;
   c.stable = 5;
@@ -256,8 +347,8 @@ TEST(ObjectRecognition, APartOfADeskIsADeskOnlyBelowAChairsHeight) {
   ASSERT_NE(Classify(c, p, &fp), nullptr);
   EXPECT_EQ(Classify(c, p, &fp)->label, "chair");
   for (int i = 20; i < 36; ++i) {  // 0.9 m of face at 0.9 m: desk_lab_3, the bench
-    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 1, p.cell_m);
-    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 2, p.cell_m);
+    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 1, false, p);
+    c.Hit(Vec2(6.0 + 0.025 * i, 8.0), 2, false, p);
   }
   ASSERT_NE(Classify(c, p, &fp), nullptr);
   EXPECT_EQ(Classify(c, p, &fp)->label, "desk");
@@ -297,6 +388,10 @@ TEST(ObjectRecognition, ParametersOutOfRangeAreNamed) {
   EXPECT_NE(v[0].find("cell_m"), std::string::npos);
   EXPECT_NE(v[1].find("top_jump_m"), std::string::npos);
   EXPECT_NE(v[2].find("min_views"), std::string::npos);
+  p = RecognitionParameters{};
+  p.vertical_block_m = 0.5;  // wider than the gap that makes one object
+  ASSERT_EQ(ValidateParameters(p).size(), 1u);
+  EXPECT_NE(ValidateParameters(p)[0].find("vertical_block_m"), std::string::npos);
 }
 
 }  // namespace

@@ -61,4 +61,20 @@ TEST(PanHeads, InARoomTheHeadsSweepAcrossIt) {
   EXPECT_NEAR(pan[1], -0.8, 1e-9);
 }
 
+TEST(PanHeads, InARoomHeadZeroTurnsToAnObjectRecognitionNeedsWhileTheOtherSweeps) {
+  const spott_map::MapDatabase map = CimOffice();
+  const PtuParameters p;
+  // Office 101 from its middle, facing south: the chair 2 m ahead, a little right.
+  const Pose2 robot{2.64, 4.07, -M_PI / 2};
+  auto pan = PanHeads("room", 2, 2.0, robot, map, p, spott_map::Vec2(2.5, 2.1));
+  EXPECT_NEAR(pan[0], std::atan2(-1.97, -0.14) + M_PI / 2, 1e-9);
+  EXPECT_NEAR(pan[1], -0.8, 1e-9);
+  // Behind the robot: as far as the head turns.
+  pan = PanHeads("room", 2, 2.0, robot, map, p, spott_map::Vec2(2.64, 6.0));
+  EXPECT_NEAR(std::abs(pan[0]), p.max_pan_rad, 1e-9);
+  // In a hallway the doors come first.
+  pan = PanHeads("hallway", 2, 0.0, Pose2{10.0, 8.25, 0.0}, map, p, spott_map::Vec2(10, 6));
+  EXPECT_NEAR(pan[0], std::atan2(1.25, 2.5), 1e-9);
+}
+
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -107,8 +108,14 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
   if (!(p.top_flat_m >= 0 && std::isfinite(p.top_flat_m)))
     v.push_back(Violation("top_flat_m", ">= 0", p.top_flat_m));
   if (p.min_points < 3) v.push_back(Violation("min_points", ">= 3", p.min_points));
+  if (p.min_vertical_points < 3 || p.min_vertical_points > p.min_points)
+    v.push_back(Violation("min_vertical_points", "in [3, min_points]", p.min_vertical_points));
   if (p.min_cell_hits < 1 || p.min_cell_hits > 3)
     v.push_back(Violation("min_cell_hits", "in [1, 3]", p.min_cell_hits));
+  if (!(p.top_join_m >= p.cluster_gap_m && p.top_join_m <= p.max_extent_m))
+    v.push_back(Violation("top_join_m", "in [cluster_gap_m, max_extent_m]", p.top_join_m));
+  if (!(p.vertical_block_m >= p.cell_m && p.vertical_block_m <= p.cluster_gap_m))
+    v.push_back(Violation("vertical_block_m", "in [cell_m, cluster_gap_m]", p.vertical_block_m));
   if (p.min_views < 1) v.push_back(Violation("min_views", ">= 1", p.min_views));
   if (!(p.growth_m > 0 && std::isfinite(p.growth_m)))
     v.push_back(Violation("growth_m", "> 0", p.growth_m));
@@ -120,6 +127,9 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
     v.push_back(Violation("min_arc_rad", "in (0, 2 pi]", p.min_arc_rad));
   if (!(p.max_extent_m > 0 && std::isfinite(p.max_extent_m)))
     v.push_back(Violation("max_extent_m", "> 0", p.max_extent_m));
+  if (p.look_views < 0) v.push_back(Violation("look_views", ">= 0", p.look_views));
+  if (!(p.wall_depth_m >= 0 && p.wall_depth_m <= p.max_extent_m))
+    v.push_back(Violation("wall_depth_m", "in [0, max_extent_m]", p.wall_depth_m));
   return v;
 }
 
@@ -173,13 +183,54 @@ Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParamet
   return fp;
 }
 
+namespace {
+
+// `fp` grown away from `viewer` to the face of a CAD wall parallel behind it (within 5 degrees,
+// across from the footprint's middle) when that face lies within `max_depth` of the footprint's
+// near side: the thing stands with its back to the wall.
+void GrowToWallBehind(Footprint* fp, const Vec2& viewer, const spott_map::MapDatabase& map,
+                      double max_depth) {
+  if (fp->round || max_depth <= 0) return;
+  const Vec2 along(std::cos(fp->yaw), std::sin(fp->yaw));
+  Vec2 away(-along.y(), along.x());
+  if (away.dot(fp->centre - viewer) < 0) away = -away;
+  const Vec2 back = fp->centre + away * (fp->short_m / 2);
+  const double reach = fp->long_m / 2 + max_depth;
+  double gap = std::numeric_limits<double>::infinity();
+  for (const spott_map::MapFeature* f :
+       map.FeaturesIn(spott_map::Box{back, back}.Inflated(reach))) {
+    if (f->source != spott_map::FeatureSource::kCad ||
+        f->type != spott_map::FeatureType::kLineSegment || f->points.size() < 2)
+      continue;
+    const spott_map::Segment wall{f->points[0], f->points[1]};
+    const Vec2 d = wall.Direction();
+    if (std::abs(d.dot(away)) > std::sin(5.0 * M_PI / 180.0)) continue;
+    const double t = (back - wall.a).dot(d);
+    if (t < 0 || t > wall.Length()) continue;
+    const double g = (wall.a - back).dot(away) - f->size_y / 2;
+    if (g >= -0.05 && g + fp->short_m <= max_depth) gap = std::min(gap, std::max(g, 0.0));
+  }
+  if (!std::isfinite(gap)) return;
+  fp->centre += away * (gap / 2);
+  fp->short_m += gap;
+  if (fp->short_m > fp->long_m) {
+    std::swap(fp->short_m, fp->long_m);
+    fp->yaw = spott_map::NormalizeAngle(fp->yaw + M_PI / 2);
+  }
+}
+
+}  // namespace
+
 const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameters& p, Footprint* fp,
-                            bool out_of_view) {
+                            bool out_of_view, const spott_map::MapDatabase* map) {
   if (c.views < p.min_views || (c.stable < p.stable_views && !out_of_view)) return nullptr;
-  const std::vector<Vec2> cells = c.Confirmed(p.min_cell_hits, p.cell_m);
-  if (static_cast<int>(cells.size()) < p.min_points) return nullptr;
+  const std::vector<Vec2> cells = c.Confirmed(p);
+  if (static_cast<int>(cells.size()) < (c.horizontal ? p.min_points : p.min_vertical_points))
+    return nullptr;
   *fp = FitFootprint(cells, p);
   if (fp->long_m > p.max_extent_m) return nullptr;
+  // Only a thing whose top was not seen: a chair beside a wall is no deeper for it.
+  if (map && !c.top_m) GrowToWallBehind(fp, c.viewer, *map, p.wall_depth_m);
   for (const ObjectModel& m : p.models) {
     if (m.round != fp->round) continue;
     if (fp->long_m < m.min_long_m || fp->long_m > m.max_long_m || fp->short_m > m.max_short_m ||
@@ -216,46 +267,79 @@ bool ObjectRecognizer::Known(const Vec2& p,
   return false;
 }
 
-void ObjectCandidate::Hit(const Vec2& p, std::uint64_t profile, double cell_m) {
-  const auto [it, added] = cells.emplace(CellKey(p, cell_m), points.size());
-  if (added) {
-    points.push_back(p);
-    seen_by.push_back({profile, 0, 0});
-    return;
-  }
-  auto& ids = seen_by[it->second];
+namespace {
+
+// Records `profile` among the newest three distinct ones in `ids`.
+void Remember(std::array<std::uint64_t, 3>& ids, std::uint64_t profile) {
   if (std::find(ids.begin(), ids.end(), profile) != ids.end()) return;
-  ids = {profile, ids[0], ids[1]};  // the newest three
+  ids = {profile, ids[0], ids[1]};
 }
 
-std::vector<Vec2> ObjectCandidate::Confirmed(int min_hits, double cell_m) const {
-  std::vector<Vec2> out;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    std::array<std::uint64_t, 27> ids{};
-    std::size_t n = 0;
-    for (int dx = -1; dx <= 1; ++dx) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        const auto it = cells.find(CellKey(points[i] + cell_m * Vec2(dx, dy), cell_m));
-        if (it == cells.end()) continue;
-        for (std::uint64_t id : seen_by[it->second]) {
-          if (id != 0 && std::find(ids.begin(), ids.begin() + n, id) == ids.begin() + n)
-            ids[n++] = id;
-        }
+// The distinct profiles `ids_at` gives for the 3 x 3 grid cells of side `side` around `at`.
+template <typename IdsAt>
+int ProfilesAround(const Vec2& at, double side, IdsAt ids_at) {
+  std::array<std::uint64_t, 27> ids{};
+  std::size_t n = 0;
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      const std::array<std::uint64_t, 3>* seen = ids_at(CellKey(at + side * Vec2(dx, dy), side));
+      if (!seen) continue;
+      for (std::uint64_t id : *seen) {
+        if (id != 0 && std::find(ids.begin(), ids.begin() + n, id) == ids.begin() + n)
+          ids[n++] = id;
       }
     }
-    if (static_cast<int>(n) >= min_hits) out.push_back(points[i]);
+  }
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+void ObjectCandidate::Hit(const Vec2& at, std::uint64_t profile, bool vertical,
+                          const RecognitionParameters& p) {
+  Remember(blocks[CellKey(at, p.vertical_block_m)], profile);
+  const auto [it, added] = cells.emplace(CellKey(at, p.cell_m), points.size());
+  if (added) {
+    points.push_back(at);
+    seen_by.push_back({profile, 0, 0});
+    horizontal_hit.push_back(!vertical);
+    return;
+  }
+  Remember(seen_by[it->second], profile);
+  if (!vertical) horizontal_hit[it->second] = 1;
+}
+
+std::vector<Vec2> ObjectCandidate::Confirmed(const RecognitionParameters& p) const {
+  const auto cell_ids = [this](std::int64_t key) -> const std::array<std::uint64_t, 3>* {
+    const auto it = cells.find(key);
+    return it == cells.end() ? nullptr : &seen_by[it->second];
+  };
+  const auto block_ids = [this](std::int64_t key) -> const std::array<std::uint64_t, 3>* {
+    const auto it = blocks.find(key);
+    return it == blocks.end() ? nullptr : &it->second;
+  };
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const int n = horizontal_hit[i] ? ProfilesAround(points[i], p.cell_m, cell_ids)
+                                    : ProfilesAround(points[i], p.vertical_block_m, block_ids);
+    if (n >= p.min_cell_hits) out.push_back(points[i]);
   }
   return out;
 }
 
-std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
+std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run,
+                                           std::optional<double> top) {
   std::vector<std::size_t> hits;
-  const double gap2 = p_.cluster_gap_m * p_.cluster_gap_m;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const auto& pts = candidates_[i].points;
+    const ObjectCandidate& c = candidates_[i];
+    // A run up a face and over a top at the height of a candidate's top is that object's part
+    // within top_join_m: sparse vertical profiles meet a desk 0.1-0.8 m apart along its face.
+    const bool same_top = top && c.top_m && std::abs(*c.top_m - *top) <= p_.top_flat_m;
+    const double gap = same_top ? p_.top_join_m : p_.cluster_gap_m;
+    const auto& pts = c.points;
     const bool near = std::any_of(run.begin(), run.end(), [&](const Vec2& q) {
       return std::any_of(pts.begin(), pts.end(),
-                         [&](const Vec2& r) { return (q - r).squaredNorm() <= gap2; });
+                         [&](const Vec2& r) { return (q - r).squaredNorm() <= gap * gap; });
     });
     if (near) hits.push_back(i);
   }
@@ -269,7 +353,7 @@ std::size_t ObjectRecognizer::CandidateFor(const std::vector<Vec2>& run) {
     ObjectCandidate& other = candidates_[hits[k]];
     for (std::size_t i = 0; i < other.points.size(); ++i) {
       for (std::uint64_t id : other.seen_by[i]) {
-        if (id != 0) keep.Hit(other.points[i], id, p_.cell_m);
+        if (id != 0) keep.Hit(other.points[i], id, !other.horizontal_hit[i], p_);
       }
     }
     keep.height_seen_m = std::max(keep.height_seen_m, other.height_seen_m);
@@ -345,14 +429,15 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
       run.emplace_back(samples[order[j]].point.head<2>());
       top = std::max(top, samples[order[j]].point.z());
     }
-    ObjectCandidate& c = candidates_[CandidateFor(run)];
-    for (const Vec2& q : run) c.Hit(q, profiles_, p_.cell_m);
-    c.height_seen_m = std::max(c.height_seen_m, top);
     const Vec3& first = samples[order[k]].point;
     const Vec3& last = samples[order[end - 1]].point;
+    const bool top_seen = vertical && end < order.size() && beyond(order[end], last);
+    ObjectCandidate& c =
+        candidates_[CandidateFor(run, top_seen ? std::optional<double>(top) : std::nullopt)];
+    for (const Vec2& q : run) c.Hit(q, profiles_, vertical, p_);
+    c.height_seen_m = std::max(c.height_seen_m, top);
     if (vertical) {
-      if (end < order.size() && beyond(order[end], last))
-        c.top_m = std::max(c.top_m.value_or(0.0), top);
+      if (top_seen) c.top_m = std::max(c.top_m.value_or(0.0), top);
     } else {
       c.horizontal = true;
       if (k > 0 && end < order.size() && beyond(order[k - 1], first) && beyond(order[end], last))
@@ -365,6 +450,7 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
   for (ObjectCandidate& c : candidates_) {
     if (c.last_profile != profiles_) continue;
     ++c.views;
+    if (vertical) ++c.vertical_views;
     const double extent = BoxDiagonal(c.points);
     c.stable = extent > c.extent_m + p_.growth_m ? 0 : c.stable + 1;
     if (c.stable == 0) c.extent_m = extent;
@@ -380,6 +466,25 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
   }
 }
 
+std::optional<Vec2> ObjectRecognizer::ToLookAt(const Vec2& from) const {
+  std::optional<Vec2> best;
+  double nearest = p_.max_range_m;
+  for (const ObjectCandidate& c : candidates_) {
+    if (!c.label.empty() || !c.horizontal || c.top_m || c.vertical_views >= p_.look_views ||
+        static_cast<int>(c.points.size()) < p_.min_points)
+      continue;
+    Vec2 middle = Vec2::Zero();
+    for (const Vec2& q : c.points) middle += q;
+    middle /= static_cast<double>(c.points.size());
+    const double d = (middle - from).norm();
+    if (d < nearest) {
+      nearest = d;
+      best = middle;
+    }
+  }
+  return best;
+}
+
 std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
   std::vector<spott_map::MapFeature> found;
   for (ObjectCandidate& c : candidates_) {
@@ -387,7 +492,7 @@ std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
     Footprint fp;
     const bool out_of_view =
         profiles_ - c.last_profile >= static_cast<std::uint64_t>(p_.quiet_profiles);
-    const ObjectModel* m = Classify(c, p_, &fp, out_of_view);
+    const ObjectModel* m = Classify(c, p_, &fp, out_of_view, db_);
     if (!m) continue;
     c.label = m->label;
     if (!fp.round && fp.short_m < m->depth_m) {
@@ -406,8 +511,8 @@ std::vector<spott_map::MapFeature> ObjectRecognizer::Take() {
     f.size_z = c.top_m.value_or(c.height_seen_m);
     f.attributes["sensor"] = "quadris";
     std::ostringstream how;
-    how << c.views << " profiles, " << c.Confirmed(p_.min_cell_hits, p_.cell_m).size() << " of "
-        << c.points.size() << " cells confirmed" << (c.top_m ? ", top seen" : ", top not seen");
+    how << c.views << " profiles, " << c.Confirmed(p_).size() << " of " << c.points.size()
+        << " cells confirmed" << (c.top_m ? ", top seen" : ", top not seen");
     f.attributes["recognized_from"] = how.str();
     found.push_back(std::move(f));
   }

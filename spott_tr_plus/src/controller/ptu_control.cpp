@@ -50,7 +50,8 @@ std::optional<double> DoorToWatch(const spott_map::Pose2& robot, const spott_map
 
 std::vector<double> PanHeads(const std::string& pattern, std::size_t heads, double now,
                              const std::optional<spott_map::Pose2>& robot,
-                             const spott_map::MapDatabase& map, const PtuParameters& p) {
+                             const spott_map::MapDatabase& map, const PtuParameters& p,
+                             const std::optional<spott_map::Vec2>& look_at) {
   std::vector<double> pan(heads, 0.0);
   for (std::size_t i = 0; i < heads; ++i) {
     const double side = i % 2 == 0 ? 1.0 : -1.0;
@@ -59,6 +60,12 @@ std::vector<double> PanHeads(const std::string& pattern, std::size_t heads, doub
     } else if (pattern == "hallway") {  // ahead
       pan[i] = side * p.hallway_pan_rad;
     }
+  }
+  if (pattern == "room" && heads > 0 && robot && look_at) {
+    const spott_map::Vec2 d = *look_at - robot->Position();
+    const double bearing = spott_map::NormalizeAngle(std::atan2(d.y(), d.x()) - robot->yaw);
+    pan[0] = std::clamp(bearing, -p.max_pan_rad, p.max_pan_rad);
+    return pan;
   }
   if (pattern != "hallway" || heads == 0 || !robot || p.door_watch_m <= 0) return pan;
   const std::optional<double> bearing = DoorToWatch(*robot, map, p.door_watch_m);

@@ -570,8 +570,9 @@ class ControllerNode : public ControllerIo {
     last_heads_s_ = now;
     sensor_msgs::JointState js;
     js.header.stamp = ros::Time::now();
-    const std::vector<double> pan = PanHeads(ptu_pattern_, params_.pan_joints.size(), now,
-                                             core_->pose(), core_->map(), params_.ptu);
+    const std::vector<double> pan =
+        PanHeads(ptu_pattern_, params_.pan_joints.size(), now, core_->pose(), core_->map(),
+                 params_.ptu, core_->ObjectToLookAt());
     // The heads ride on the turret; the pattern's angles are from the base's heading.
     const double turret = core_->turret_target();
     for (std::size_t i = 0; i < params_.pan_joints.size(); ++i) {

@@ -112,8 +112,11 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("recognition/max_range_m", g.max_range_m, "m");
   r.Get("recognition/top_jump_m", g.top_jump_m, "m");
   r.Get("recognition/top_flat_m", g.top_flat_m, "m");
+  r.Get("recognition/top_join_m", g.top_join_m, "m");
   r.Get("recognition/min_points", g.min_points);
+  r.Get("recognition/min_vertical_points", g.min_vertical_points);
   r.Get("recognition/min_cell_hits", g.min_cell_hits);
+  r.Get("recognition/vertical_block_m", g.vertical_block_m, "m");
   r.Get("recognition/min_views", g.min_views);
   r.Get("recognition/growth_m", g.growth_m, "m");
   r.Get("recognition/stable_views", g.stable_views);
@@ -121,6 +124,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("recognition/circle_residual_m", g.circle_residual_m, "m");
   r.Get("recognition/min_arc_rad", g.min_arc_rad, "rad");
   r.Get("recognition/max_extent_m", g.max_extent_m, "m");
+  r.Get("recognition/wall_depth_m", g.wall_depth_m, "m");
+  r.Get("recognition/look_views", g.look_views);
   auto& x = c.reflex;
   r.Get("reflex/speed_mps", x.speed_mps, "m/s");
   r.Get("reflex/turn_rps", x.turn_rps, "rad/s");

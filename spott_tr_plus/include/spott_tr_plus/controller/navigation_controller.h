@@ -273,6 +273,10 @@ class NavigationController {
   const std::string& firing_rule() const { return firing_rule_; }
   const spott_map::MapDatabase& map() const { return db_; }
   const std::optional<Pose2>& pose() const { return pose_; }
+  /// An object recognition needs a head turned to (ObjectRecognizer::ToLookAt), if any.
+  std::optional<Vec2> ObjectToLookAt() const {
+    return pose_ ? recognizer_.ToLookAt(pose_->Position()) : std::nullopt;
+  }
   /// The sensor turret's target (rad from the base's heading): 0 but during a dense sonar scan.
   double turret_target() const { return sonar_scan_.target(); }
   int sonar_scans() const { return sonar_scan_.scans_done(); }

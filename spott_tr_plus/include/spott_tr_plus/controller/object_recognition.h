@@ -79,8 +79,20 @@ struct RecognitionParameters {
   double top_jump_m = 0.15;         ///< The ray above a run this much farther: the top seen (m).
   /// Successive echoes up a vertical profile this close in height lie on a flat top (m).
   double top_flat_m = 0.02;
-  int min_points = 12;     ///< Footprint cells needed (confirmed ones), >= 3.
-  int min_cell_hits = 2;   ///< Profiles that must hit a cell (or a neighbour), in [1, 3].
+  /// A vertical run whose top lies within top_flat_m of an object's top joins it this far
+  /// away (m), in [cluster_gap_m, max_extent_m]: parts of one desk along its face.
+  double top_join_m = 0.8;
+  int min_points = 12;  ///< Footprint cells needed (confirmed ones), >= 3.
+  /// The same for an object only vertical profiles met, in [3, min_points]: each gives one
+  /// line over its face and top, 2-4 cells (a desk passed at 2 m: 13 cells from 7 profiles).
+  int min_vertical_points = 6;
+  int min_cell_hits = 2;  ///< Profiles that must hit a cell (or a neighbour), in [1, 3].
+  /// A cell only vertical profiles hit counts when min_cell_hits profiles hit within the block
+  /// of this side around it or the eight beside it (m), in [cell_m, cluster_gap_m]: a vertical
+  /// profile is one line up a face and over a top, and the heads' sweep puts the next one
+  /// 0.05-0.4 m along the face, never in the same cell (a desk below the heads, seen by vertical
+  /// profiles only, had 25 cells and none confirmed).
+  double vertical_block_m = 0.15;
   int min_views = 3;       ///< Profiles that saw the object, >= 1.
   double growth_m = 0.06;  ///< Extent growth that resets the stability count (m), > 0.
   int stable_views = 2;    ///< Views without growth before a verdict, >= 0.
@@ -90,6 +102,15 @@ struct RecognitionParameters {
   double circle_residual_m = 0.015;  ///< RMS distance from a fitted circle for "round" (m).
   double min_arc_rad = 0.8;          ///< Arc a round object's echoes must span (rad).
   double max_extent_m = 3.5;         ///< Objects larger than this are structure, never named.
+  /// A thing taller than the heads see over whose far side lies this close (m) to a wall of the
+  /// map parallel behind it stands with its back to the wall: its depth reaches the wall (a shelf
+  /// seen face-on shows only its face, as thin as a partition); 0 = never, in [0, max_extent_m].
+  double wall_depth_m = 0.8;
+  /// CONTROL_THE_PTU turns a head to an unnamed object that needs a vertical profile (met at the
+  /// heads' height with its top unseen) until this many vertical profiles met it; 0 = never.
+  /// At 1 Hz the room sweep's vertical profiles lie 20-40 degrees apart as the robot looks
+  /// around: a chair 14 degrees wide was passed by all of them and never named (FIND, seed 2).
+  int look_views = 3;
   std::vector<ObjectModel> models = DefaultObjectModels();
 };
 
@@ -110,19 +131,24 @@ struct ObjectCandidate {
   std::vector<Vec2> points;  ///< Footprint cells' first echoes.
   /// The last three distinct profiles that hit each of them (0: none).
   std::vector<std::array<std::uint64_t, 3>> seen_by;
+  std::vector<char> horizontal_hit;                     ///< A horizontal profile hit the cell.
   std::unordered_map<std::int64_t, std::size_t> cells;  ///< Key on the cell_m grid -> index.
-  /// Records an echo at `p` from `profile` (> 0) on the `cell_m` grid.
-  void Hit(const Vec2& p, std::uint64_t profile, double cell_m);
-  /// The cells that `min_hits` (<= 3) distinct profiles hit, counted over each cell and its
-  /// eight neighbours (a moving robot's profiles scatter a face's echoes by a cell or so). One
-  /// profile placed with a wrong pose adds cells no other confirms: in a FIND run such a line
-  /// made a chair 0.9 m long, so a desk.
-  std::vector<Vec2> Confirmed(int min_hits, double cell_m) const;
+  /// The last three distinct profiles that hit each vertical_block_m block.
+  std::unordered_map<std::int64_t, std::array<std::uint64_t, 3>> blocks;
+  /// Records an echo at `p` from `profile` (> 0) on the `p.cell_m` grid and its block.
+  void Hit(const Vec2& at, std::uint64_t profile, bool vertical, const RecognitionParameters& p);
+  /// The cells that `p.min_cell_hits` (<= 3) distinct profiles hit, counted over each cell and
+  /// its eight neighbours (a moving robot's profiles scatter a face's echoes by a cell or so), or
+  /// for a cell only vertical profiles hit over its block and the eight beside it. One profile
+  /// placed with a wrong pose adds cells no other confirms: in a FIND run such a line made a
+  /// chair 0.9 m long, so a desk.
+  std::vector<Vec2> Confirmed(const RecognitionParameters& p) const;
   double height_seen_m = 0.0;   ///< Highest echo on it (m).
   std::optional<double> top_m;  ///< Height where a ray was seen passing over it (m).
   bool face_whole = false;      ///< A horizontal run with both ends free.
   bool horizontal = false;      ///< A horizontal profile met it.
   int views = 0;
+  int vertical_views = 0;          ///< Vertical profiles among them.
   int stable = 0;                  ///< Views since its extent last grew.
   double extent_m = 0.0;           ///< Diagonal of its bounding box at the last view.
   std::uint64_t last_profile = 0;  ///< The last profile that met it.
@@ -136,9 +162,10 @@ struct ObjectCandidate {
 Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParameters& p);
 
 /// The first model that `c` matches (its footprint in `fp`), nullptr when none does yet (seen
-/// too little, or its extent still growing while `out_of_view` is false).
+/// too little, or its extent still growing while `out_of_view` is false). `map`: its CAD walls
+/// give the depth of a tall thing against one (wall_depth_m).
 const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameters& p, Footprint* fp,
-                            bool out_of_view = false);
+                            bool out_of_view = false, const spott_map::MapDatabase* map = nullptr);
 
 class ObjectRecognizer {
  public:
@@ -154,6 +181,11 @@ class ObjectRecognizer {
   /// them; attribute sensor=quadris).
   std::vector<spott_map::MapFeature> Take();
 
+  /// Where a head should look (RecognitionParameters::look_views): the middle of the echoes of the
+  /// nearest unnamed object within max_range_m of `from` that no vertical profile has yet
+  /// shown the top of; nullopt when none.
+  std::optional<Vec2> ToLookAt(const Vec2& from) const;
+
   /// Drops everything seen (the pose they were placed with was wrong).
   void Forget() { candidates_.clear(); }
 
@@ -163,7 +195,8 @@ class ObjectRecognizer {
   /// `near`: the features around the profile (FeaturesIn once per profile).
   bool Known(const Vec2& p, const std::vector<const spott_map::MapFeature*>& near) const;
   /// The index of the candidate `run` belongs to (merging those it bridges), or of a new one.
-  std::size_t CandidateFor(const std::vector<Vec2>& run);
+  /// `top`: the run is a vertical profile's that saw the object's top at this height.
+  std::size_t CandidateFor(const std::vector<Vec2>& run, std::optional<double> top);
 
   RecognitionParameters p_;
   const spott_map::MapDatabase* db_ = nullptr;

@@ -29,9 +29,11 @@ std::vector<std::string> ValidateParameters(const PtuParameters& p);
 
 /// The pan angle (rad, about the base's z, 0 ahead) of each of `heads` heads (even indices the
 /// left ones, odd the right) for `pattern` ("room", "hallway"; anything else: ahead) at `now`
-/// (s), the robot at `robot` (map frame) in `map`.
+/// (s), the robot at `robot` (map frame) in `map`. In a room, head 0 turns to `look_at` (an
+/// object recognition needs a vertical profile of) while the others sweep.
 std::vector<double> PanHeads(const std::string& pattern, std::size_t heads, double now,
                              const std::optional<spott_map::Pose2>& robot,
-                             const spott_map::MapDatabase& map, const PtuParameters& p);
+                             const spott_map::MapDatabase& map, const PtuParameters& p,
+                             const std::optional<spott_map::Vec2>& look_at = std::nullopt);
 
 }  // namespace spott_tr_plus::controller
