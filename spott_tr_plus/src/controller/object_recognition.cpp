@@ -81,8 +81,8 @@ std::vector<ObjectModel> DefaultObjectModels() {
       {"chair", FeatureType::kGeonCuboid, false, 0.3, 0.75, 0.75, 0.8, 1.05, 0.5},
       // Below a chair's height a part of a desk is a desk (one seen behind a chair, or in
       // passing, shows 0.4-0.7 m of its face); at a chair's height only a longer side tells.
-      {"desk", FeatureType::kGeonCuboid, false, 0.4, 3.2, 1.5, 0.65, 0.8, 0.8},
-      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.8, 0.95, 0.8},
+      {"desk", FeatureType::kGeonCuboid, false, 0.4, 3.2, 1.5, 0.65, 0.8, 0.8, 0.0, true},
+      {"desk", FeatureType::kGeonCuboid, false, 0.75, 3.2, 1.5, 0.8, 0.95, 0.8, 0.0, true},
       // Taller than the heads see over: a thin one is a partition, a deeper one a shelf.
       // (the lab's 0.08 m partition measured 0.09-0.2 m thick from the moving robot).
       {"partition", FeatureType::kGeonCuboid, false, 1.0, 3.5, 0.25, 1.2, 0.0, 0.0},
@@ -133,25 +133,12 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
   return v;
 }
 
-Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParameters& p) {
+namespace {
+
+// The rectangle around `points` whose sides they lie closest to; `*rms` their RMS distance from
+// its nearest side.
+Footprint FitRectangle(const std::vector<Vec2>& points, double* rms) {
   Footprint fp;
-  if (points.empty()) return fp;
-  if (points.size() >= 5) {
-    Vec2 c;
-    double r = 0.0;
-    if (FitCircle(points, &c, &r) && 2 * r <= p.max_extent_m) {
-      double sq = 0.0;
-      for (const Vec2& q : points) sq += std::pow((q - c).norm() - r, 2);
-      const double rms = std::sqrt(sq / static_cast<double>(points.size()));
-      if (rms <= p.circle_residual_m && ArcSpan(points, c) >= p.min_arc_rad) {
-        fp.round = true;
-        fp.centre = c;
-        fp.radius_m = r;
-        fp.long_m = fp.short_m = 2 * r;
-        return fp;
-      }
-    }
-  }
   // The rectangle over directions of a quarter turn (its sides repeat after).
   double best = 1e300;
   for (int k = 0; k < 90; ++k) {
@@ -166,20 +153,47 @@ Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParamet
     }
     // The faces seen lie on the rectangle's sides: the direction whose box leaves the echoes
     // closest to its sides (an L of two faces has the same area boxed along its diagonal).
-    double off = 0.0;
+    double off = 0.0, sq = 0.0;
     for (const Vec2& q : points) {
       const double du = q.dot(u), dw = q.dot(w);
-      off += std::min({du - lo_u, hi_u - du, dw - lo_w, hi_w - dw});
+      const double d = std::min({du - lo_u, hi_u - du, dw - lo_w, hi_w - dw});
+      off += d;
+      sq += d * d;
     }
     const double su = hi_u - lo_u, sw = hi_w - lo_w;
     const double cost = off + 1e-6 * su * sw;  // ties (a straight face): the smaller box
     if (cost >= best) continue;
     best = cost;
+    *rms = std::sqrt(sq / static_cast<double>(points.size()));
     fp.centre = u * (lo_u + hi_u) / 2 + w * (lo_w + hi_w) / 2;
     fp.long_m = std::max(su, sw);
     fp.short_m = std::min(su, sw);
     fp.yaw = su >= sw ? a : spott_map::NormalizeAngle(a + M_PI / 2);
   }
+  return fp;
+}
+
+}  // namespace
+
+Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParameters& p) {
+  if (points.empty()) return Footprint{};
+  double rectangle_rms = 0.0;
+  const Footprint rectangle = FitRectangle(points, &rectangle_rms);
+  Vec2 c;
+  double r = 0.0;
+  if (points.size() < 5 || !FitCircle(points, &c, &r) || 2 * r > p.max_extent_m) return rectangle;
+  double sq = 0.0;
+  for (const Vec2& q : points) sq += std::pow((q - c).norm() - r, 2);
+  const double rms = std::sqrt(sq / static_cast<double>(points.size()));
+  // Round only when the arc fits better than the rectangle's sides: a chair seen across its
+  // corner (two short faces) lies on an arc within a centimetre too (chair_lab_2, a cylinder).
+  if (rms > p.circle_residual_m || rms >= rectangle_rms || ArcSpan(points, c) < p.min_arc_rad)
+    return rectangle;
+  Footprint fp;
+  fp.round = true;
+  fp.centre = c;
+  fp.radius_m = r;
+  fp.long_m = fp.short_m = 2 * r;
   return fp;
 }
 
@@ -238,7 +252,7 @@ const ObjectModel* Classify(const ObjectCandidate& c, const RecognitionParameter
       continue;
     // A face met at the heads' height but never seen whole may go on beyond the profiles'
     // field; of the things taller than the heads see over, sides are lower bounds anyway.
-    if (m.max_height_m > 0 && c.horizontal && !c.face_whole) continue;
+    if (m.max_height_m > 0 && c.horizontal && !c.face_whole && !m.open_long) continue;
     if (m.max_height_m > 0) {
       if (!c.top_m || *c.top_m < m.min_height_m || *c.top_m > m.max_height_m) continue;
     } else if (c.height_seen_m < m.min_height_m) {

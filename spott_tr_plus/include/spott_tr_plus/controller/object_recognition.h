@@ -65,6 +65,11 @@ struct ObjectModel {
   /// The short side seen must reach this (m): a shelf shows some depth, a wall seen 0.2 m off
   /// (the estimate's error) shows none.
   double min_short_m = 0.0;
+  /// Its long side is open up to max_long_m: a face met at the heads' height that no profile saw
+  /// whole (it may go on beyond the field) still names it. A chair must be seen whole (a part of
+  /// a desk's face is chair-sized); a lab bench's 2 m face is wider than the field closer than
+  /// 2.8 m and was never seen whole in 18 views.
+  bool open_long = false;
 };
 
 /// The furniture of SPOTT's lab and offices and the geons of [42], in the order tried.
@@ -158,7 +163,8 @@ struct ObjectCandidate {
 
 /// The rectangle around `points` whose sides they lie closest to (1-degree steps; the smaller
 /// when several fit, as a single straight face does), or the circle they lie on when it
-/// fits within `p.circle_residual_m` over at least `p.min_arc_rad`.
+/// fits within `p.circle_residual_m` over at least `p.min_arc_rad` and better than the
+/// rectangle's sides.
 Footprint FitFootprint(const std::vector<Vec2>& points, const RecognitionParameters& p);
 
 /// The first model that `c` matches (its footprint in `fp`), nullptr when none does yet (seen
