@@ -7,6 +7,7 @@
 
 #include "profile_caster.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -141,14 +142,63 @@ TEST(ObjectRecognition, AChairNoVerticalProfileMetIsLookedAtAndThenNamed) {
   EXPECT_TRUE(r.Take().empty());
   const auto look = r.ToLookAt(o.head<2>());
   ASSERT_TRUE(look.has_value());
-  EXPECT_LT((*look - Vec2(2.5, 2.25)).norm(), 0.15);      // the face it showed
+  EXPECT_LT((look->at - Vec2(2.5, 2.25)).norm(), 0.15);   // the face it showed
   EXPECT_FALSE(r.ToLookAt(Vec2(2.64, 9.0)).has_value());  // beyond max_range_m
-  const double at = std::atan2(look->y() - o.y(), look->x() - o.x());
+  EXPECT_FALSE(look->height.has_value());                 // level: up its face
+  const double at = std::atan2(look->at.y() - o.y(), look->at.x() - o.x());
   for (int i = 0; i < 3; ++i) r.AddProfile(o, Cast({chair}, o, at, true), true);
   const auto found = r.Take();
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].label, "chair");
   EXPECT_FALSE(r.ToLookAt(o.head<2>()).has_value());  // named: nothing to look at
+}
+
+// Office 101 from its middle as FIND looks around (2026-12-07): the robot turns once on the spot
+// at 0.45 rad/s and then stands, the heads sweeping at QUADRIS's 1 Hz, head 0 turned and tilted
+// where ToLookAt says (the node's PanHeads and TiltToward). The desk stands behind its chair,
+// below the heads: one 360-degree turn put a single vertical line on it (one footprint cell at
+// 2.7 m), and it was named nothing in three FIND runs of 300 s.
+std::vector<spott_map::MapFeature> LookAroundInOffice101(const RecognitionParameters& p) {
+  const Solid desk{{2.5, 1.0}, 0.0, 1.6, 0.8, 0.75, false};
+  const Solid chair{{2.5, 2.0}, 0.0, 0.5, 0.5, 0.9, false};
+  ObjectRecognizer r{p};
+  const Vec3 o(2.6, 4.1, kHeadZ);
+  std::vector<spott_map::MapFeature> all;
+  for (int t = 0; t < 40; ++t) {
+    const double heading = -M_PI / 2 + 0.45 * std::min(t, 14);
+    const double sweep = 0.8 * std::sin(2 * M_PI * t / 8.0);
+    double pan0 = sweep, tilt0 = 0.0;
+    if (const auto look = r.ToLookAt(o.head<2>())) {
+      const double bearing = std::atan2(look->at.y() - o.y(), look->at.x() - o.x()) - heading;
+      pan0 = std::clamp(spott_map::NormalizeAngle(bearing), -1.5, 1.5);
+      if (look->height) tilt0 = std::atan2(kHeadZ - *look->height, (look->at - o.head<2>()).norm());
+    }
+    r.AddProfile(o, Cast({desk, chair}, o, heading + pan0, false, tilt0), false);
+    r.AddProfile(o, Cast({desk, chair}, o, heading + pan0, true, tilt0), true);
+    r.AddProfile(o, Cast({desk, chair}, o, heading - sweep, false), false);
+    r.AddProfile(o, Cast({desk, chair}, o, heading - sweep, true), true);
+    for (auto& f : r.Take()) all.push_back(std::move(f));
+  }
+  return all;
+}
+
+TEST(ObjectRecognition, ADeskBehindItsChairIsLookedAtTiltedDownAndNamed) {
+  RecognitionParameters p;
+  const auto found = LookAroundInOffice101(p);
+  int desks = 0, chairs = 0;
+  for (const auto& f : found) {
+    chairs += f.label == "chair";
+    if (f.label != "desk") continue;
+    ++desks;
+    EXPECT_LT(std::abs(f.pose.y - 1.0), 0.45) << "on the desk, not on its chair";
+    EXPECT_NEAR(f.size_z, 0.75, 0.03);
+  }
+  EXPECT_EQ(chairs, 1);
+  EXPECT_GE(desks, 1);
+  p.look_views = 0;  // no head turned: the sweep alone
+  int swept_desks = 0;
+  for (const auto& f : LookAroundInOffice101(p)) swept_desks += f.label == "desk";
+  EXPECT_EQ(swept_desks, 0);
 }
 
 // Office 101's desk behind its chair, seen from the side: the chair hides part of the desk's

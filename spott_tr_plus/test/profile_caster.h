@@ -59,12 +59,13 @@ inline std::optional<double> Hit(const Solid& s, const Vec3& o, const Vec3& d) {
   return t0;
 }
 
+// `tilt`: the head pitched down (rad), as robot_sim's heads.
 inline std::vector<ProfileSample> Cast(const std::vector<Solid>& scene, const Vec3& o, double pan,
-                                       bool vertical) {
+                                       bool vertical, double tilt = 0.0) {
   std::vector<ProfileSample> out;
   for (int i = 0; i < kSamples; ++i) {
     const double a = -kField / 2 + kField * i / (kSamples - 1);
-    const double az = vertical ? pan : pan + a, el = vertical ? a : 0.0;
+    const double az = vertical ? pan : pan + a, el = (vertical ? a : 0.0) - tilt;
     const Vec3 d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
     double t = kMaxRange;
     if (d.z() < 0) t = std::min(t, -o.z() / d.z());  // the floor

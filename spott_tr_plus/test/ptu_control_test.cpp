@@ -77,4 +77,15 @@ TEST(PanHeads, InARoomHeadZeroTurnsToAnObjectRecognitionNeedsWhileTheOtherSweeps
   EXPECT_NEAR(pan[0], std::atan2(1.25, 2.5), 1e-9);
 }
 
+TEST(TiltToward, AHeadTiltsDownOntoAFaceBelowItAndNeverUp) {
+  const PtuParameters p;  // heads at 0.85 m
+  const Pose2 robot{2.6, 4.1, 0.0};
+  EXPECT_NEAR(spott_tr_plus::controller::TiltToward(robot, spott_map::Vec2(2.6, 1.4), 0.6, p),
+              std::atan2(0.25, 2.7), 1e-9);
+  EXPECT_EQ(spott_tr_plus::controller::TiltToward(robot, spott_map::Vec2(4.6, 4.1), 1.2, p), 0.0);
+  EXPECT_NEAR(spott_tr_plus::controller::TiltToward(robot, spott_map::Vec2(2.7, 4.1), 0.0, p),
+              p.max_tilt_rad, 1e-9);
+  EXPECT_EQ(spott_tr_plus::controller::TiltToward(robot, robot.Position(), 2.0, p), 0.0);
+}
+
 }  // namespace

@@ -128,6 +128,8 @@ std::vector<std::string> ValidateParameters(const RecognitionParameters& p) {
   if (!(p.max_extent_m > 0 && std::isfinite(p.max_extent_m)))
     v.push_back(Violation("max_extent_m", "> 0", p.max_extent_m));
   if (p.look_views < 0) v.push_back(Violation("look_views", ">= 0", p.look_views));
+  if (!(p.look_below_top_m > 0 && p.look_below_top_m <= 1))
+    v.push_back(Violation("look_below_top_m", "in (0, 1]", p.look_below_top_m));
   if (!(p.wall_depth_m >= 0 && p.wall_depth_m <= p.max_extent_m))
     v.push_back(Violation("wall_depth_m", "in [0, max_extent_m]", p.wall_depth_m));
   return v;
@@ -480,21 +482,27 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
   }
 }
 
-std::optional<Vec2> ObjectRecognizer::ToLookAt(const Vec2& from) const {
-  std::optional<Vec2> best;
+std::optional<LookTarget> ObjectRecognizer::ToLookAt(const Vec2& from) const {
+  std::optional<LookTarget> best;
   double nearest = p_.max_range_m;
   for (const ObjectCandidate& c : candidates_) {
-    if (!c.label.empty() || !c.horizontal || c.top_m || c.vertical_views >= p_.look_views ||
-        static_cast<int>(c.points.size()) < p_.min_points)
-      continue;
+    if (!c.label.empty() || profiles_ - c.last_profile > kLookProfiles) continue;
+    // Met at the heads' height, its top unseen: a vertical profile up its face.
+    const bool top = c.horizontal && !c.top_m && c.vertical_views < p_.look_views &&
+                     static_cast<int>(c.points.size()) >= p_.min_points;
+    // Its top seen (a desk's, below the heads: a level profile passes over it, and a vertical one
+    // gives one footprint cell at 2.7 m): a horizontal profile tilted down onto its face, the
+    // same place each time so that its cells are confirmed.
+    const bool below = c.top_m && c.vertical_views < 2 * p_.look_views;
+    if (!top && !below) continue;
     Vec2 middle = Vec2::Zero();
     for (const Vec2& q : c.points) middle += q;
     middle /= static_cast<double>(c.points.size());
     const double d = (middle - from).norm();
-    if (d < nearest) {
-      nearest = d;
-      best = middle;
-    }
+    if (d >= nearest) continue;
+    nearest = d;
+    best = LookTarget{middle,
+                      below ? std::optional<double>(*c.top_m - p_.look_below_top_m) : std::nullopt};
   }
   return best;
 }

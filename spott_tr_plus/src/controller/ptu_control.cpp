@@ -19,6 +19,10 @@ std::vector<std::string> ValidateParameters(const PtuParameters& p) {
     v.push_back(Violation("door_watch_m", ">= 0", p.door_watch_m));
   if (!(p.max_pan_rad > 0 && p.max_pan_rad <= M_PI))
     v.push_back(Violation("max_pan_rad", "in (0, pi]", p.max_pan_rad));
+  if (!(p.head_height_m > 0 && std::isfinite(p.head_height_m)))
+    v.push_back(Violation("head_height_m", "> 0", p.head_height_m));
+  if (!(p.max_tilt_rad >= 0 && p.max_tilt_rad < M_PI / 2))
+    v.push_back(Violation("max_tilt_rad", "in [0, pi/2)", p.max_tilt_rad));
   return v;
 }
 
@@ -47,6 +51,12 @@ std::optional<double> DoorToWatch(const spott_map::Pose2& robot, const spott_map
 }
 
 }  // namespace
+
+double TiltToward(const spott_map::Pose2& robot, const spott_map::Vec2& at, double height,
+                  const PtuParameters& p) {
+  const double tilt = std::atan2(p.head_height_m - height, (at - robot.Position()).norm());
+  return std::isfinite(tilt) ? std::clamp(tilt, 0.0, p.max_tilt_rad) : 0.0;
+}
 
 std::vector<double> PanHeads(const std::string& pattern, std::size_t heads, double now,
                              const std::optional<spott_map::Pose2>& robot,

@@ -570,16 +570,21 @@ class ControllerNode : public ControllerIo {
     last_heads_s_ = now;
     sensor_msgs::JointState js;
     js.header.stamp = ros::Time::now();
-    const std::vector<double> pan =
-        PanHeads(ptu_pattern_, params_.pan_joints.size(), now, core_->pose(), core_->map(),
-                 params_.ptu, core_->ObjectToLookAt());
+    const auto look = core_->ObjectToLookAt();
+    const std::optional<Vec2> look_at = look ? std::optional<Vec2>(look->at) : std::nullopt;
+    const std::vector<double> pan = PanHeads(ptu_pattern_, params_.pan_joints.size(), now,
+                                             core_->pose(), core_->map(), params_.ptu, look_at);
+    // Head 0 tilts down onto a face below the heads that recognition looks at (a desk's).
+    const double tilt0 = look && look->height && core_->pose() && ptu_pattern_ == "room"
+                             ? TiltToward(*core_->pose(), look->at, *look->height, params_.ptu)
+                             : 0.0;
     // The heads ride on the turret; the pattern's angles are from the base's heading.
     const double turret = core_->turret_target();
     for (std::size_t i = 0; i < params_.pan_joints.size(); ++i) {
       js.name.push_back(params_.pan_joints[i]);
       js.position.push_back(pan[i] - turret);
       js.name.push_back(params_.tilt_joints[i]);
-      js.position.push_back(0.0);
+      js.position.push_back(i == 0 ? tilt0 : 0.0);
     }
     heads_pub_.publish(js);
   }

@@ -52,6 +52,8 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("ptu/hallway_pan_rad", p.ptu.hallway_pan_rad, "rad");
   r.Get("ptu/door_watch_m", p.ptu.door_watch_m, "m");
   r.Get("ptu/max_pan_rad", p.ptu.max_pan_rad, "rad");
+  r.Get("ptu/head_height_m", p.ptu.head_height_m, "m");
+  r.Get("ptu/max_tilt_rad", p.ptu.max_tilt_rad, "rad");
   r.Get("ptu/min_height_m", p.ptu_min_height_m, "m");
   r.Get("ptu/max_height_m", p.ptu_max_height_m, "m");
   r.Get("marker_height_m", p.marker_height_m, "m");
@@ -126,6 +128,7 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("recognition/max_extent_m", g.max_extent_m, "m");
   r.Get("recognition/wall_depth_m", g.wall_depth_m, "m");
   r.Get("recognition/look_views", g.look_views);
+  r.Get("recognition/look_below_top_m", g.look_below_top_m, "m");
   auto& x = c.reflex;
   r.Get("reflex/speed_mps", x.speed_mps, "m/s");
   r.Get("reflex/turn_rps", x.turn_rps, "rad/s");

@@ -274,7 +274,7 @@ class NavigationController {
   const spott_map::MapDatabase& map() const { return db_; }
   const std::optional<Pose2>& pose() const { return pose_; }
   /// An object recognition needs a head turned to (ObjectRecognizer::ToLookAt), if any.
-  std::optional<Vec2> ObjectToLookAt() const {
+  std::optional<LookTarget> ObjectToLookAt() const {
     return pose_ ? recognizer_.ToLookAt(pose_->Position()) : std::nullopt;
   }
   /// The sensor turret's target (rad from the base's heading): 0 but during a dense sonar scan.

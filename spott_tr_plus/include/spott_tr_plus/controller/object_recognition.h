@@ -72,6 +72,13 @@ struct ObjectModel {
   bool open_long = false;
 };
 
+/// Where recognition wants a head to look (ObjectRecognizer::ToLookAt).
+struct LookTarget {
+  Vec2 at{0.0, 0.0};  ///< The place (map).
+  /// Tilt the head down to meet the object's face at this height (m); level when none.
+  std::optional<double> height;
+};
+
 /// The furniture of SPOTT's lab and offices and the geons of [42], in the order tried.
 std::vector<ObjectModel> DefaultObjectModels();
 
@@ -116,6 +123,11 @@ struct RecognitionParameters {
   /// At 1 Hz the room sweep's vertical profiles lie 20-40 degrees apart as the robot looks
   /// around: a chair 14 degrees wide was passed by all of them and never named (FIND, seed 2).
   int look_views = 3;
+  /// ... and, tilted down, meets this far below its top (m, in (0, 1]) an unnamed object whose top
+  /// was seen, until 2 x look_views vertical profiles met it: the heads are above a desk, so a
+  /// level profile never meets it, and a vertical one gives one footprint cell at 2.7 m (one
+  /// 360-degree look-around at 1 Hz put one line on office 101's desk behind its chair).
+  double look_below_top_m = 0.15;
   std::vector<ObjectModel> models = DefaultObjectModels();
 };
 
@@ -187,10 +199,11 @@ class ObjectRecognizer {
   /// them; attribute sensor=quadris).
   std::vector<spott_map::MapFeature> Take();
 
-  /// Where a head should look (RecognitionParameters::look_views): the middle of the echoes of the
-  /// nearest unnamed object within max_range_m of `from` that no vertical profile has yet
-  /// shown the top of; nullopt when none.
-  std::optional<Vec2> ToLookAt(const Vec2& from) const;
+  /// Where a head should look (RecognitionParameters::look_views): at the middle of the echoes
+  /// of the nearest unnamed object within max_range_m of `from`, met in the last kLookProfiles
+  /// profiles, that no vertical profile has shown the top of (level), or whose top was seen
+  /// (tilted down, look_below_top_m); nullopt when none.
+  std::optional<LookTarget> ToLookAt(const Vec2& from) const;
 
   /// Drops everything seen (the pose they were placed with was wrong).
   void Forget() { candidates_.clear(); }
@@ -203,6 +216,10 @@ class ObjectRecognizer {
   /// The index of the candidate `run` belongs to (merging those it bridges), or of a new one.
   /// `top`: the run is a vertical profile's that saw the object's top at this height.
   std::size_t CandidateFor(const std::vector<Vec2>& run, std::optional<double> top);
+
+  /// An object no profile met for this many (6 s of two heads' profiles in both orientations)
+  /// is no longer looked at: the looks at it miss.
+  static constexpr std::uint64_t kLookProfiles = 24;
 
   RecognitionParameters p_;
   const spott_map::MapDatabase* db_ = nullptr;

@@ -23,6 +23,9 @@ struct PtuParameters {
   /// robot is looked at by the head on its side; 0 = never.
   double door_watch_m = 3.0;
   double max_pan_rad = 1.5;  ///< The heads' pan range (+-, rad).
+  double head_height_m =
+      0.85;                   ///< The heads' height above the floor (m), > 0 (the Nomad's QUADRIS).
+  double max_tilt_rad = 0.5;  ///< The most a head tilts down (rad), in [0, pi/2).
 };
 
 std::vector<std::string> ValidateParameters(const PtuParameters& p);
@@ -31,6 +34,11 @@ std::vector<std::string> ValidateParameters(const PtuParameters& p);
 /// left ones, odd the right) for `pattern` ("room", "hallway"; anything else: ahead) at `now`
 /// (s), the robot at `robot` (map frame) in `map`. In a room, head 0 turns to `look_at` (an
 /// object recognition needs a vertical profile of) while the others sweep.
+/// The tilt (rad, positive down, within [0, max_tilt_rad]) that points a head of the robot at
+/// `robot` at `height` (m) above the floor at `at` (map).
+double TiltToward(const spott_map::Pose2& robot, const spott_map::Vec2& at, double height,
+                  const PtuParameters& p);
+
 std::vector<double> PanHeads(const std::string& pattern, std::size_t heads, double now,
                              const std::optional<spott_map::Pose2>& robot,
                              const spott_map::MapDatabase& map, const PtuParameters& p,
