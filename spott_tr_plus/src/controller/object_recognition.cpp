@@ -448,8 +448,11 @@ void ObjectRecognizer::AddProfile(const Vec3& origin, const std::vector<ProfileS
     const Vec3& first = samples[order[k]].point;
     const Vec3& last = samples[order[end - 1]].point;
     const bool top_seen = vertical && end < order.size() && beyond(order[end], last);
+    // Only a top below the heads is one the rays landed on (a desk's); a chair and a drum beside
+    // it, both 0.9 m high, are two objects.
+    const bool top_below = top_seen && top < origin.z() - p_.top_flat_m;
     ObjectCandidate& c =
-        candidates_[CandidateFor(run, top_seen ? std::optional<double>(top) : std::nullopt)];
+        candidates_[CandidateFor(run, top_below ? std::optional<double>(top) : std::nullopt)];
     for (const Vec2& q : run) c.Hit(q, profiles_, vertical, p_);
     c.height_seen_m = std::max(c.height_seen_m, top);
     if (vertical) {

@@ -91,8 +91,8 @@ struct RecognitionParameters {
   double top_jump_m = 0.15;         ///< The ray above a run this much farther: the top seen (m).
   /// Successive echoes up a vertical profile this close in height lie on a flat top (m).
   double top_flat_m = 0.02;
-  /// A vertical run whose top lies within top_flat_m of an object's top joins it this far
-  /// away (m), in [cluster_gap_m, max_extent_m]: parts of one desk along its face.
+  /// A vertical run over a top below the heads within top_flat_m of an object's top joins it
+  /// this far away (m), in [cluster_gap_m, max_extent_m]: parts of one desk along its face.
   double top_join_m = 0.8;
   int min_points = 12;  ///< Footprint cells needed (confirmed ones), >= 3.
   /// The same for an object only vertical profiles met, in [3, min_points]: each gives one
@@ -214,7 +214,8 @@ class ObjectRecognizer {
   /// `near`: the features around the profile (FeaturesIn once per profile).
   bool Known(const Vec2& p, const std::vector<const spott_map::MapFeature*>& near) const;
   /// The index of the candidate `run` belongs to (merging those it bridges), or of a new one.
-  /// `top`: the run is a vertical profile's that saw the object's top at this height.
+  /// `top`: the run is a vertical profile's that went over the object's top, below the heads, at
+  /// this height.
   std::size_t CandidateFor(const std::vector<Vec2>& run, std::optional<double> top);
 
   /// An object no profile met for this many (6 s of two heads' profiles in both orientations)
