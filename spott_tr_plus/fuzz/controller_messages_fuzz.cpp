@@ -115,7 +115,8 @@ void Profile(FuzzedDataProvider& in) {
   recognizer.SetMap(&db);
   for (int k = 0; k < 12; ++k) recognizer.AddProfile(head_origin, *samples, k % 2 == 1);
   if (const auto look = recognizer.ToLookAt(robot.Position()))
-    Check(look->allFinite(), "a head sent to look at a place that is not finite");
+    Check(look->at.allFinite() && (!look->height || std::isfinite(*look->height)),
+          "a head sent to look at a place that is not finite");
   for (const spott_map::MapFeature& f : recognizer.Take()) {
     Check(!f.label.empty() && std::isfinite(f.pose.x) && std::isfinite(f.pose.y) &&
               std::isfinite(f.size_x) && std::isfinite(f.size_z),
