@@ -259,7 +259,9 @@ TEST(ObjectRecognition, AChairAndADrumOfOneHeightSideBySideAreTwo) {
   for (const auto& f : r.Take()) {
     chairs += f.label == "chair";
     cylinders += f.label == "cylinder";
-    if (f.label == "chair") EXPECT_LT(f.size_x, 0.75);
+    if (f.label == "chair") {
+      EXPECT_LT(f.size_x, 0.75);
+    }
   }
   EXPECT_EQ(chairs, 1);
   EXPECT_EQ(cylinders, 1);

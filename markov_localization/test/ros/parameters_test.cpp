@@ -8,6 +8,13 @@
 namespace markov_localization {
 namespace {
 
+// Whether one of the reader's errors names `text`.
+bool Names(const std::vector<std::string>& errors, const std::string& text) {
+  for (const auto& e : errors)
+    if (e.find(text) != std::string::npos) return true;
+  return false;
+}
+
 std::vector<std::string> Read(const XmlRpc::XmlRpcValue& values, NodeParameters* p) {
   spott_ros::ParameterReader r(values);
   ReadParameters(r, *p);
@@ -54,16 +61,11 @@ TEST(SensedMapParameters, DefaultsAreAcceptedAndBadValuesRefusedByName) {
   v["gate"] = 0.3;  // misspelt gate_m
   const auto errors = ReadSensed(v, &p);
   ASSERT_EQ(errors.size(), 5u);
-  const auto has = [&](const std::string& text) {
-    for (const auto& e : errors)
-      if (e.find(text) != std::string::npos) return true;
-    return false;
-  };
-  EXPECT_TRUE(has("~period_s must be > 0"));
-  EXPECT_TRUE(has("~max_correction_deg must be finite"));
-  EXPECT_TRUE(has("~initial_pose"));
-  EXPECT_TRUE(has("~odom_frame must differ from ~map_frame"));
-  EXPECT_TRUE(has("~gate"));
+  EXPECT_TRUE(Names(errors, "~period_s must be > 0"));
+  EXPECT_TRUE(Names(errors, "~max_correction_deg must be finite"));
+  EXPECT_TRUE(Names(errors, "~initial_pose"));
+  EXPECT_TRUE(Names(errors, "~odom_frame must differ from ~map_frame"));
+  EXPECT_TRUE(Names(errors, "~gate"));
 }
 
 TEST(SensedMapParameters, TheStartAndTheTrackersValuesArrive) {
@@ -95,14 +97,9 @@ TEST(SensedMapParameters, TheWallLatticesValuesArriveAndBadOnesAreNamed) {
   bad["profile_min_height_m"] = 3.0;       // above profile_max_height_m
   const auto errors = ReadSensed(bad, &p);
   ASSERT_EQ(errors.size(), 3u);
-  const auto has = [&](const std::string& text) {
-    for (const auto& e : errors)
-      if (e.find(text) != std::string::npos) return true;
-    return false;
-  };
-  EXPECT_TRUE(has("~wall_lattice/gate_deg must be > 0 and below 45 degrees"));
-  EXPECT_TRUE(has("wall_lattice/gate_m"));
-  EXPECT_TRUE(has("profile_max_height_m"));
+  EXPECT_TRUE(Names(errors, "~wall_lattice/gate_deg must be > 0 and below 45 degrees"));
+  EXPECT_TRUE(Names(errors, "wall_lattice/gate_m"));
+  EXPECT_TRUE(Names(errors, "profile_max_height_m"));
 }
 
 }  // namespace
