@@ -132,11 +132,11 @@ SensedMapFix SensedMapTracker::Localize(double now_s, const Pose2& odom_base_now
   // The correction: x, y, heading (rad) about the pivot.
   Eigen::Vector3d delta = Eigen::Vector3d::Zero();
   const auto moved = [&](const spott_map::SonarEcho& e) {
-    const double c = std::cos(delta.z()), s = std::sin(delta.z());
-    const Vec2 v = e.from - pivot;
+    const Pose2 p = spott_map::Compose(TurnAbout(pivot, delta.z(), delta.head<2>()),
+                                       Pose2{e.from.x(), e.from.y(), e.axis});
     spott_map::SonarEcho m = e;
-    m.from = pivot + Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + delta.head<2>();
-    m.axis = e.axis + delta.z();
+    m.from = p.Position();
+    m.axis = p.yaw;
     return m;
   };
   // The wall that explains an echo best: its predicted echo (the foot of the perpendicular in
