@@ -81,6 +81,7 @@ MapModel MapModel::FromDatabase(const spott_map::World& world, const spott_map::
   for (int iy = 0; iy < height; ++iy)
     for (int ix = 0; ix < width; ++ix)
       outside[map.Index(ix, iy)] = world.RoomContaining(map.CellCentre(ix, iy)) == nullptr;
+  map.ComputeFineClearance();
   map.ComputeStates(params.state_clearance_m, outside);
   if (map.num_state_cells_ == 0)
     throw std::invalid_argument("world '" + world.name + "' leaves no free cell for the robot");
@@ -171,6 +172,7 @@ MapModel MapModel::FromOccupancy(const OccupancyMap& grid, const MapModelParamet
       const int v = grid.at(i, j);
       excluded[map.Index(ix, iy)] = !(v >= 0 && v < params.free_threshold);
     }
+  map.ComputeFineClearance();
   map.ComputeStates(params.state_clearance_m, excluded);
   if (map.num_state_cells_ == 0)
     throw std::invalid_argument("occupancy grid leaves no free cell for the robot");
@@ -272,9 +274,52 @@ double MapModel::RayCast(const Vec2& from, double angle_rad, double max_range_m)
   return h.hit ? h.range_m : max_range_m;
 }
 
+void MapModel::ComputeFineClearance() {
+  // Two chamfer passes with unit steps to all 8 neighbours: exact for the Chebyshev distance.
+  const int w = fine_width_, h = fine_height_;
+  std::vector<int> d(static_cast<std::size_t>(w) * h);
+  for (int fy = 0; fy < h; ++fy)
+    for (int fx = 0; fx < w; ++fx) {
+      const std::size_t i = static_cast<std::size_t>(fy) * w + fx;
+      // Beyond the edge a beam ends (at max range): as near as an obstacle for the skip.
+      d[i] = fine_occupied_[i] ? 0 : std::min({fx + 1, fy + 1, w - fx, h - fy});
+    }
+  for (int fy = 0; fy < h; ++fy)
+    for (int fx = 0; fx < w; ++fx) {
+      const std::size_t i = static_cast<std::size_t>(fy) * w + fx;
+      int v = d[i];
+      if (fx > 0) v = std::min(v, d[i - 1] + 1);
+      if (fy > 0) {
+        v = std::min(v, d[i - w] + 1);
+        if (fx > 0) v = std::min(v, d[i - w - 1] + 1);
+        if (fx + 1 < w) v = std::min(v, d[i - w + 1] + 1);
+      }
+      d[i] = v;
+    }
+  for (int fy = h - 1; fy >= 0; --fy)
+    for (int fx = w - 1; fx >= 0; --fx) {
+      const std::size_t i = static_cast<std::size_t>(fy) * w + fx;
+      int v = d[i];
+      if (fx + 1 < w) v = std::min(v, d[i + 1] + 1);
+      if (fy + 1 < h) {
+        v = std::min(v, d[i + w] + 1);
+        if (fx + 1 < w) v = std::min(v, d[i + w + 1] + 1);
+        if (fx > 0) v = std::min(v, d[i + w - 1] + 1);
+      }
+      d[i] = v;
+    }
+  fine_clearance_.resize(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i)
+    fine_clearance_[i] = static_cast<std::uint8_t>(std::min(d[i], 255));
+}
+
 MapModel::Hit MapModel::RayCastHit(const Vec2& from, double angle_rad, double max_range_m) const {
+  return RayCastHit(from, Vec2(std::cos(angle_rad), std::sin(angle_rad)), max_range_m);
+}
+
+MapModel::Hit MapModel::RayCastHit(const Vec2& from, const Vec2& dir, double max_range_m) const {
   // Amanatides-Woo traversal of the cells the beam crosses.
-  const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
+  const double dx = dir.x(), dy = dir.y();
   const double fres = resolution_ / subdivision_;
   double fx = (from.x() - origin_.x()) / fres;
   double fy = (from.y() - origin_.y()) / fres;
@@ -292,22 +337,42 @@ MapModel::Hit MapModel::RayCastHit(const Vec2& from, double angle_rad, double ma
   double t_max_x = dx > 0 ? (ix + 1 - fx) * t_delta_x : (dx < 0 ? (fx - ix) * t_delta_x : inf);
   double t_max_y = dy > 0 ? (iy + 1 - fy) * t_delta_y : (dy < 0 ? (fy - iy) * t_delta_y : inf);
   const double max_cells = max_range_m / fres;
+  // The box of cells known free and inside: around the last cell looked up, as far as its
+  // clearance c (every cell within c - 1 is free). The beam jumps to the first cell outside it
+  // in one step: a box of one cell is one step of the traversal, a larger one counts the
+  // steps along each axis (multiplied out rather than added up, so at an exact corner the
+  // side taken may differ from the step-by-step sum's rounding: both cells touch the beam).
+  int c = fine_clearance_[static_cast<std::size_t>(iy) * fine_width_ + ix];
+  const double adx = std::abs(dx), ady = std::abs(dy);
   while (true) {
+    // The box is centred on the current cell: c steps along an axis leave it. The beam's t at
+    // the leaving step of each axis:
+    const double tx = dx != 0.0 ? t_max_x + (c - 1) * t_delta_x : inf;
+    const double ty = dy != 0.0 ? t_max_y + (c - 1) * t_delta_y : inf;
     double t;
     bool x_face;
-    if (t_max_x < t_max_y) {
-      t = t_max_x;
-      t_max_x += t_delta_x;
-      ix += step_x;
+    if (tx < ty) {  // x leaves first, after the y steps at t <= tx (at most c - 1)
+      const int ky =
+          t_max_y <= tx ? std::min(c - 1, static_cast<int>((tx - t_max_y) * ady) + 1) : 0;
+      ix += c * step_x;
+      iy += ky * step_y;
+      t = tx;
+      t_max_x = tx + t_delta_x;
+      if (ky > 0) t_max_y += ky * t_delta_y;  // (0 x inf along an axis)
       x_face = true;
-    } else {
-      t = t_max_y;
-      t_max_y += t_delta_y;
-      iy += step_y;
+    } else {  // y leaves first (a tie goes to y, as in the step-by-step traversal)
+      const int kx =
+          t_max_x < ty ? std::min(c - 1, static_cast<int>(std::ceil((ty - t_max_x) * adx))) : 0;
+      iy += c * step_y;
+      ix += kx * step_x;
+      t = ty;
+      t_max_y = ty + t_delta_y;
+      if (kx > 0) t_max_x += kx * t_delta_x;
       x_face = false;
     }
     if (t >= max_cells || !inside(ix, iy)) return miss;
-    if (FineOccupied(ix, iy)) {
+    c = fine_clearance_[static_cast<std::size_t>(iy) * fine_width_ + ix];
+    if (c == 0) {
       const double exit = std::min(t_max_x, t_max_y);  // leaving the cell hit
       return Hit{t * fres, surface_inside_cells_ ? 0.5 * (exit - t) * fres : 0.0, true, x_face};
     }

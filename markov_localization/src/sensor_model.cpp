@@ -56,28 +56,26 @@ std::vector<double> SonarRingAngles(int count) {
 
 namespace {
 
-// The echo of one ray: the first surface if it is met within the critical angle; otherwise the
-// pulse reflects and the echo is the whole path to a second surface that scatters (a corner), or
-// none (max range).
-double EchoRange(const MapModel& map, const Vec2& from, double angle, double max_range,
-                 double critical_angle, bool with_depth = false, double* first_leg = nullptr) {
-  const MapModel::Hit first = map.RayCastHit(from, angle, max_range);
+// The echo of one ray along unit `dir`: the first surface if it is met within the critical
+// angle (`cos_critical`: its cosine); otherwise the pulse reflects and the echo is the whole
+// path to a second surface that scatters (a corner), or none (max range).
+double EchoRange(const MapModel& map, const Vec2& from, const Vec2& dir, double max_range,
+                 double cos_critical, bool with_depth = false, double* first_leg = nullptr) {
+  const MapModel::Hit first = map.RayCastHit(from, dir, max_range);
   if (!first.hit) return max_range;
   if (first_leg) *first_leg = first.range_m;
-  const double cos_critical = std::cos(critical_angle) - 1e-9;
-  const double dx = std::cos(angle), dy = std::sin(angle);
+  const double dx = dir.x(), dy = dir.y();
   if ((first.x_face ? std::abs(dx) : std::abs(dy)) >= cos_critical)
     return std::min(max_range, first.range_m + (with_depth ? first.depth_m : 0.0));
   const double left = max_range - first.range_m;
   if (left <= 0.0) return max_range;
   // Reflect off the face, starting just before it (still in free space).
   const double back = std::max(0.0, first.range_m - 1e-6);
-  const Vec2 at = from + back * Vec2(dx, dy);
-  const double reflected = first.x_face ? std::atan2(dy, -dx) : std::atan2(-dy, dx);
+  const Vec2 at = from + back * dir;
+  const Vec2 reflected = first.x_face ? Vec2(-dx, dy) : Vec2(dx, -dy);
   const MapModel::Hit second = map.RayCastHit(at, reflected, left);
   if (!second.hit) return max_range;
-  const double rx = std::cos(reflected), ry = std::sin(reflected);
-  if ((second.x_face ? std::abs(rx) : std::abs(ry)) < cos_critical) return max_range;
+  if ((second.x_face ? std::abs(dx) : std::abs(dy)) < cos_critical) return max_range;
   return std::min(max_range, first.range_m + second.range_m + (with_depth ? second.depth_m : 0.0));
 }
 
@@ -124,6 +122,7 @@ SensorModel::SensorModel(const MapModel& map, int num_headings, const SensorMode
     for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i];
     throw std::invalid_argument(out.str());
   }
+  cos_critical_ = std::cos(params.critical_angle_rad) - 1e-9;
   const double heading_res = 2.0 * M_PI / num_headings;
   for (double a : params.beam_angles_rad) {
     int off = static_cast<int>(std::lround(a / heading_res)) % num_headings;
@@ -302,11 +301,10 @@ SensorModel::SensorModel(const SensorModel& previous, const MapModel& previous_m
 std::pair<std::uint8_t, std::uint8_t> SensorModel::CastRay(const MapModel& map, int ix, int iy,
                                                            int d) const {
   const double angle = d * 2.0 * M_PI / num_headings_;
-  const Vec2 offset(params_.sensor_offset_m * std::cos(angle),
-                    params_.sensor_offset_m * std::sin(angle));
+  const Vec2 dir(std::cos(angle), std::sin(angle));
   double first = params_.max_range_m;
-  const double range = EchoRange(map, map.CellCentre(ix, iy) + offset, angle, params_.max_range_m,
-                                 params_.critical_angle_rad, /*with_depth=*/false, &first);
+  const double range = EchoRange(map, map.CellCentre(ix, iy) + params_.sensor_offset_m * dir, dir,
+                                 params_.max_range_m, CosCritical(), /*with_depth=*/false, &first);
   // Bins up to 254 (ValidateParameters), so kNoEcho is no bin.
   const std::uint8_t first_bin =
       first >= params_.max_range_m ? kNoEcho : static_cast<std::uint8_t>(RangeBin(first));
@@ -385,16 +383,18 @@ double SensorModel::ExpectedRange(const MapModel& map, const Pose2& pose, int b)
   const double heading_res = 2.0 * M_PI / num_headings_;
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   double best = params_.max_range_m;
+  const double cos_critical = CosCritical();
   for (int k = -half_cone_; k <= half_cone_; ++k) {
     const double a = axis + k * heading_res;
+    const Vec2 dir(std::cos(a), std::sin(a));
     Vec2 from;
     if (!params_.beam_origins_m.empty()) {
       const Vec2& o = params_.beam_origins_m[b];
       from = pose.Position() + Vec2(c * o.x() - s * o.y(), s * o.x() + c * o.y());
     } else {
-      from = pose.Position() + params_.sensor_offset_m * Vec2(std::cos(a), std::sin(a));
+      from = pose.Position() + params_.sensor_offset_m * dir;
     }
-    best = std::min(best, EchoRange(map, from, a, params_.max_range_m, params_.critical_angle_rad,
+    best = std::min(best, EchoRange(map, from, dir, params_.max_range_m, cos_critical,
                                     /*with_depth=*/true));
   }
   return best;

@@ -117,6 +117,9 @@ class MapModel {
     bool x_face = false;
   };
   Hit RayCastHit(const Vec2& from, double angle_rad, double max_range_m) const;
+  /// The same along the unit vector `dir` (a caller that has the direction's cosine and sine
+  /// already, or a reflected beam, needs no trigonometry).
+  Hit RayCastHit(const Vec2& from, const Vec2& dir, double max_range_m) const;
 
   /// Both maps have the same cells and the same beam raster (a map database's maps of one world).
   bool SameRaster(const MapModel& other) const;
@@ -126,6 +129,7 @@ class MapModel {
 
  private:
   void ComputeStates(double clearance_m, const std::vector<std::uint8_t>& unknown);
+  void ComputeFineClearance();
   bool FineOccupied(int fx, int fy) const {
     return fine_occupied_[static_cast<std::size_t>(fy) * fine_width_ + fx] != 0;
   }
@@ -143,6 +147,11 @@ class MapModel {
   int fine_width_ = 0;
   int fine_height_ = 0;
   std::vector<std::uint8_t> fine_occupied_;
+  // Per fine cell, the Chebyshev distance (fine cells, up to 255) to the nearest obstacle cell
+  // or the raster's edge; 0 on obstacles. A beam in a cell of clearance c crosses only free
+  // cells while it stays within c - 1 cells of it: the cast skips their lookups (issue 14:
+  // the pose refinement's casts were most of a sonar update's CPU).
+  std::vector<std::uint8_t> fine_clearance_;
 };
 
 }  // namespace markov_localization

@@ -126,6 +126,8 @@ class SensorModel {
   static constexpr std::uint8_t kNoEcho = 255;  ///< first_: the first leg met nothing.
   /// The ray from cell (ix, iy) in heading bin d: its expected bin and its first leg's bin.
   std::pair<std::uint8_t, std::uint8_t> CastRay(const MapModel& map, int ix, int iy, int d) const;
+  /// The cosine of the critical angle, a hair below (an incidence exactly at it reflects).
+  double CosCritical() const { return cos_critical_; }
   /// table_ from the parameters.
   void ComputeTable();
   /// average_, expected_log_ and ratio_ from table_ and the expected bins of `map`'s states.
@@ -137,6 +139,7 @@ class SensorModel {
   std::size_t num_cells_ = 0;
   std::vector<int> beam_offsets_;
   int half_cone_ = 0;                   // rays each side of a beam's axis (heading bins)
+  double cos_critical_ = 0.0;           // CosCritical()
   std::vector<double> along_m_;         // [beam]: added to a reading (origin behind the table's)
   std::vector<std::ptrdiff_t> shift_;   // [beam][direction]: cells to the origin's cell
   std::size_t pad_ = 0;                 // max-range cells before and after the tables
