@@ -17,6 +17,9 @@ std::vector<std::string> ValidateParameters(const LostDetectorParameters& p) {
   if (!(p.certainty_drop_ratio >= lost_ratio && p.certainty_drop_ratio < 1.0))
     errors.push_back("certainty_drop_ratio must be in [lost_ratio, 1)");
   if (!(p.hold_scans >= 1)) errors.push_back("hold_scans must be >= 1");
+  if (!(p.without_short_lost_ratio > 0.0 && p.without_short_lost_ratio <= 1.0))
+    errors.push_back("without_short_lost_ratio must be in (0, 1]");
+  if (!(p.short_beams_min_others >= 1)) errors.push_back("short_beams_min_others must be >= 1");
   if (!(p.relocalization_mass > 0.0 && p.relocalization_mass < 1.0))
     errors.push_back("relocalization_mass must be in (0, 1)");
   return errors;
@@ -49,11 +52,10 @@ bool LostDetector::OnCertainty(double certainty, double threshold) {
   return true;
 }
 
-bool LostDetector::Update(double log_likelihood_per_beam, double collapse_per_beam) {
+bool LostDetector::Update(double log_likelihood_per_beam, double without_short_per_beam) {
   if (!params_.enabled || !std::isfinite(log_likelihood_per_beam)) return false;
   const double r = std::exp(log_likelihood_per_beam);
-  const double scan = std::isfinite(collapse_per_beam) ? std::exp(collapse_per_beam) : r;
-  const bool collapsed = scans_since_reset_ > 0 && scan < params_.scan_lost_ratio * slow_;
+  const bool collapsed = scans_since_reset_ > 0 && r < params_.scan_lost_ratio * slow_;
   if (scans_since_reset_ == 0) {
     fast_ = slow_ = r;
   } else {
@@ -63,11 +65,15 @@ bool LostDetector::Update(double log_likelihood_per_beam, double collapse_per_be
   ++scans_since_reset_;
   if (scans_since_reset_ <= params_.hold_scans) return false;
   if (!collapsed && fast_ >= params_.lost_ratio * slow_) return false;
+  // The beams an unmapped object cannot explain (it only shortens readings) fit: not lost.
+  if (std::isfinite(without_short_per_beam) &&
+      std::exp(without_short_per_beam) >= params_.without_short_lost_ratio * slow_)
+    return false;
   // Lost. The averages are kept: if the relocalization does not restore the usual fit the
   // detector fires again after the hold, while a lasting change of scene (clutter) is absorbed
   // by the slow average.
-  reason_ = collapsed ? Describe("one scan's fit collapsed", scan)
-                      : Describe("the scans' fit fell", fast_);
+  reason_ =
+      collapsed ? Describe("one scan's fit collapsed", r) : Describe("the scans' fit fell", fast_);
   scans_since_reset_ = 1;
   return true;
 }

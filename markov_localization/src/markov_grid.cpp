@@ -583,10 +583,9 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
       // nothing to judge: the update below returns at once
     } else if (params_.lost.surprise && position_known) {
       stats.surprise_per_beam = surprise_of(stats.beam_used);
-      // Unexpectedly short beams the update still uses (more than the cap, unconfirmed) are
-      // left out of the single-scan collapse while they are no more than the other beams: an
-      // object the map lacks can only shorten a reading (LostDetectorParameters::
-      // collapse_ignores_short_beams).
+      // The surprise without the unexpectedly short beams the update still uses (more than the
+      // cap, unconfirmed), while enough other beams remain: an object the map lacks can only
+      // shorten a reading (LostDetectorParameters::judge_without_short_beams).
       std::vector<std::uint8_t> expected = stats.beam_used;
       int short_beams = 0, other_beams = 0;
       for (std::size_t i = 0; i < beams.size(); ++i) {
@@ -596,9 +595,9 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
         else
           ++other_beams;
       }
-      if (params_.lost.collapse_ignores_short_beams && short_beams > 0 &&
-          other_beams >= short_beams) {
-        stats.collapse_surprise_per_beam = surprise_of(expected);
+      if (params_.lost.judge_without_short_beams && short_beams > 0 &&
+          other_beams >= params_.lost.short_beams_min_others) {
+        stats.surprise_without_short_per_beam = surprise_of(expected);
       }
     } else {
       stats.surprise_per_beam = std::numeric_limits<double>::quiet_NaN();
@@ -689,8 +688,8 @@ SensorUpdateStats MarkovGrid::SensorUpdateWith(const std::vector<SensorReading>&
   }
   // The detector's input: the surprise when asked for (NaN while it cannot be computed: the
   // detector then waits), else the predictive fit.
-  lost_ = detector_.Update(params_.lost.surprise ? surprise : stats.log_likelihood_per_beam,
-                           stats.collapse_surprise_per_beam);
+  lost_ = params_.lost.surprise ? detector_.Update(surprise, stats.surprise_without_short_per_beam)
+                                : detector_.Update(stats.log_likelihood_per_beam);
   if (lost_) {
     lost_reason_ = detector_.reason();
     MixUniform(params_.lost.relocalization_mass);

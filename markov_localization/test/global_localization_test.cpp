@@ -3,6 +3,8 @@
 // symmetry. A coarser grid than the default (25 cm, 5 degrees) keeps the test fast.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "test_helpers.h"
 
 namespace markov_localization {
@@ -228,10 +230,13 @@ struct TwelveSonars : Bonn {
   }
 };
 
-int FirstLostScan(double confirm_ratio, std::vector<SensorUpdateStats>* unexpected_stats) {
+int FirstLostScan(double confirm_ratio, std::vector<SensorUpdateStats>* unexpected_stats,
+                  bool judge_without_short_beams = true, int short_beams_min_others = 3) {
   TwelveSonars ring;
   MarkovGridParameters params = ring.GridParams(true);
   params.distance_filter_confirm_ratio = confirm_ratio;
+  params.lost.judge_without_short_beams = judge_without_short_beams;
+  params.lost.short_beams_min_others = short_beams_min_others;
   MarkovGrid grid(ring.map, *ring.sensor, params);
   std::mt19937 rng(5);
   const Pose2 pose{17.5, 5.0, -M_PI / 2};
@@ -254,9 +259,27 @@ TEST(LostDetector, AWallTheMapLacksIsLeftOutWhenTheOtherBeamsConfirmThePose) {
   ASSERT_EQ(stats.size(), 30u);
   EXPECT_TRUE(stats.front().distance_filter_confirmed);
   EXPECT_EQ(stats.front().beams_filtered, 7) << "every short beam left out, beyond the cap of 3";
-  // Without the confirmation (the rule before): the whole misfit is judged and the detector
-  // fires although the pose is right.
-  EXPECT_GE(FirstLostScan(0.0, nullptr), 0);
+  // Without the confirmation and judging the short beams too (the rules before 2026-12-05):
+  // the whole misfit is judged and the detector fires although the pose is right.
+  EXPECT_GE(FirstLostScan(0.0, nullptr, /*judge_without_short_beams=*/false), 0);
+}
+
+// Without the confirmation the update keeps the 7 short beams and the whole scan misfits, but
+// the 5 other beams fit, so the lost detector's check without the short ones
+// (lost.judge_without_short_beams) keeps it quiet at the wall. (The update itself takes the
+// short beams then and the belief drifts towards the unmapped wall until the other beams stop
+// fitting: the detector fires some 20 scans later, rightly.) With fewer other beams than
+// short_beams_min_others, or without the check, it fires at the first scan.
+TEST(LostDetector, ADetectionNeedsTheBeamsOtherThanTheShortOnesToMisfitToo) {
+  std::vector<SensorUpdateStats> stats;
+  const int first = FirstLostScan(0.0, &stats);
+  EXPECT_TRUE(first == -1 || first >= 10) << "said lost at scan " << first << " by the wall";
+  ASSERT_FALSE(stats.empty());
+  EXPECT_EQ(stats.front().beams_filtered, 0) << "the update kept the short beams";
+  EXPECT_TRUE(std::isfinite(stats.front().surprise_without_short_per_beam));
+  EXPECT_GT(stats.front().surprise_without_short_per_beam, stats.front().surprise_per_beam);
+  EXPECT_EQ(FirstLostScan(0.0, nullptr, true, /*short_beams_min_others=*/6), 0);
+  EXPECT_EQ(FirstLostScan(0.0, nullptr, /*judge_without_short_beams=*/false), 0);
 }
 
 }  // namespace

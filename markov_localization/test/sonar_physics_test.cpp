@@ -121,23 +121,31 @@ TEST(LostDetector, SteadyFitNeverFiresADropDoes) {
   EXPECT_TRUE(d.Update(-2.0));
 }
 
-// The single-scan collapse judges the value it is given for it (the scan without its
-// unexpectedly short beams, MarkovGrid), the averages the whole scan.
-TEST(LostDetector, TheCollapseJudgesTheScanWithoutItsShortBeamsWhenGiven) {
+// A detection (the averages or the collapse) stands only if the scan without its unexpectedly
+// short beams misfits too (below without_short_lost_ratio x the slow average); not given (NaN):
+// the whole scan decides.
+TEST(LostDetector, ADetectionNeedsTheScanWithoutItsShortBeamsToMisfitToo) {
   LostDetector d(LostDetectorParameters{});
   for (int i = 0; i < 50; ++i) d.Update(1.0);
   // The whole scan at e^-2 = 0.05 of the usual, the beams without the short ones at 0.7 x: no
-  // collapse, and one such scan does not bring the fast average below lost_ratio.
+  // collapse, though the averages see the whole scan.
   EXPECT_FALSE(d.Update(-2.0, 1.0 + std::log(0.7)));
   EXPECT_LT(d.fast(), 0.6 * d.slow()) << "the averages see the whole scan";
   for (int i = 0; i < 10; ++i) d.Update(1.0);
-  // The beams without the short ones collapse too: lost, and the reason gives their fit.
-  EXPECT_TRUE(d.Update(-2.0, -1.5));
-  EXPECT_NE(d.reason().find("one scan's fit collapsed (per-beam fit 0.223"), std::string::npos)
+  // Without the short ones at 0.1 x (below 0.15): lost, the reason gives the whole scan's fit.
+  EXPECT_TRUE(d.Update(-2.0, 1.0 + std::log(0.1)));
+  EXPECT_NE(d.reason().find("one scan's fit collapsed (per-beam fit 0.135"), std::string::npos)
       << d.reason();
   for (int i = 0; i < 50; ++i) d.Update(1.0);
-  // Not given (NaN): the whole scan is judged.
   EXPECT_TRUE(d.Update(-2.0, std::numeric_limits<double>::quiet_NaN()));
+  // The averages: scans at 0.2 x (no collapse) bring the fast one below lost_ratio x slow at
+  // the fourth (SteadyFitNeverFiresADropDoes); the beams without the short ones fit as usual:
+  // not lost. Then they stop fitting: lost.
+  LostDetector a(LostDetectorParameters{});
+  for (int i = 0; i < 50; ++i) a.Update(1.0);
+  for (int i = 0; i < 4; ++i) EXPECT_FALSE(a.Update(1.0 + std::log(0.2), 1.0)) << "scan " << i;
+  EXPECT_LT(a.fast(), 0.3 * a.slow());
+  EXPECT_TRUE(a.Update(1.0 + std::log(0.2), 1.0 + std::log(0.05)));
 }
 
 TEST(LostDetector, ACertaintyDropWhileTheFitDropsIsLost) {
@@ -185,11 +193,15 @@ TEST(LostDetector, InvalidParametersAreNamed) {
   p.slow_rate = 0.9;  // not below fast_rate
   p.lost_ratio = 1.5;
   p.relocalization_mass = 0.0;
+  p.short_beams_min_others = 0;
+  p.without_short_lost_ratio = 0.0;
   const auto errors = ValidateParameters(p);
-  ASSERT_EQ(errors.size(), 3u);
+  ASSERT_EQ(errors.size(), 5u);
   EXPECT_NE(errors[0].find("slow_rate"), std::string::npos);
   EXPECT_NE(errors[1].find("lost_ratio"), std::string::npos);
-  EXPECT_NE(errors[2].find("relocalization_mass"), std::string::npos);
+  EXPECT_NE(errors[2].find("without_short_lost_ratio"), std::string::npos);
+  EXPECT_NE(errors[3].find("short_beams_min_others"), std::string::npos);
+  EXPECT_NE(errors[4].find("relocalization_mass"), std::string::npos);
   MarkovGridParameters g;
   g.lost.relocalization_mass = 0.005;  // below threshold_fraction: eq. (4) would skip it
   const auto grid_errors = ValidateParameters(g);

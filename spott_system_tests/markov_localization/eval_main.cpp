@@ -17,8 +17,8 @@
 //   --kidnap-deg D (70)  --kidnap-shift M (0)  --settle S (30)  --on-lost uniform|keep
 //   --route lab (tracking in cim_office: across the laboratory, past its unmapped partition,
 //   crate and drum, to the meeting room and back: the B-12 demo's third task)
-//   --collapse-short-beams (the single-scan collapse judges unexpectedly short beams too, as
-//   before 2026-12-05)
+//   --judge-short-beams (a detection needs no check without the unexpectedly short beams, as
+//   before 2026-12-05)  --short-beams-min-others N (3)
 //   --world FILE  --picture OUT.png (fig2: the first multi-modal belief after 10 m)
 //   --verbose (each active choice on stderr)  --trace (each go-to step)
 // Prints markdown tables; the header lines give the settings and the load average.
@@ -154,7 +154,7 @@ int Usage(const char* argv0) {
                " [--settle S] [--world FILE] [--calibrate] [--full-update] [--clearance M] "
                "[--on-lost uniform|keep] [--critical-angle RAD] [--lost-detector on|off] "
                "[--lost-ratio R] [--scan-lost-ratio R] [--certainty-drop-ratio R] "
-               "[--collapse-short-beams] "
+               "[--judge-short-beams] [--short-beams-min-others N] "
                "[--distance-filter-max-fraction F] [--distance-filter-confirm-ratio R] [--picture "
                "OUT.png] [--verbose]\n";
   return 2;
@@ -220,14 +220,15 @@ void PrintHeader(const Options& o, const ev::Models& m, const std::string& world
   std::printf(
       "# motion gate: update_min_d %.2f m, update_min_a %.1f deg, standing interval %.1f s; ray "
       "cast subdivision %d; lost detector lost_ratio %.2f scan_lost_ratio %.2f "
-      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d, collapse %s short beams; distance "
+      "certainty_drop_ratio %.2f rates %.2f / %.3f hold %d, %s; distance "
       "filter max fraction %.2f, confirm ratio %.2f\n",
       m.settings.gate.update_min_d_m, m.settings.gate.update_min_a_rad / kDeg,
       m.settings.gate.standing_interval_s, m.settings.ray_cast_subdivision,
       m.grid_params.lost.lost_ratio, m.grid_params.lost.scan_lost_ratio,
       m.grid_params.lost.certainty_drop_ratio, m.grid_params.lost.fast_rate,
       m.grid_params.lost.slow_rate, m.grid_params.lost.hold_scans,
-      m.grid_params.lost.collapse_ignores_short_beams ? "without" : "with",
+      m.grid_params.lost.judge_without_short_beams ? "detections checked without short beams"
+                                                   : "short beams judged",
       m.grid_params.distance_filter_max_fraction, m.grid_params.distance_filter_confirm_ratio);
   std::printf("# sonar model: cone %.2f rad, critical angle %.2f rad; lost detector %s\n",
               m.sensor_params.beam_width_rad, m.sensor_params.critical_angle_rad,
@@ -877,8 +878,10 @@ int main(int argc, char** argv) {
         o.lost.scan_lost_ratio = std::stod(next());
       else if (a == "--certainty-drop-ratio")
         o.lost.certainty_drop_ratio = std::stod(next());
-      else if (a == "--collapse-short-beams")  // judged: the single-scan collapse sees them
-        o.lost.collapse_ignores_short_beams = false;
+      else if (a == "--judge-short-beams")  // the lost detector sees them
+        o.lost.judge_without_short_beams = false;
+      else if (a == "--short-beams-min-others")
+        o.lost.short_beams_min_others = std::stoi(next());
       else if (a == "--distance-filter-max-fraction")
         o.distance_filter_max_fraction = std::stod(next());
       else if (a == "--distance-filter-confirm-ratio")

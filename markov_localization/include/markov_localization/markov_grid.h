@@ -96,10 +96,9 @@ struct SensorUpdateStats {
   double log_likelihood_per_beam = 0.0;
   /// The scan's mean surprise per beam at the most likely state (nats; NaN when not computed).
   double surprise_per_beam = 0.0;
-  /// The same without the unexpectedly short beams the update kept, when the lost detector's
-  /// single-scan collapse judges it (LostDetectorParameters::collapse_ignores_short_beams);
-  /// NaN otherwise.
-  double collapse_surprise_per_beam = std::numeric_limits<double>::quiet_NaN();
+  /// The same without the unexpectedly short beams the update kept, when the lost detector
+  /// checks it (LostDetectorParameters::judge_without_short_beams); NaN otherwise.
+  double surprise_without_short_per_beam = std::numeric_limits<double>::quiet_NaN();
   /// The scan said the robot is lost: relocalization_mass of uniform probability was mixed in
   /// (the lost detector), or the belief was reset to uniform (nothing fitted any more).
   bool lost_detected = false;

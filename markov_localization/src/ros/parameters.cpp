@@ -133,7 +133,9 @@ void ReadParameters(spott_ros::ParameterReader& r, NodeParameters& p) {
   r.Get("lost/slow_rate", lost.slow_rate);
   r.Get("lost/lost_ratio", lost.lost_ratio);
   r.Get("lost/scan_lost_ratio", lost.scan_lost_ratio);
-  r.Get("lost/collapse_ignores_short_beams", lost.collapse_ignores_short_beams);
+  r.Get("lost/judge_without_short_beams", lost.judge_without_short_beams);
+  r.Get("lost/without_short_lost_ratio", lost.without_short_lost_ratio);
+  r.Get("lost/short_beams_min_others", lost.short_beams_min_others);
   r.Get("lost/certainty_drop_ratio", lost.certainty_drop_ratio);
   r.Get("lost/hold_scans", lost.hold_scans);
   r.Get("lost/relocalization_mass", lost.relocalization_mass);
