@@ -36,7 +36,9 @@ def draw(kind, rng):
         return {'time': round(rng.uniform(20, 60), 1), 'kind': 'kidnap',
                 'pose': [0, 0, round(turn, 3)], 'relative': True}
     if kind == 'door':  # the lab's east door closes while the robot heads for it (task 2)
-        return {'time': round(rng.uniform(125, 150), 1), 'kind': 'door', 'door': 'd_lab_e',
+        # Task 1 ends at 105-107 s and task 2 takes 16-20 s (campaign of 2026-12-07): drawn at
+        # 125-150 s the door closed after the tasks in 2 of 3 seeds.
+        return {'time': round(rng.uniform(106, 114), 1), 'kind': 'door', 'door': 'd_lab_e',
                 'state': 'closed'}
     if kind == 'sonar_dropout':
         return {'time': round(rng.uniform(20, 60), 1), 'kind': 'sensor', 'sensor': 'sonar',
