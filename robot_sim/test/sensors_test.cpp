@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "robot_sim/range_sensors.h"
+#include "robot_sim/robot_spec.h"
 #include "test_world.h"
 
 namespace robot_sim {
@@ -92,6 +93,43 @@ TEST_F(SensorTest, AConeWithRowsHearsACrateBelowTheRing) {
   EXPECT_GT(
       EchoRange(world_, cone, TransducerPose{Vector3d(5.05, 3.0, 0.65), 0.0}, nullptr, nullptr),
       4.0);
+}
+
+// A door jamb's face is as wide as the wall is thick (0.15 m): 2 m away it spans 4.3 degrees of
+// the 30-degree cone. A real cone is continuous and hears it wherever it lies in the cone; a fan
+// of rays hears it only where a ray falls on it. Every shipped robot's sonar must hear it at every
+// aim that keeps it inside the cone (rays 5 degrees apart did not: the localization, whose model
+// samples the cone every 2 degrees, was pulled along cim_office's hallway by an open door).
+TEST_F(SensorTest, EveryShippedSonarHearsAJambFaceAnywhereInItsCone) {
+  Solid post;
+  post.id = "jamb";
+  post.pose = {5.0, 3.0, 0.0};
+  post.size_x = 0.15;
+  post.size_y = 0.15;
+  post.height = 2.0;
+  ASSERT_TRUE(world_.AddObstacle(post, nullptr));
+  const TransducerPose origin = At(4.925 - 2.0, 3.0, 0.0);  // 2 m from the face
+  // Aims whose cone still holds the post; nothing else lies within the sonars' range there.
+  auto deafest_aim = [&](const RangeRingSpec& ring) {
+    int missed = 0;
+    for (double deg = -10.0; deg <= 10.0; deg += 0.1) {
+      TransducerPose t = origin;
+      t.yaw = deg * M_PI / 180;
+      missed += EchoRange(world_, ring, t, nullptr, nullptr) > 2.1;
+    }
+    return missed;
+  };
+  for (const std::string name : {"b12", "b21", "hilare", "nomad200"}) {
+    auto spec = LoadRobotSpec(testing::PackageFile("config/robots/" + name + ".yaml"),
+                              testing::PackageFile("urdf/" + name + ".urdf"));
+    ASSERT_TRUE(spec.ok()) << name;
+    const RangeRingSpec* sonar = spec.spec->FindRing("sonar");
+    ASSERT_NE(sonar, nullptr) << name;
+    EXPECT_EQ(deafest_aim(*sonar), 0) << name << ": aims at which the sonar misses the jamb";
+  }
+  // The same cone sampled by 7 rays misses it between rays.
+  EXPECT_GT(deafest_aim(Sonar(7)), 0);
+  EXPECT_EQ(deafest_aim(Sonar(15)), 0);
 }
 
 TEST_F(SensorTest, TransducersFiredTogetherHearEachOthersEchoes) {

@@ -46,7 +46,11 @@ struct RangeRingSpec {
   double field_of_view = 0.52;  ///< Full cone angle (rad), (0, pi).
   double min_range = 0.15;      ///< (m) >= 0
   double max_range = 6.5;       ///< (m) > min_range
-  int rays = 7;                 ///< Rays sampling the cone across, >= 1.
+  /// Rays sampling the cone across, >= 1. A real cone is continuous: at 5 degrees apart (7 rays
+  /// over 30) a door jamb's 15 cm face 2 m away fell between rays, and the localization, whose
+  /// model samples the cone every 2 degrees, was pulled 0.5-0.7 m along cim_office's hallway at
+  /// an open door; 15 rays (2.1 degrees) close the gaps the maps' features can hide in.
+  int rays = 15;
   /// Rows of rays across the cone's height, >= 1: 1 is a flat fan at the mount's height (blind
   /// to a solid below or above it); more sample a circular cone (each row as wide as the cone
   /// at its elevation), so a Polaroid sonar hears a crate lower than its ring, as a real one.
