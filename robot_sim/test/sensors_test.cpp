@@ -34,14 +34,9 @@ class SensorTest : public ::testing::Test {
   // (9.95, 4.95) on the east wall: the pulse of a transducer at (8, 3) aimed at 45 degrees
   // glances off the wall (45 deg > 20 deg), reaches the board face square on and comes back.
   void AddBoard() {
-    Solid board;
-    board.id = "board";
     const double k = 1.1 / std::sqrt(2.0);
-    board.pose = {9.95 - k, 4.95 + k, M_PI / 4};
-    board.size_x = 1.0;
-    board.size_y = 0.2;
-    board.height = 2.0;
-    ASSERT_TRUE(world_.AddObstacle(board, nullptr));
+    ASSERT_TRUE(world_.AddObstacle(
+        testing::Box("board", 9.95 - k, 4.95 + k, M_PI / 4, 1.0, 0.2, 2.0), nullptr));
   }
 
   SimWorld world_;
@@ -75,13 +70,7 @@ TEST_F(SensorTest, AConeWithRowsHearsACrateBelowTheRing) {
   // A 0.6 m high crate 2 m ahead of a transducer at 0.7 m, its 2 x 0.6 m face square on: a flat
   // fan passes over it; a cone of three rows hears it with its lowest row (15 * 2/3 = 10
   // degrees down meets the face at 0.35 m height, 2 / cos(10 deg) = 2.03 m away).
-  Solid crate;
-  crate.id = "low_crate";
-  crate.pose = {5.3, 3.0, 0.0};
-  crate.size_x = 0.6;
-  crate.size_y = 2.0;
-  crate.height = 0.6;
-  ASSERT_TRUE(world_.AddObstacle(crate, nullptr));
+  ASSERT_TRUE(world_.AddObstacle(testing::Box("low_crate", 5.3, 3.0, 0.0, 0.6, 2.0, 0.6), nullptr));
   RangeRingSpec flat = Sonar(7);
   EXPECT_GT(EchoRange(world_, flat, At(3.0, 3.0, 0.0), nullptr, nullptr), 4.0);  // the wall
   RangeRingSpec cone = Sonar(7);
@@ -101,13 +90,7 @@ TEST_F(SensorTest, AConeWithRowsHearsACrateBelowTheRing) {
 // aim that keeps it inside the cone (rays 5 degrees apart did not: the localization, whose model
 // samples the cone every 2 degrees, was pulled along cim_office's hallway by an open door).
 TEST_F(SensorTest, EveryShippedSonarHearsAJambFaceAnywhereInItsCone) {
-  Solid post;
-  post.id = "jamb";
-  post.pose = {5.0, 3.0, 0.0};
-  post.size_x = 0.15;
-  post.size_y = 0.15;
-  post.height = 2.0;
-  ASSERT_TRUE(world_.AddObstacle(post, nullptr));
+  ASSERT_TRUE(world_.AddObstacle(testing::Box("jamb", 5.0, 3.0, 0.0, 0.15, 0.15, 2.0), nullptr));
   const TransducerPose origin = At(4.925 - 2.0, 3.0, 0.0);  // 2 m from the face
   // Aims whose cone still holds the post; nothing else lies within the sonars' range there.
   auto deafest_aim = [&](const RangeRingSpec& ring) {

@@ -68,11 +68,7 @@ TEST_F(SimWorldTest, UnknownDoorIsAnError) {
 }
 
 TEST_F(SimWorldTest, AddedObstacleIsSeenByRaysAndOctomapAndRemovedAgain) {
-  Solid box;
-  box.id = "box";
-  box.pose = {4, 3, 0};
-  box.size_x = box.size_y = 1.0;
-  box.height = 0.8;
+  const Solid box = testing::Box("box", 4, 3, 0, 1.0, 1.0, 0.8);
   ASSERT_TRUE(world_.AddObstacle(box, nullptr));
   auto hit = world_.CastRay(Vector3d(2, 3, 0.5), Vector3d(9, 3, 0.5));
   ASSERT_TRUE(hit);
@@ -163,13 +159,7 @@ TEST_F(SimWorldTest, ClosedFormRaysAgreeWithBulletsOwnRayTest) {
   drum.size_x = drum.size_y = 0.6;
   drum.height = 0.9;
   ASSERT_TRUE(world_.AddObstacle(drum, nullptr));
-  Solid board;
-  board.id = "board";
-  board.pose = {6, 4.5, 0.7};
-  board.size_x = 1.2;
-  board.size_y = 0.1;
-  board.height = 1.5;
-  ASSERT_TRUE(world_.AddObstacle(board, nullptr));
+  ASSERT_TRUE(world_.AddObstacle(testing::Box("board", 6, 4.5, 0.7, 1.2, 0.1, 1.5), nullptr));
   // Bullet's GJK ray cast stops up to ~2 cm short and grazes corners and its cylinder up to
   // ~1 cm beyond the true surface (checked by hand in the debugging of this test); the closed
   // form is exact (hand-computed cases below). So: agreement within 2.5 cm on 98 % of rays.

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "robot_sim/sim_world.h"
 #include "spott_map/world_loader.h"
 
 namespace robot_sim::testing {
@@ -31,6 +32,18 @@ inline spott_map::World TestWorld() {
 
 inline std::string PackageFile(const std::string& relative) {
   return std::string(PACKAGE_DIR) + "/" + relative;
+}
+
+/// A box solid centred at (x, y) turned by yaw, size_x by size_y, `height` tall.
+inline Solid Box(const std::string& id, double x, double y, double yaw, double size_x,
+                 double size_y, double height) {
+  Solid box;
+  box.id = id;
+  box.pose = {x, y, yaw};
+  box.size_x = size_x;
+  box.size_y = size_y;
+  box.height = height;
+  return box;
 }
 
 }  // namespace robot_sim::testing
