@@ -51,15 +51,10 @@ struct LostDetectorParameters {
   /// without_short_lost_ratio x the slow average too: an object the map lacks can only shorten
   /// a reading, so the beams it cannot explain must misfit as well. Checked while at least
   /// short_beams_min_others other judged beams remain (fewer: the whole scan decides).
-  /// Beside cim_office's unmapped partition, crate and desks half of a B-12's 12 sonars read
-  /// short with the pose right and each scan fit 0.04-0.3 x its usual; every false "kidnap"
-  /// relocalized the robot, up to 24 m off. With robot_sim's cones sampled by 15 rays, 10 runs
-  /// of the evaluation's lab route per robot (B-12 / B21 / Nomad 200): judging every beam, the
-  /// rule of 2026-12-05 (only the collapse without short beams, while no more than the rest)
-  /// 7 / 5 / 14 alarms, runs 16-22 m off; leaving the short beams out of both rules 0 alarms,
-  /// but kidnaps noticed late (40 kidnaps, detection's 90th percentile 15 / 143 / 73 s); this
-  /// check 0 alarms at ratios 0.1-0.2 (at 0.3 a B-12 run 19 m off), kidnaps recovered 37 / 40
-  /// / 38 of 40, 90th percentile 6.2 / 56.2 / 3.3 s (README).
+  /// Without it the unmapped clutter in cim_office's lab (half a B-12's sonars short with the
+  /// pose right) raised false kidnaps that relocalized the robot up to 24 m off; leaving the short
+  /// beams out of the rules altogether noticed real kidnaps late. The measurements: README, "The
+  /// lab's clutter and the lost detector".
   bool judge_without_short_beams = true;
   double without_short_lost_ratio = 0.15;  ///< In (0, 1].
   /// Fewest other judged beams for the check above, >= 1.
